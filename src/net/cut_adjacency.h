@@ -26,7 +26,10 @@ bool for_each_cut_neighbour(const LodTree& tree, TreeId x, InCut&& in_cut, Visit
       visit(across);
       continue;
     }
-    const TreeId up = tree.node(across).parent;
+    // Grid arithmetic instead of reading the LodNode of `across` (a node off the cut, so a likely cache miss): a
+    // node's parent is the node at half its coordinates one level up.
+    const int ax = node.gx + dx, ay = node.gy + dy;
+    const TreeId up = tree.at(level + 1, ax >> 1, ay >> 1);
     if (up != kNoTreeNode && up != node.parent && in_cut(up)) {
       visit(up);
       continue;
@@ -36,11 +39,10 @@ bool for_each_cut_neighbour(const LodTree& tree, TreeId x, InCut&& in_cut, Visit
       continue;
     }
     // The (up to two) children of `across` on the side facing x.
-    const LodNode& a = tree.node(across);
     bool found = false;
     for (int k = 0; k < 2; ++k) {
-      const int cx = dx != 0 ? 2 * a.gx + (dx > 0 ? 0 : 1) : 2 * a.gx + k;
-      const int cy = dy != 0 ? 2 * a.gy + (dy > 0 ? 0 : 1) : 2 * a.gy + k;
+      const int cx = dx != 0 ? 2 * ax + (dx > 0 ? 0 : 1) : 2 * ax + k;
+      const int cy = dy != 0 ? 2 * ay + (dy > 0 ? 0 : 1) : 2 * ay + k;
       const TreeId c = tree.at(level - 1, cx, cy);
       if (c == kNoTreeNode) continue;
       if (!in_cut(c)) {

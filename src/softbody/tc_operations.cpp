@@ -122,6 +122,7 @@ std::int32_t TcSoftBody::new_op(OpKind kind, TreeId parent) {
 
 void TcSoftBody::begin_refine(TreeId p) {
   const std::int64_t t0 = now_ns();
+  prefetch_footprint(p);
   const LodNode& pn = tree().node(p);
   const std::int32_t op = new_op(OpKind::kRefine, p);
   const Node& parent_node = m_nodes[bullet_[static_cast<std::size_t>(p)]];
@@ -168,6 +169,7 @@ void TcSoftBody::begin_refine(TreeId p) {
 
 void TcSoftBody::begin_coarse(TreeId p) {
   const std::int64_t t0 = now_ns();
+  prefetch_footprint(p);
   const LodNode& pn = tree().node(p);
   const std::int32_t op = new_op(OpKind::kCoarse, p);
   // The parent appears at its children's centre of mass with their mean velocity, carrying half their mass.

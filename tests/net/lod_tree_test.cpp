@@ -93,6 +93,14 @@ TEST(LodTree, AtMatchesNodeCoordinatesAndOrdering) {
   });
 }
 
+// Cut adjacency finds a node's parent by grid arithmetic (at half its coordinates, one level up) rather than by
+// reading the node; the two must agree for every node, the root included.
+TEST(LodTree, ParentIsTheNodeAtHalfTheCoordinatesOneLevelUp) {
+  for_each_tree([](const LodTree& tree, const Net&) {
+    for (const LodNode& n : tree.nodes()) ASSERT_EQ(tree.at(n.level + 1, n.gx >> 1, n.gy >> 1), n.parent);
+  });
+}
+
 TEST(LodTree, AtOutOfRangeIsNoTreeNode) {
   for_each_tree([](const LodTree& tree, const Net&) {
     const int top = tree.level_count();
