@@ -1,6 +1,24 @@
 #include "feedback/feedback_workers.h"
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 namespace tcsb {
+
+template <class Ready>
+bool FeedbackWorkers::spin_until(Ready ready) {
+  const auto until = std::chrono::steady_clock::now() + kSpin;
+  for (int i = 0; !ready(); ++i) {
+#if defined(__x86_64__) || defined(__i386__)
+    _mm_pause();
+#else
+    std::this_thread::yield();
+#endif
+    if ((i & 255) == 255 && std::chrono::steady_clock::now() > until) return ready();
+  }
+  return true;
+}
 
 FeedbackWorkers::FeedbackWorkers(int threads) {
   coordinator_ = std::thread([this] { coordinator_loop(); });
@@ -11,6 +29,7 @@ FeedbackWorkers::~FeedbackWorkers() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stop_ = true;
+    stopping_.store(true, std::memory_order_release);
   }
   wake_.notify_all();
   coordinator_.join();
@@ -22,11 +41,13 @@ void FeedbackWorkers::post(std::function<void()> job) {
     std::lock_guard<std::mutex> lock(mutex_);
     job_ = std::move(job);
     job_pending_ = true;
+    pending_.store(true, std::memory_order_release);
   }
   wake_.notify_all();
 }
 
 void FeedbackWorkers::wait() {
+  if (spin_until([this] { return !pending_.load(std::memory_order_acquire); })) return;
   std::unique_lock<std::mutex> lock(mutex_);
   done_.wait(lock, [this] { return !job_pending_; });
 }
@@ -34,6 +55,11 @@ void FeedbackWorkers::wait() {
 void FeedbackWorkers::coordinator_loop() {
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
+    lock.unlock();
+    spin_until([this] {
+      return stopping_.load(std::memory_order_acquire) || pending_.load(std::memory_order_acquire);
+    });
+    lock.lock();
     wake_.wait(lock, [this] { return stop_ || (job_pending_ && job_); });
     if (stop_) return;
     std::function<void()> job = std::move(job_);
@@ -42,6 +68,7 @@ void FeedbackWorkers::coordinator_loop() {
     job();
     lock.lock();
     job_pending_ = false;
+    pending_.store(false, std::memory_order_release);
     done_.notify_all();
   }
 }

@@ -1,9 +1,16 @@
 // FeedbackWorkers: the threads the feedback stage runs on while Bullet steps. One job at a time; inside it the
 // work may be split over every thread with parallel_for. Deterministic by construction: chunks write disjoint
 // outputs and reductions happen after the join.
+//
+// Waiting spins before it sleeps (up to kSpin): on the 2-vCPU VMs this runs on, a sleeping thread's vCPU is halted
+// and waking it took from tens of microseconds to milliseconds, so a worker that slept between evaluations often
+// started so late that the simulation thread then waited for it — the parallel mode's critical-path cost was no
+// lower than evaluating on the simulation thread. Jobs come every few steps (milliseconds), so a short spin keeps
+// the worker awake between them at the price of one busy core while a TC-SB body runs.
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <functional>
 #include <mutex>
@@ -32,11 +39,16 @@ class FeedbackWorkers {
   void coordinator_loop();
   void helper_loop();
   void run_chunks();
+  /// Spins (pausing the core) until `ready()` or kSpin has passed; returns ready().
+  template <class Ready>
+  static bool spin_until(Ready ready);
+  static constexpr std::chrono::milliseconds kSpin{20};
 
   std::mutex mutex_;
   std::condition_variable wake_, done_;
   std::function<void()> job_;
   bool job_pending_ = false, stop_ = false;
+  std::atomic<bool> pending_{false}, stopping_{false};  // lock-free mirrors of job_pending_ and stop_, for spinning
   // parallel_for state
   const std::function<void(int)>* chunk_fn_ = nullptr;
   std::atomic<int> chunk_count_{0};
