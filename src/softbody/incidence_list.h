@@ -7,11 +7,15 @@
 
 namespace tcsb {
 
-/// Fixed-capacity list of link indices. A balanced cut bounds a node's degree (8 steady links, at most 12 while
-/// operations around it blend), so 16 slots always suffice; overflowing one is a bug and throws.
-class IncidenceList {
+/// Fixed-capacity list of link indices, one cache line each. A balanced cut bounds a node's degree: at most two
+/// neighbours per side, 8 steady links. While operations blend, a side holds at most 3 links (a neighbour refined:
+/// its fading link and its two children's; two finer neighbours coarsened: their two fading links and the parent's),
+/// and no operation may begin next to a node that is itself blending, so an active node has at most 12; a refined
+/// node has at most 8 fading links and 4 tethers, a coarse's new node 8 arriving links and 4 tethers. Overflowing
+/// is therefore a bug, and throws.
+class alignas(64) IncidenceList {
  public:
-  static constexpr int kCapacity = 16;
+  static constexpr int kCapacity = 12;
 
   int size() const { return count_; }
   std::int32_t operator[](int i) const { return links_[static_cast<std::size_t>(i)]; }
@@ -19,7 +23,7 @@ class IncidenceList {
   const std::int32_t* end() const { return links_.data() + count_; }
 
   void add(std::int32_t link) {
-    if (count_ == kCapacity) throw std::logic_error("IncidenceList: node degree exceeds 16");
+    if (count_ == kCapacity) throw std::logic_error("IncidenceList: node degree exceeds 12");
     links_[static_cast<std::size_t>(count_++)] = link;
   }
   /// Removes `link` (order not kept); returns false if absent.
@@ -50,5 +54,6 @@ class IncidenceList {
   std::array<std::int32_t, kCapacity> links_{};
   std::int32_t count_ = 0;
 };
+static_assert(sizeof(IncidenceList) == 64, "an incidence list should fill exactly one cache line");
 
 }  // namespace tcsb

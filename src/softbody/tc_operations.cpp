@@ -14,6 +14,13 @@ std::int64_t now_ns() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
+/// Whether `n` is one of the block's children, answered from the block's own record: reading n's record instead
+/// would be one more cache miss per neighbour.
+bool is_child(const LodNode& block, TreeId n) {
+  for (int i = 0; i < block.child_count; ++i)
+    if (block.children[static_cast<std::size_t>(i)] == n) return true;
+  return false;
+}
 Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 btVector3 to_bullet(const Eigen::Vector3d& v) {
   return {static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z())};
@@ -156,7 +163,7 @@ void TcSoftBody::begin_refine(TreeId p) {
     for_each_cut_neighbour(
         tree(), c, [this](TreeId n) { return committed(n); },
         [&](TreeId n) {
-          if (tree().node(n).parent == p) {
+          if (is_child(pn, n)) {
             if (c < n) add_link(c, n, LinkRole::kSteady, -1);
           } else {
             add_link(c, n, LinkRole::kFadeIn, op);
@@ -201,7 +208,7 @@ void TcSoftBody::begin_coarse(TreeId p) {
       CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
       const TreeId other = meta.a == c ? meta.b : meta.a;
       // Links among the children hold at full strength until the end; links to the outside fade out.
-      meta.role = tree().node(other).parent == p ? LinkRole::kDoomed : LinkRole::kFadeOut;
+      meta.role = is_child(pn, other) ? LinkRole::kDoomed : LinkRole::kFadeOut;
       meta.op = op;
       refresh_link_constant(li);
     }

@@ -73,7 +73,6 @@ void TcSoftBody::prefetch_footprint(TreeId id) const {
     for (std::int32_t li : incidence_[static_cast<std::size_t>(block[i])]) {
       const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
       const auto n = static_cast<std::size_t>(meta.a == block[i] ? meta.b : meta.a);
-      prefetch_object(&tree().node(static_cast<TreeId>(n)));
       prefetch_object(&incidence_[n]);
       prefetch(&bullet_[n]);
       prefetch(&rest_[n]);
