@@ -11,6 +11,18 @@
 
 #include "bench_bodies.h"
 
+// scripts/op-instructions.sh runs this benchmark under callgrind: the loop below zeroes the counters when it starts
+// and dumps them when it ends, so each dump covers the measured operations and not the fixture's setup (which
+// drives the cut to half the net with thousands of operations at random places). Without valgrind these do nothing.
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define TCSB_CALLGRIND_ZERO_STATS() CALLGRIND_ZERO_STATS
+#define TCSB_CALLGRIND_DUMP_STATS() CALLGRIND_DUMP_STATS
+#else
+#define TCSB_CALLGRIND_ZERO_STATS() ((void)0)
+#define TCSB_CALLGRIND_DUMP_STATS() ((void)0)
+#endif
+
 namespace tcsb::bench {
 namespace {
 
@@ -97,6 +109,7 @@ void run_op(benchmark::State& state, Timed timed, const char* name) {
   KindSink sink(timed_sample);
   body.set_op_sink(&sink);
 
+  TCSB_CALLGRIND_ZERO_STATS();
   for (auto _ : state) {
     const TreeId id = coarse_first ? fixture.coarse_candidate() : fixture.refine_candidate();
     if (id == kNoTreeNode) {
@@ -112,6 +125,7 @@ void run_op(benchmark::State& state, Timed timed, const char* name) {
     link_part.push_back(timed_sample[static_cast<int>(timed)].link_ns);
   }
 
+  TCSB_CALLGRIND_DUMP_STATS();
   body.set_op_sink(nullptr);
   if (body.interpolations() != 0) state.SkipWithError("an operation was left in flight");
   state.SetComplexityN(nodes);

@@ -1,24 +1,29 @@
 #!/usr/bin/env python3
-"""Instructions per call of the four TreeCut operations, from a callgrind output file.
+"""Instructions and cache misses per call of the four TreeCut operations, from callgrind output files.
 
-Usage: callgrind_calls.py CALLGRIND_OUT
+Usage: callgrind_calls.py CALLGRIND_OUT...   (several dumps are summed)
 Reads the raw callgrind format: each `cfn=` names a callee, the following `calls=N ...` line and cost line give
-N calls and their inclusive cost (the first event, Ir). Prints calls and Ir per call for begin/end refine/coarse.
+N calls and their inclusive cost. Prints calls and instructions (Ir) per call for begin/end refine/coarse, and with
+--cache-sim=yes also last-level data misses per call (DLmr + DLmw: cache lines fetched from beyond the simulated
+last-level cache).
 """
 import collections
 import re
 import sys
 
 
-def main(path):
+def read_dump(path, calls, inclusive):
+    """Adds one dump's call counts and inclusive costs (name ids are per file); returns its event names."""
     names = {}
-    calls = collections.Counter()
-    inclusive = collections.Counter()
+    events = ["Ir"]
     callee = None
     pending = None
     with open(path) as f:
         for line in f:
             line = line.rstrip("\n")
+            if line.startswith("events:"):
+                events = line.split()[1:]
+                continue
             m = re.match(r"^c?fn=\((\d+)\)(?: (.*))?$", line)
             if m:
                 if m.group(2):
@@ -34,12 +39,27 @@ def main(path):
                 parts = line.split()
                 if len(parts) >= 2:
                     calls[callee] += pending
-                    inclusive[callee] += int(parts[1])
+                    for event, value in zip(events, parts[1:]):
+                        inclusive[(callee, event)] += int(value)
                 pending = None
+    return events
+
+
+def main(paths):
+    calls = collections.Counter()
+    inclusive = collections.Counter()
+    events = []
+    for path in paths:
+        events = read_dump(path, calls, inclusive)
     for name in sorted(calls):
         if re.search(r"TcSoftBody::(begin_refine|begin_coarse|end_refine|end_coarse)\(", name):
-            print(f"{name.split('(')[0]:40s} calls={calls[name]:7d} Ir/call={inclusive[name] / calls[name]:8.0f}")
+            n = calls[name]
+            line = f"{name.split('(')[0]:40s} calls={n:7d} Ir/call={inclusive[(name, 'Ir')] / n:8.0f}"
+            if "DLmr" in events:
+                misses = inclusive[(name, "DLmr")] + inclusive[(name, "DLmw")]
+                line += f" LL-misses/call={misses / n:6.1f}"
+            print(line)
 
 
 if __name__ == "__main__":
-    main(sys.argv[1])
+    main(sys.argv[1:])

@@ -1,16 +1,23 @@
 #!/usr/bin/env bash
-# Instructions (not seconds) per TreeCut operation at two net sizes, counted by callgrind on the micro-benchmark:
-# shows whether an operation's work depends on the size of the net, independently of caches and machine noise.
-# Usage: bash scripts/op-instructions.sh [build-dir]   (needs valgrind; takes a few minutes)
+# Instructions and simulated cache misses (not seconds) per TreeCut operation at two net sizes, counted by callgrind
+# on the micro-benchmark: shows whether an operation's work depends on the size of the net, and how many cache
+# lines it fetches from beyond a 2 MiB last-level cache (the L2 of the development VM; callgrind simulates two
+# levels, 48 KiB L1 and that), independently of machine noise: the counts are deterministic.
+# Only the benchmark loops are counted, not the fixture's setup.
+# Usage: bash scripts/op-instructions.sh [build-dir] [widths...]   (needs valgrind; takes a few minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
+shift || true
+widths=${*:-33 257}
 command -v valgrind >/dev/null || { echo "op-instructions: valgrind is not installed" >&2; exit 2; }
-for width in 33 257; do
-  out=$(mktemp)
-  TCSB_BENCH_OP_ITERS=2000 valgrind --tool=callgrind --callgrind-out-file="$out" \
+for width in $widths; do
+  dir=$(mktemp -d)
+  # bench/op_bench.cpp zeroes the counters when a benchmark loop starts and dumps them when it ends: cg.out.1, .2, ...
+  TCSB_BENCH_OP_ITERS=2000 valgrind --tool=callgrind --cache-sim=yes --D1=49152,12,64 --LL=2097152,16,64 \
+    --callgrind-out-file="$dir/cg.out" \
     "$build/tcsb_bench" --benchmark_filter="BM_(Refine|Coarse)/width:$width/" >/dev/null 2>&1
   echo "width $width:"
-  python3 scripts/callgrind_calls.py "$out"
-  rm -f "$out"
+  python3 scripts/callgrind_calls.py "$dir"/cg.out.*
+  rm -rf "$dir"
 done
