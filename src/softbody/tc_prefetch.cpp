@@ -5,13 +5,12 @@
 // Once those arrays outgrow the L2 cache (between 65^2 and 129^2 grid nodes) each of those reads misses, and in
 // program order the misses queue one behind the other: the operation's wall time grows with N although its work
 // does not (bench/README.md, "flatness"). Prefetching the footprint in waves — each wave's addresses come from the
-// lines the previous wave loaded — lets the misses of a wave overlap, so an operation waits for about three memory
-// latencies instead of dozens.
+// lines the previous wave loaded — lets the misses of a wave overlap: the operation then waits for about one
+// memory latency per wave instead of one per line.
 //
-// Measured (tcsb_bench, begin operations, same session, builds with and without it run alternately): at 513^2
-// refine 5.5-5.9 -> 3.3-3.8 us and coarse 4.3-5.2 -> 2.7-3.3 us; at 33^2 a few hundred ns slower, within the
-// noise for refine. The end operations do not call it: their blocks were touched by the blend steps just before,
-// and there it only cost time.
+// Measured (tcsb_bench, begin operations, builds with and without it run alternately, 3 rounds): at 513^2 refine
+// 5.0-7.0 -> 3.6-3.9 us and coarse 4.0-6.0 -> 3.4-3.6 us; at 33^2-65^2 inside the noise. The end operations do
+// not call it: their blocks were touched by the blend steps just before, and there it only cost time.
 #include "softbody/tc_softbody.h"
 
 namespace tcsb {
@@ -30,7 +29,8 @@ inline void prefetch_object(const T* p) {
   prefetch(reinterpret_cast<const char*>(p) + sizeof(T) - 1);
 }
 
-/// The lines of a Bullet node an operation reads: position and velocity (first line), inverse mass and DBVT leaf.
+/// The lines of a Bullet node an operation reads: position and velocity (bytes 16-64 of the 256-byte Node), inverse
+/// mass and DBVT leaf (bytes 112-128).
 inline void prefetch_node(const btSoftBody::Node& n) {
   prefetch(&n.m_x);
   prefetch(&n.m_leaf);
@@ -48,7 +48,7 @@ void TcSoftBody::prefetch_footprint(TreeId id) const {
   for (int i = 0; i < count; ++i) {
     const auto x = static_cast<std::size_t>(block[i]);
     prefetch_object(&tree().node(block[i]));
-    prefetch_object(&incidence_[x]);
+    prefetch(&incidence_[x]);  // one cache line each
     prefetch(&bullet_[x]);
     prefetch(&rest_[x]);
     prefetch(&sim_mass_[x]);
@@ -73,7 +73,7 @@ void TcSoftBody::prefetch_footprint(TreeId id) const {
     for (std::int32_t li : incidence_[static_cast<std::size_t>(block[i])]) {
       const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
       const auto n = static_cast<std::size_t>(meta.a == block[i] ? meta.b : meta.a);
-      prefetch_object(&incidence_[n]);
+      prefetch(&incidence_[n]);
       prefetch(&bullet_[n]);
       prefetch(&rest_[n]);
     }
