@@ -23,6 +23,9 @@ class Controller {
   virtual void before_step(TcSoftBody& body) = 0;
   /// Called right after Bullet stepped (a parallel controller snapshots the state here).
   virtual void after_step(const TcSoftBody& body) {}
+  /// The body will not step for a while (the fidelity pass steps other bodies in between): a parallel controller
+  /// lets its worker sleep now instead of spinning for the next job, so it does not take a core from them.
+  virtual void pause() {}
   /// Cost of the last step's feedback work.
   virtual FeedbackCost last_cost() const { return {}; }
 };

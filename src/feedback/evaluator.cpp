@@ -57,8 +57,10 @@ void rank_candidates(const CutSnapshot& snapshot, std::span<const float> salienc
     for (int c = 0; c < p.child_count && all_active; ++c) {
       const TreeId child = p.children[static_cast<std::size_t>(c)];
       all_active = snapshot.cut.state[static_cast<std::size_t>(child)] == CutState::kActive;
-      if (all_active)
-        worst = std::max<double>(worst, saliency[static_cast<std::size_t>(snapshot.cut.index[static_cast<std::size_t>(child)])]);
+      if (all_active) {
+        const auto index = static_cast<std::size_t>(snapshot.cut.index[static_cast<std::size_t>(child)]);
+        worst = std::max<double>(worst, saliency[index]);
+      }
     }
     if (all_active) out.coarse.push_back({(worst + kSaliencyFloor) * static_cast<double>(1u << p.level), parent});
   }

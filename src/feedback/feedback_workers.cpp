@@ -41,6 +41,7 @@ void FeedbackWorkers::post(std::function<void()> job) {
     std::lock_guard<std::mutex> lock(mutex_);
     job_ = std::move(job);
     job_pending_ = true;
+    parked_.store(false, std::memory_order_release);
     pending_.store(true, std::memory_order_release);
   }
   wake_.notify_all();
@@ -57,7 +58,8 @@ void FeedbackWorkers::coordinator_loop() {
   for (;;) {
     lock.unlock();
     spin_until([this] {
-      return stopping_.load(std::memory_order_acquire) || pending_.load(std::memory_order_acquire);
+      return stopping_.load(std::memory_order_acquire) || pending_.load(std::memory_order_acquire) ||
+             parked_.load(std::memory_order_acquire);
     });
     lock.lock();
     wake_.wait(lock, [this] { return stop_ || (job_pending_ && job_); });

@@ -31,6 +31,8 @@ class FeedbackWorkers {
   void post(std::function<void()> job);
   /// Blocks until the posted job (if any) has finished.
   void wait();
+  /// No job will come for a while: thread 0 stops spinning and sleeps until the next post().
+  void park() { parked_.store(true, std::memory_order_release); }
   /// From inside a job: runs fn(chunk) for every chunk in [0, chunks) over all threads; returns when all are done.
   void parallel_for(int chunks, const std::function<void(int)>& fn);
   int threads() const { return static_cast<int>(helpers_.size()) + 1; }
@@ -49,6 +51,7 @@ class FeedbackWorkers {
   std::function<void()> job_;
   bool job_pending_ = false, stop_ = false;
   std::atomic<bool> pending_{false}, stopping_{false};  // lock-free mirrors of job_pending_ and stop_, for spinning
+  std::atomic<bool> parked_{false};                     // park() was called since the last post()
   // parallel_for state
   const std::function<void(int)>* chunk_fn_ = nullptr;
   std::atomic<int> chunk_count_{0};

@@ -188,6 +188,7 @@ class Track {
                                             reference.energy[static_cast<std::size_t>(s - first)], reference_energy0);
       if (std::isfinite(drift)) drift_.push_back(drift);  // undefined only for an initial energy of 0 (net at y = 0)
     }
+    body_->pause();  // the other subjects run their blocks now: no feedback worker should spin meanwhile
   }
 
   void stop(int step, std::string reason) {

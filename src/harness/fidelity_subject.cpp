@@ -52,6 +52,9 @@ class TreeCutSubject final : public FidelitySubject {
   }
   std::optional<int> converged_step() const override { return converged_; }
   bool surface_changed() const override { return changed_; }
+  void pause() override {
+    if (controller_) controller_->pause();
+  }
   void simulate(btScalar dt) override {
     body_->simulate_step(dt);
     if (controller_) controller_->after_step(*body_);

@@ -46,6 +46,8 @@ class FidelitySubject {
   /// Step at whose boundary the body first fitted its node budget (simulated nodes, blends included, at most the
   /// budget: when the controller's budget starts to hold); TC-SB under a budget only.
   virtual std::optional<int> converged_step() const { return std::nullopt; }
+  /// The pass moves on to other subjects for a while (see Controller::pause()).
+  virtual void pause() {}
   /// Step at whose boundary the body switched (switch_body only).
   virtual std::optional<int> switch_step() const { return std::nullopt; }
 };
