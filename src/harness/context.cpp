@@ -10,6 +10,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -179,6 +180,13 @@ std::optional<double> parse_loadavg(std::string_view text) {
   return value;
 }
 
+std::string bracketed_choice(std::string_view text) {
+  const auto open = text.find('[');
+  const auto close = text.find(']', open == std::string_view::npos ? 0 : open);
+  if (open == std::string_view::npos || close == std::string_view::npos) return "";
+  return std::string(text.substr(open + 1, close - open - 1));
+}
+
 std::string bullet_version_string(int version) {
   const int minor = version % 100;
   return std::to_string(version / 100) + (minor < 10 ? ".0" : ".") + std::to_string(minor);
@@ -244,6 +252,10 @@ Context gather_context() {
   if (const auto loadavg = read_text("/proc/loadavg")) {
     c.load_average_1m = context_detail::parse_loadavg(*loadavg).value_or(0.0);
   }
+  if (const auto thp = read_text("/sys/kernel/mm/transparent_hugepage/enabled")) {
+    c.transparent_hugepages = context_detail::bracketed_choice(*thp);
+  }
+  if (const char* tunables = std::getenv("GLIBC_TUNABLES")) c.glibc_tunables = tunables;
 
   c.compiler = std::string(trim(std::string(build_info::kCompilerId) + " " + build_info::kCompilerVersion));
   c.cxx_flags = build_info::kCxxFlags;
@@ -285,6 +297,8 @@ nlohmann::json to_json(const Context& c) {
       {"caches", std::move(caches)},
       {"cpu_governor", c.cpu_governor},
       {"load_average_1m", finite_or_zero(c.load_average_1m)},
+      {"transparent_hugepages", c.transparent_hugepages},
+      {"glibc_tunables", c.glibc_tunables},
       {"compiler", c.compiler},
       {"cxx_flags", c.cxx_flags},
       {"build_type", c.build_type},

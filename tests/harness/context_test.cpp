@@ -157,6 +157,13 @@ TEST(ContextParsers, LoadavgAndBulletVersion) {
   EXPECT_EQ(context_detail::bullet_version_string(305), "3.05");
 }
 
+TEST(ContextParsers, BracketedChoice) {
+  EXPECT_EQ(context_detail::bracketed_choice("always [madvise] never\n"), "madvise");
+  EXPECT_EQ(context_detail::bracketed_choice("[always] madvise never"), "always");
+  EXPECT_EQ(context_detail::bracketed_choice("always madvise never"), "");
+  EXPECT_EQ(context_detail::bracketed_choice("always [madvise"), "");
+}
+
 TEST(ContextGather, ReadsThisMachine) {
   const Context c = gather_context();
   EXPECT_FALSE(c.host.empty());
@@ -186,7 +193,8 @@ TEST(ContextJson, HasEveryKeyWithItsTypeAndNoNaN) {
   const nlohmann::json j = to_json(c);
   ASSERT_TRUE(j.is_object());
   for (const char* key : {"date_utc", "host", "cpu_model", "cpu_governor", "compiler", "cxx_flags", "build_type",
-                          "bullet_version", "bullet_precision", "tcsb_version", "git_commit"}) {
+                          "bullet_version", "bullet_precision", "tcsb_version", "git_commit", "transparent_hugepages",
+                          "glibc_tunables"}) {
     ASSERT_TRUE(j.contains(key)) << key;
     EXPECT_TRUE(j[key].is_string()) << key;
   }
@@ -208,7 +216,7 @@ TEST(ContextJson, HasEveryKeyWithItsTypeAndNoNaN) {
   EXPECT_EQ(last.at("type"), "Data");
   EXPECT_EQ(last.at("size_bytes"), 48 * 1024);
   EXPECT_EQ(last.at("num_sharing"), 2);
-  EXPECT_EQ(j.size(), 18u);  // one key per Context field: a new field must be added here too
+  EXPECT_EQ(j.size(), 20u);  // one key per Context field: a new field must be added here too
   // The dump round-trips and holds no null where a number was NaN.
   EXPECT_EQ(nlohmann::json::parse(j.dump()), j);
   EXPECT_EQ(j.dump().find("null"), std::string::npos);
