@@ -12,23 +12,15 @@
 #include "softbody/bullet_setup.h"
 #include "softbody/plain_softbody.h"
 
+#include "../softbody/test_bodies.h"
+
 namespace tcsb {
 namespace {
 
 constexpr btScalar kDt = 1.0f / 60;
 
-std::shared_ptr<const Net> square_net(int width, unsigned pinned = kAllCorners) {
-  NetSpec spec;
-  spec.width = spec.height = width;
-  spec.pinned_corners = pinned;
-  return std::make_shared<const Net>(spec);
-}
-
-SolverSettings solver() {
-  SolverSettings s;
-  s.piterations = 2;
-  return s;
-}
+using testing::square_net;
+using testing::test_solver;
 
 WorldSettings world_settings(double gravity) {
   WorldSettings w;
@@ -65,8 +57,8 @@ void deform_affinely(TcSoftBody& body) {
 TEST(Reconstruction, FinestCutEqualsThePlainBodyExactly) {
   const auto net = square_net(33);
   SoftBodyWorld world(world_settings(9.81));
-  TcSoftBody tc(world, net, solver(), {});
-  auto plain = make_plain_softbody(world, *net, solver());
+  TcSoftBody tc(world, net, test_solver(), {});
+  auto plain = make_plain_softbody(world, *net, test_solver());
   for (int s = 0; s < 60; ++s) {
     tc.advance_blends();
     tc.simulate_step(kDt);
@@ -83,7 +75,7 @@ TEST(Reconstruction, FinestCutEqualsThePlainBodyExactly) {
 TEST(Reconstruction, LeavesInTheCutMapToThemselvesExactly) {
   const auto net = square_net(33);
   SoftBodyWorld world(world_settings(9.81));
-  TcSoftBody tc(world, net, solver(), {});
+  TcSoftBody tc(world, net, test_solver(), {});
   RandomPolicy policy(5);
   for (int s = 0; s < 80; ++s) {
     tc.advance_blends();
@@ -109,7 +101,7 @@ TEST(Reconstruction, ReproducesAnAffineFieldFromAnyCutWhateverThePlacement) {
     SoftBodyWorld world(world_settings(0.0));
     TcSettings settings;
     settings.placement = placement;
-    TcSoftBody tc(world, net, solver(), settings);
+    TcSoftBody tc(world, net, test_solver(), settings);
     coarsen_to(tc, 33 * 33 / 4, 11);
     ASSERT_LT(tc.committed_count(), 33 * 33 / 3);
     deform_affinely(tc);
@@ -125,7 +117,7 @@ TEST(Reconstruction, ReproducesAnAffineFieldFromAnyCutWhateverThePlacement) {
 TEST(Reconstruction, CoversTheNetWhileOperationsBlend) {
   const auto net = square_net(17);
   SoftBodyWorld world(world_settings(0.0));
-  TcSoftBody tc(world, net, solver(), {});
+  TcSoftBody tc(world, net, test_solver(), {});
   coarsen_to(tc, 17 * 17 / 3, 3);
   RandomPolicy policy(8);
   tc.advance_blends();
@@ -162,7 +154,7 @@ TEST(Popping, IsZeroForOperationsOnANetAtRest) {
     SoftBodyWorld world(world_settings(0.0));
     TcSettings settings;
     settings.placement = placement;
-    TcSoftBody tc(world, net, solver(), settings);
+    TcSoftBody tc(world, net, test_solver(), settings);
     // Down to a quarter and back up to three quarters: coarse, refine and both end operations.
     EXPECT_LT(popping_over_operations(tc, 60, 33 * 33 / 4), 1e-5);
     EXPECT_LT(popping_over_operations(tc, 60, 3 * 33 * 33 / 4), 1e-5);
@@ -177,7 +169,7 @@ TEST(Popping, AffinePlacementDoesNotPopOnAnAffineFieldButRigidPlacementDoes) {
     SoftBodyWorld world(world_settings(0.0));
     TcSettings settings;
     settings.placement = placement;
-    TcSoftBody tc(world, net, solver(), settings);
+    TcSoftBody tc(world, net, test_solver(), settings);
     coarsen_to(tc, 33 * 33 / 4, 23);
     deform_affinely(tc);
     jump[placement == Placement::kRigid] = popping_over_operations(tc, 40, 3 * 33 * 33 / 4);  // refines
@@ -189,7 +181,7 @@ TEST(Popping, AffinePlacementDoesNotPopOnAnAffineFieldButRigidPlacementDoes) {
 TEST(Popping, CoarseningATwistedBlockJumpsByItsTwist) {
   const auto net = square_net(17);
   SoftBodyWorld world(world_settings(0.0));
-  TcSoftBody tc(world, net, solver(), {});
+  TcSoftBody tc(world, net, test_solver(), {});
   // A saddle, y = 8 - 0.3 x z: inside a 2x2 block its twist is not affine (a bowl's curvature would be: the
   // block's four nodes sit at the same distance from its centre, so a bowl only shifts them all alike).
   for (int i = 0; i < tc.node_count(); ++i) {
