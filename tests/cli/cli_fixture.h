@@ -38,6 +38,20 @@ inline int count_lines(const std::string& text) {
   return n;
 }
 
+/// A suite small enough to run in well under a second: one 9x9 net, plain and TC-SB at 1.0 and 0.5, 20 steps.
+/// Tests edit its text ("steps": 20, "seed") to make bad or different suites.
+inline std::string nine_by_nine_suite(const std::string& name, int repetitions) {
+  return R"({
+  "name": ")" + name + R"(", "description": "one 9x9 net for the CLI tests",
+  "nets": [{"name": "n9", "width": 9, "height": 9, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0},
+            "pinned": "corners"}],
+  "methods": ["plain", "tcsb"], "compression": [1.0, 0.5],
+  "dt": 0.016666666666666666, "gravity": 9.81, "steps": 20, "warmup_steps": 5, "repetitions": )" +
+         std::to_string(repetitions) + R"(, "seed": 1,
+  "solver": {"piterations": 2}
+})";
+}
+
 /// A fresh temporary directory per test, and tcsb run inside it.
 class Cli : public ::testing::Test {
  protected:

@@ -12,15 +12,8 @@ namespace {
 
 using namespace tcsb::cli_test;
 
-/// A suite small enough to run in well under a second: one 9x9 net, plain and TC-SB at two targets.
-const char* const kTinySuite = R"({
-  "name": "tiny", "description": "one 9x9 net for the CLI test",
-  "nets": [{"name": "n9", "width": 9, "height": 9, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0},
-            "pinned": "corners"}],
-  "methods": ["plain", "tcsb"], "compression": [1.0, 0.5],
-  "dt": 0.016666666666666666, "gravity": 9.81, "steps": 20, "warmup_steps": 5, "repetitions": 2, "seed": 1,
-  "solver": {"piterations": 2}
-})";
+/// Two repetitions: the CLI tests check files and exit codes, not timings.
+const std::string kTinySuite = nine_by_nine_suite("tiny", 2);
 
 TEST_F(Cli, UnknownFlagIsOneErrorLineAndExit2) {
   const Outcome o = tcsb("--bogus");

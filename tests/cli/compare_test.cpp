@@ -14,15 +14,8 @@ namespace {
 using namespace tcsb::cli_test;
 using ojson = nlohmann::ordered_json;
 
-/// Nine repetitions, the fewest the gate decides on; small enough to run in a fraction of a second.
-const char* const kGateSuite = R"({
-  "name": "gate", "description": "one 9x9 net for the gate tests",
-  "nets": [{"name": "n9", "width": 9, "height": 9, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0},
-            "pinned": "corners"}],
-  "methods": ["plain", "tcsb"], "compression": [1.0, 0.5],
-  "dt": 0.016666666666666666, "gravity": 9.81, "steps": 20, "warmup_steps": 5, "repetitions": 9, "seed": 1,
-  "solver": {"piterations": 2}
-})";
+/// Nine repetitions, the fewest the gate decides on.
+const std::string kGateSuite = nine_by_nine_suite("gate", 9);
 
 class Compare : public Cli {
  protected:

@@ -11,14 +11,7 @@ namespace {
 using namespace tcsb::cli_test;
 using ojson = nlohmann::ordered_json;
 
-const char* const kSmallSuite = R"({
-  "name": "small", "description": "one 9x9 net for the export tests",
-  "nets": [{"name": "n9", "width": 9, "height": 9, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0},
-            "pinned": "corners"}],
-  "methods": ["plain", "tcsb"], "compression": [1.0, 0.5],
-  "dt": 0.016666666666666666, "gravity": 9.81, "steps": 20, "warmup_steps": 5, "repetitions": 3, "seed": 1,
-  "solver": {"piterations": 2}
-})";
+const std::string kSmallSuite = nine_by_nine_suite("small", 3);
 
 // Debian's libbenchmark-tools; compare.py needs SciPy (python3-scipy), which pyenv-style pythons may lack.
 const char* const kCompareScript = "/usr/share/benchmark/compare.py";
