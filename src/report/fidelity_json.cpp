@@ -45,7 +45,7 @@ ojson case_json(const FidelityCase& c) {
           {"N", json_number(c.mean_nodes)},
           {"grid", c.grid.empty() ? ojson(nullptr) : ojson(c.grid)},
           {"status", c.status},
-          {"diverged_step", c.diverged_step ? ojson(*c.diverged_step) : ojson(nullptr)},
+          {"diverged_step", json_integer(c.diverged_step)},
           {"diverged_reason", c.diverged_reason},
           {"rms_pct", metric_json(c.rms_pct)},
           {"max_pct", metric_json(c.max_pct)},
@@ -57,8 +57,8 @@ ojson case_json(const FidelityCase& c) {
           {"time_ratio_vs_plain",
            c.reference_step_ms > 0 ? json_number(c.step_ms / c.reference_step_ms) : ojson(nullptr)},
           {"switch_ms", json_number(c.switch_ms)},
-          {"switch_step", c.switch_step ? ojson(*c.switch_step) : ojson(nullptr)},
-          {"converged_step", c.converged_step ? ojson(*c.converged_step) : ojson(nullptr)},
+          {"switch_step", json_integer(c.switch_step)},
+          {"converged_step", json_integer(c.converged_step)},
           {"final_state_hash", c.final_state_hash}};
 }
 

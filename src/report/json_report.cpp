@@ -12,8 +12,6 @@ using ojson = nlohmann::ordered_json;
 
 const char* placement_name(Placement p) { return p == Placement::kRigid ? "rigid" : "affine"; }
 
-ojson optional_int(const std::optional<int>& v) { return v ? ojson(*v) : ojson(nullptr); }
-
 ojson context_json(const RunResult& r) {
   // to_json(Context) sorts its keys; copying them in that order into an ordered object keeps the order stable.
   ojson context = ojson(to_json(r.context));
@@ -82,7 +80,7 @@ ojson repetition_json(const RepetitionResult& r) {
   return {
       {"repetition", r.repetition},
       {"status", r.status},
-      {"diverged_step", optional_int(r.diverged_step)},
+      {"diverged_step", json_integer(r.diverged_step)},
       {"diverged_reason", r.diverged_reason},
       {"mean_step_ms", json_number(r.mean_step_ms)},
       {"median_step_ms", json_number(r.median_step_ms)},
@@ -194,6 +192,8 @@ ojson scaling_json(const RunResult& result) {
 ojson json_number(double value) { return std::isfinite(value) ? ojson(value) : ojson(nullptr); }
 
 ojson json_number(const std::optional<double>& value) { return value ? json_number(*value) : ojson(nullptr); }
+
+ojson json_integer(const std::optional<int>& value) { return value ? ojson(*value) : ojson(nullptr); }
 
 ojson native_json(const RunResult& result) {
   ojson cases = ojson::array();

@@ -24,6 +24,9 @@ nlohmann::ordered_json json_number(double value);
 /// An optional number as JSON: null when absent or non-finite.
 nlohmann::ordered_json json_number(const std::optional<double>& value);
 
+/// An optional integer (a step, a count) as JSON: null when absent.
+nlohmann::ordered_json json_integer(const std::optional<int>& value);
+
 /// The whole run as the native JSON document (schema_version, tool, context, suite, cases, table1, table2,
 /// scaling, [fidelity, pareto, max_compression when the run has a fidelity pass], status, wall_s — in that order).
 nlohmann::ordered_json native_json(const RunResult& result);
