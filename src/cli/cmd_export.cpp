@@ -12,9 +12,7 @@ namespace tcsb::cli {
 CLI::App* add_export_command(CLI::App& app, ExportArgs& args) {
   CLI::App* cmd = app.add_subcommand("export", "Convert a result file to another format (gbench, github-action-*)");
   cmd->add_option("result", args.result, "A result file written by `tcsb run`")->required();
-  std::string formats;
-  for (const std::string& n : format_names()) formats += (formats.empty() ? "" : ", ") + n;
-  cmd->add_option("--format", args.format, "Output format: " + formats)->required();
+  cmd->add_option("--format", args.format, "Output format: " + known_formats())->required();
   cmd->add_option("--out", args.out, "Write to FILE (atomically) instead of stdout");
   return cmd;
 }

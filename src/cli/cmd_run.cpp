@@ -43,9 +43,7 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
   CLI::App* run = app.add_subcommand("run", "Run a suite and print its JSON report");
   run->add_option("suite", args.suite, "Suite file, or a bundled suite name (see `tcsb list`)")->required();
   run->add_option("--out", args.out, "Write the report to FILE (atomically) instead of stdout");
-  std::string formats;
-  for (const std::string& n : format_names()) formats += (formats.empty() ? "" : ", ") + n;
-  run->add_option("--format", args.format, "Output format: " + formats)->capture_default_str();
+  run->add_option("--format", args.format, "Output format: " + known_formats())->capture_default_str();
   run->add_flag("--quiet", args.quiet, "No console report on stderr (warnings still appear)");
   run->add_option("--compression", args.compression,
                   "TC-SB node budgets as fractions of the initial node count, e.g. 0.75,0.3 (overrides the suite)")

@@ -28,11 +28,15 @@ void check_out_path(const std::string& out, const std::string& option) {
   if (!writable) throw UsageError(option + " " + out + ": cannot create files in directory " + dir.string());
 }
 
-std::unique_ptr<ReportFormat> checked_format(const std::string& name) {
-  if (auto format = make_format(name)) return format;
+std::string known_formats() {
   std::string known;
   for (const std::string& n : format_names()) known += (known.empty() ? "" : ", ") + n;
-  throw UsageError("--format: unknown format \"" + name + "\" (known: " + known + ")");
+  return known;
+}
+
+std::unique_ptr<ReportFormat> checked_format(const std::string& name) {
+  if (auto format = make_format(name)) return format;
+  throw UsageError("--format: unknown format \"" + name + "\" (known: " + known_formats() + ")");
 }
 
 namespace {

@@ -17,6 +17,9 @@ namespace tcsb::cli {
 /// a new file. Empty `out` means stdout: nothing to check. `option` names the flag in the message.
 void check_out_path(const std::string& out, const std::string& option = "--out");
 
+/// The names of the output formats, comma-separated ("json, gbench, ..."), for --format's help and errors.
+std::string known_formats();
+
 /// The output format called `name` (--format); throws UsageError listing the known ones when there is none.
 std::unique_ptr<ReportFormat> checked_format(const std::string& name);
 
