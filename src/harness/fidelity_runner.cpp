@@ -14,6 +14,7 @@
 #include "harness/fidelity_subject.h"
 #include "harness/reconstruction.h"
 #include "harness/state_hash.h"
+#include "harness/step_clock.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/divergence.h"
 #include "softbody/plain_softbody.h"
@@ -22,11 +23,7 @@ namespace tcsb {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ms_between(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
+using Clock = StepClock;
 
 MetricSummary summarize_metric(const std::vector<double>& values) {
   const Summary s = summarize(values);

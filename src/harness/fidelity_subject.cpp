@@ -1,11 +1,11 @@
 #include "harness/fidelity_subject.h"
 
-#include <chrono>
 #include <cmath>
 
 #include "analysis/fidelity_metrics.h"
 #include "feedback/controller.h"
 #include "harness/reconstruction.h"
+#include "harness/step_clock.h"
 #include "net/grid_resample.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/plain_softbody.h"
@@ -125,7 +125,7 @@ class SwitchSubject final : public FidelitySubject {
       return;
     }
     switched_at_ = step;
-    const auto t0 = std::chrono::steady_clock::now();
+    const StepClock::time_point t0 = StepClock::now();
     std::unique_ptr<btSoftBody> coarse = make_plain_softbody(world_, coarse_, suite_.solver);
     copy_positions(*body_, x_);
     copy_velocities(*body_, v_);
@@ -144,7 +144,7 @@ class SwitchSubject final : public FidelitySubject {
     }
     coarse->updateBounds();
     body_ = std::move(coarse);  // frees the fine body: part of what a switch costs
-    switch_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    switch_ms_ = ms_between(t0, StepClock::now());
     changed_ = true;
   }
   bool surface_changed() const override { return changed_; }

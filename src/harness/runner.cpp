@@ -7,17 +7,14 @@
 #include "harness/case_body.h"
 #include "harness/fidelity_runner.h"
 #include "harness/state_hash.h"
+#include "harness/step_clock.h"
 #include "softbody/divergence.h"
 
 namespace tcsb {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ms_between(Clock::time_point a, Clock::time_point b) {
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
+using Clock = StepClock;
 
 /// Collects operation samples of timed steps only.
 class OpRecorder final : public OpSink {
