@@ -8,12 +8,11 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
+/// At most 60 characters for a one-line message, "..." marking a cut.
+std::string shorten(std::string text) { return text.size() > 60 ? text.substr(0, 57) + "..." : text; }
+
 /// A JSON value for a one-line message: short, never multi-line.
-std::string brief(const ojson& j) {
-  std::string text = j.dump(-1, ' ', false, ojson::error_handler_t::replace);
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  return text;
-}
+std::string brief(const ojson& j) { return shorten(j.dump(-1, ' ', false, ojson::error_handler_t::replace)); }
 
 /// The first place where two JSON values differ, as "path: A vs B", or "" when they are equal. Objects are
 /// compared key by key whatever their order.
@@ -106,7 +105,7 @@ void compare_repetitions(const CaseView& a, const CaseView& b, ChangeList& chang
 std::string joined_labels(const ResultView& r) {
   std::string out;
   for (const CaseView& c : r.cases) out += (out.empty() ? "" : ",") + c.label;
-  return out.size() > 60 ? out.substr(0, 57) + "..." : out;
+  return shorten(out);
 }
 
 bool has_time_budget(const ResultView& r) {
