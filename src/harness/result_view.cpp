@@ -19,10 +19,9 @@ class Fields {
     throw ResultFileError(file_, path, problem);
   }
   const ojson& member(const ojson& object, const std::string& parent, const char* key) const {
-    const std::string path = parent.empty() ? key : parent + "." + key;
     if (!object.is_object()) fail(parent, "must be an object");
     const auto it = object.find(key);
-    if (it == object.end()) fail(path, "missing");
+    if (it == object.end()) fail(join(parent, key), "missing");
     return *it;
   }
   const ojson& object(const ojson& parent, const std::string& path, const char* key) const {
