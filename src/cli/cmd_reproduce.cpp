@@ -38,7 +38,7 @@ int reproduce_command(const ReproduceArgs& args) {
 
   nlohmann::ordered_json report = native_json(result);
   report["reproduction"] = reproduction_json(result, reproduction);
-  const int written = write_report(report.dump(2) + "\n", args.out);
+  const int written = write_report(json_text(report), args.out);
   if (written != kExitOk) return written;
   return reproduction.pass() ? kExitOk : kExitFailed;
 }

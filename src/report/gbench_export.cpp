@@ -147,10 +147,8 @@ ojson gbench_json(const ResultView& result) {
   return doc;
 }
 
-std::string GbenchFormat::render(const RunResult& result) const { return render_native(native_json(result)); }
-
 std::string GbenchFormat::render_native(const nlohmann::ordered_json& native) const {
-  return gbench_json(read_result(native, "result")).dump(2, ' ', false, ojson::error_handler_t::replace) + "\n";
+  return json_text(gbench_json(read_result(native, "result")));
 }
 
 }  // namespace tcsb

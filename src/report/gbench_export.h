@@ -25,9 +25,7 @@ class GbenchFormat final : public ReportFormat {
  public:
   /// "gbench".
   std::string name() const override { return "gbench"; }
-  /// gbench_json() of the run, indented by 2.
-  std::string render(const RunResult& result) const override;
-  /// gbench_json() of a result file.
+  /// gbench_json() of a result file, indented by 2.
   std::string render_native(const nlohmann::ordered_json& native) const override;
 };
 

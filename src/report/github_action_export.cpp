@@ -11,7 +11,6 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
-
 std::string counts(const CaseView& c) {
   std::string out;
   if (c.mean_nodes) out += "N " + formatted("%.0f", *c.mean_nodes);
@@ -19,8 +18,6 @@ std::string counts(const CaseView& c) {
   if (c.mean_interpolations) out += ", I " + formatted("%.2f", *c.mean_interpolations);
   return out;
 }
-
-std::string dump(const ojson& doc) { return doc.dump(2, ' ', false, ojson::error_handler_t::replace) + "\n"; }
 
 }  // namespace
 
@@ -68,20 +65,12 @@ ojson github_action_speedups(const ResultView& result) {
   return out;
 }
 
-std::string GithubActionSmallerFormat::render(const RunResult& result) const {
-  return render_native(native_json(result));
-}
-
 std::string GithubActionSmallerFormat::render_native(const nlohmann::ordered_json& native) const {
-  return dump(github_action_step_times(read_result(native, "result")));
-}
-
-std::string GithubActionBiggerFormat::render(const RunResult& result) const {
-  return render_native(native_json(result));
+  return json_text(github_action_step_times(read_result(native, "result")));
 }
 
 std::string GithubActionBiggerFormat::render_native(const nlohmann::ordered_json& native) const {
-  return dump(github_action_speedups(read_result(native, "result")));
+  return json_text(github_action_speedups(read_result(native, "result")));
 }
 
 }  // namespace tcsb

@@ -27,8 +27,6 @@ class GithubActionSmallerFormat final : public ReportFormat {
  public:
   /// "github-action-smaller".
   std::string name() const override { return "github-action-smaller"; }
-  /// github_action_step_times() of the run.
-  std::string render(const RunResult& result) const override;
   /// github_action_step_times() of a result file.
   std::string render_native(const nlohmann::ordered_json& native) const override;
 };
@@ -38,8 +36,6 @@ class GithubActionBiggerFormat final : public ReportFormat {
  public:
   /// "github-action-bigger".
   std::string name() const override { return "github-action-bigger"; }
-  /// github_action_speedups() of the run.
-  std::string render(const RunResult& result) const override;
   /// github_action_speedups() of a result file.
   std::string render_native(const nlohmann::ordered_json& native) const override;
 };

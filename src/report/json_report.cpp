@@ -217,10 +217,10 @@ ojson native_json(const RunResult& result) {
   return doc;
 }
 
-std::string NativeJsonFormat::render(const RunResult& result) const { return render_native(native_json(result)); }
-
-std::string NativeJsonFormat::render_native(const nlohmann::ordered_json& native) const {
-  return native.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+std::string json_text(const nlohmann::ordered_json& doc) {
+  return doc.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
+
+std::string NativeJsonFormat::render_native(const nlohmann::ordered_json& native) const { return json_text(native); }
 
 }  // namespace tcsb

@@ -27,6 +27,10 @@ nlohmann::ordered_json json_number(const std::optional<double>& value);
 /// An optional integer (a step, a count) as JSON: null when absent.
 nlohmann::ordered_json json_integer(const std::optional<int>& value);
 
+/// A JSON document as output text: indented by 2, newline-terminated; invalid UTF-8 in recorded strings (a host
+/// name, say) is replaced, not thrown on.
+std::string json_text(const nlohmann::ordered_json& doc);
+
 /// The whole run as the native JSON document (schema_version, tool, context, suite, cases, table1, table2,
 /// scaling, [fidelity, pareto, max_compression when the run has a fidelity pass], status, wall_s — in that order).
 nlohmann::ordered_json native_json(const RunResult& result);
@@ -36,9 +40,7 @@ class NativeJsonFormat final : public ReportFormat {
  public:
   /// "json".
   std::string name() const override { return "json"; }
-  /// The document as text; invalid UTF-8 in recorded strings (a host name, say) is replaced, not thrown on.
-  std::string render(const RunResult& result) const override;
-  /// The document as text, re-indented.
+  /// The document as text (json_text), re-indented.
   std::string render_native(const nlohmann::ordered_json& native) const override;
 };
 

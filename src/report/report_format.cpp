@@ -31,6 +31,8 @@ constexpr Registration kFormats[] = {
 
 }  // namespace
 
+std::string ReportFormat::render(const RunResult& result) const { return render_native(native_json(result)); }
+
 std::unique_ptr<ReportFormat> make_format(std::string_view name) {
   for (const Registration& r : kFormats) {
     if (r.name == name) return r.create();

@@ -19,8 +19,10 @@ class ReportFormat {
   virtual ~ReportFormat() = default;
   /// The name users pass to --format, e.g. "json".
   virtual std::string name() const = 0;
-  /// The complete output (what goes to stdout or the --out file), newline-terminated.
-  virtual std::string render(const RunResult& result) const = 0;
+  /// The complete output (what goes to stdout or the --out file), newline-terminated: render_native() of the run's
+  /// native document, so each format is written once and `tcsb run --format` and `tcsb export` agree by
+  /// construction.
+  std::string render(const RunResult& result) const;
   /// The same output from a finished run's native JSON document (a result file, as `tcsb export` reads it); the
   /// document has been checked against the result schema.
   virtual std::string render_native(const nlohmann::ordered_json& native) const = 0;
