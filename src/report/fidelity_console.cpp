@@ -4,6 +4,7 @@
 
 #include "harness/fidelity_tables.h"
 #include "harness/paper_tables.h"
+#include "report/claims_console.h"
 #include "report/text_table.h"
 
 namespace tcsb {
@@ -58,12 +59,7 @@ void print_fidelity_report(const RunResult& result, std::ostream& out) {
   const std::vector<ParetoPoint> sweep = pareto_sweep(rows);
   print_sweep(sweep, max_compression(sweep, result.fidelity->rms_threshold_pct), out);
   out << '\n';
-  TextTable t({{"id", Align::kLeft}, {"check", Align::kLeft}, {"expected"}, {"measured"}, {"verdict", Align::kLeft}});
-  for (const Claim& c : fidelity_targets(rows))
-    t.add_row({c.id, comparison_name(c.comparison), general(c.expected, 4), general(c.measured, 4),
-               c.pass ? "pass" : "FAIL"});
-  out << "Fidelity targets (reported, not gating):\n";
-  t.print(out);
+  print_claims("Fidelity targets (reported, not gating):", fidelity_targets(rows), out);
   out << "Fidelity pass: " << fixed(result.fidelity->wall_s, 1) << " s\n";
 }
 

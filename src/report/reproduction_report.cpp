@@ -6,6 +6,7 @@
 #include "harness/fidelity_tables.h"
 #include "harness/paper_claims.h"
 #include "harness/paper_tables.h"
+#include "report/claims_console.h"
 #include "report/json_report.h"
 #include "report/text_table.h"
 
@@ -52,15 +53,6 @@ const FidelityRow* fidelity_row(const std::vector<FidelityRow>& rows, const Tabl
 
 std::vector<FidelityRow> fidelity_rows_of(const RunResult& result) {
   return result.fidelity ? fidelity_rows(*result.fidelity) : std::vector<FidelityRow>{};
-}
-
-void print_claims(const char* title, const std::vector<Claim>& claims, std::ostream& out) {
-  TextTable t({{"id", Align::kLeft}, {"check", Align::kLeft}, {"expected"}, {"measured"}, {"verdict", Align::kLeft}});
-  for (const Claim& c : claims)
-    t.add_row({c.id, comparison_name(c.comparison), general(c.expected, 4), general(c.measured, 4),
-               c.pass ? "pass" : "FAIL"});
-  out << title << "\n";
-  t.print(out);
 }
 
 }  // namespace

@@ -1,0 +1,15 @@
+// Claims and targets as a console table (id, check, expected, measured, verdict), for the reproduction and the
+// fidelity report alike.
+#pragma once
+
+#include <ostream>
+#include <vector>
+
+#include "analysis/claim.h"
+
+namespace tcsb {
+
+/// Prints `title` on its own line, then one row per claim.
+void print_claims(const char* title, const std::vector<Claim>& claims, std::ostream& out);
+
+}  // namespace tcsb
