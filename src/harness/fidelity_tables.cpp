@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include "analysis/statistics.h"
+#include "harness/paper_tables.h"
 
 namespace tcsb {
 
 namespace {
 
-bool same_target(double a, double b) { return std::abs(a - b) < 1e-9; }
 
 /// The mean of `values`, or nullopt when there are none or any is not finite (then nothing is averaged in).
 std::optional<double> finite_mean(const std::vector<double>& values) {
@@ -39,7 +39,7 @@ std::string percent(double compression) { return std::to_string(static_cast<int>
 
 const FidelityRow* row_of(const std::vector<FidelityRow>& rows, const char* method, double compression) {
   for (const FidelityRow& r : rows)
-    if (r.method == method && same_target(r.compression, compression)) return &r;
+    if (r.method == method && same_compression(r.compression, compression)) return &r;
   return nullptr;
 }
 
@@ -58,7 +58,7 @@ std::vector<FidelityRow> fidelity_rows(const FidelityResult& result) {
   for (const FidelityCase& c : result.cases) {
     const std::string method = fidelity_method_name(c.subject.method);
     auto it = std::find_if(rows.begin(), rows.end(), [&](const FidelityRow& r) {
-      return r.method == method && same_target(r.compression, c.subject.compression);
+      return r.method == method && same_compression(r.compression, c.subject.compression);
     });
     if (it == rows.end()) {
       rows.push_back({});

@@ -9,7 +9,7 @@ namespace {
 
 const Table2Row* tcsb_row(const std::vector<Table2Row>& table2, double compression) {
   for (const Table2Row& r : table2)
-    if (r.method == "tcsb" && r.compression && std::abs(*r.compression - compression) < 1e-9) return &r;
+    if (r.method == "tcsb" && r.compression && same_compression(*r.compression, compression)) return &r;
   return nullptr;
 }
 

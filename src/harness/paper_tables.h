@@ -4,6 +4,7 @@
 // report format shows the same numbers and tests can feed hand-made results.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -74,6 +75,9 @@ inline constexpr double kFlatnessTarget = 0.2;
 /// are left out, never averaged in; ratios compare only nets that are ok in both the group and plain, so a net that
 /// diverged in one method cannot bias the other's ratio.
 std::vector<Table2Row> table2(const RunResult& result);
+
+/// Whether two compression targets are the same one (up to binary noise such as 100 * 0.3 = 30.000000000000004).
+inline bool same_compression(double a, double b) { return std::abs(a - b) < 1e-9; }
 
 /// Table 2's compression column: "-" without a target, "NoCompression" for 1.0, otherwise a percentage ("75%").
 std::string compression_label(std::optional<double> compression);

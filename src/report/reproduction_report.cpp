@@ -47,7 +47,7 @@ nlohmann::ordered_json claim_json(const Claim& c) {
 const FidelityRow* fidelity_row(const std::vector<FidelityRow>& rows, const Table2Row& row) {
   if (row.method != "tcsb" || !row.compression) return nullptr;
   for (const FidelityRow& f : rows)
-    if (f.method == "tcsb" && std::abs(f.compression - *row.compression) < 1e-9 && f.nets > 0) return &f;
+    if (f.method == "tcsb" && same_compression(f.compression, *row.compression) && f.nets > 0) return &f;
   return nullptr;
 }
 
