@@ -10,7 +10,6 @@ namespace tcsb {
 
 namespace {
 
-
 /// The mean of `values`, or nullopt when there are none or any is not finite (then nothing is averaged in).
 std::optional<double> finite_mean(const std::vector<double>& values) {
   if (values.empty() || count_nonfinite(values) > 0) return std::nullopt;
@@ -34,8 +33,6 @@ MetricSummary combine(const std::vector<const MetricSummary*>& parts) {
   out.max = *std::max_element(maxima.begin(), maxima.end());
   return out;
 }
-
-std::string percent(double compression) { return std::to_string(static_cast<int>(std::lround(compression * 100))); }
 
 const FidelityRow* row_of(const std::vector<FidelityRow>& rows, const char* method, double compression) {
   for (const FidelityRow& r : rows)
@@ -165,14 +162,14 @@ std::vector<Claim> fidelity_targets(const std::vector<FidelityRow>& rows) {
     const std::optional<double> tc = w(row_of(rows, "tcsb", uniform.compression)), grid = w(&uniform);
     std::optional<double> ratio;
     if (tc && grid && *grid > 0) ratio = *tc / *grid;
-    const std::string p = percent(uniform.compression);
+    const std::string p = compression_percent(uniform.compression);
     targets.push_back(check_claim("fidelity_weighted_vs_uniform_" + p,
                                   "TC-SB at " + p + "%: saliency-weighted RMS at most half the uniform coarse grid's "
                                   "with the same node count (ratio)", Comparison::kAtMost, 0.5, 0.0, ratio));
   }
   for (const FidelityRow& r : rows) {
     if (r.method != "tcsb" || r.compression >= 1.0) continue;
-    const std::string p = percent(r.compression);
+    const std::string p = compression_percent(r.compression);
     targets.push_back(check_claim("fidelity_popping_" + p,
                                   "TC-SB at " + p + "%: no operation moves the reconstructed surface by more than "
                                   "0.5% of the net's extent (max over steps and nets)", Comparison::kAtMost, 0.5, 0.0,

@@ -18,15 +18,13 @@ std::optional<double> ratio_of(const std::vector<Table2Row>& table2, double comp
   return r ? r->time_ratio_vs_plain : std::nullopt;
 }
 
-std::string percent(double compression) { return std::to_string(static_cast<int>(std::lround(compression * 100))); }
-
 }  // namespace
 
 std::vector<Claim> paper_claims(const PaperReference& paper, const std::vector<Table2Row>& table2,
                                 const std::vector<StepFit>& step_fits, const std::vector<OpFit>& op_fits) {
   std::vector<Claim> claims;
   for (double target : {0.3, 0.75}) {
-    const std::string p = percent(target);
+    const std::string p = compression_percent(target);
     const double expected = paper.time_ratio(p + "%");
     claims.push_back(check_claim("tcsb_" + p + "_vs_plain",
                                  "TC-SB at " + p + "% costs at most the paper's share of plain Bullet's step time "
@@ -38,8 +36,8 @@ std::vector<Claim> paper_claims(const PaperReference& paper, const std::vector<T
                                Comparison::kAtMost, 1.03, 0.0, ratio_of(table2, 1.0)));
   for (const StepFit& fit : step_fits) {
     if (fit.method == "bullet_patch") continue;
-    const std::string id = fit.method == "plain" ? std::string("plain")
-                                                 : "tcsb_" + (fit.compression ? percent(*fit.compression) : "?");
+    const std::string target = fit.compression ? compression_percent(*fit.compression) : "?";
+    const std::string id = fit.method == "plain" ? std::string("plain") : "tcsb_" + target;
     claims.push_back(check_claim("step_linear_" + id,
                                  "step time of " + id + " is linear in node count, R^2 of the fit (Figure 5)",
                                  Comparison::kAtLeast, 0.98, 0.0, fit.r2));

@@ -93,6 +93,10 @@ void fit_points(std::vector<ScalingPoint> points, Fit& fit) {
 
 }  // namespace
 
+std::string compression_percent(double compression) {
+  return std::to_string(static_cast<int>(std::lround(compression * 100)));
+}
+
 std::string compression_label(std::optional<double> compression) {
   if (!compression) return "-";
   if (*compression == 1.0) return "NoCompression";
