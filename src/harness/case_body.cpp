@@ -43,9 +43,13 @@ class TreeCutBody final : public CaseBody {
 
 }  // namespace
 
+int node_budget(const Net& net, double compression) {
+  return static_cast<int>(std::lround(compression * static_cast<double>(net.node_count())));
+}
+
 int target_node_count(const Net& net, const CaseKey& key) {
   if (key.method != Method::kTcsb || !key.compression) return 0;
-  return static_cast<int>(std::lround(*key.compression * static_cast<double>(net.node_count())));
+  return node_budget(net, *key.compression);
 }
 
 std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key, SoftBodyWorld& world,

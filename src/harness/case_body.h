@@ -32,7 +32,11 @@ class CaseBody {
   virtual TcSoftBody* tc() { return nullptr; }
 };
 
-/// Node budget of a TC-SB case: the compression target times the net's node count, rounded.
+/// A node budget: the compression target times the net's node count, rounded. Timed cases and fidelity subjects
+/// alike.
+int node_budget(const Net& net, double compression);
+
+/// Node budget of a TC-SB case (node_budget), 0 for other methods.
 int target_node_count(const Net& net, const CaseKey& key);
 
 /// Builds the body for a case. `seed` drives any random choices (same seed, same run).

@@ -4,6 +4,7 @@
 
 #include "analysis/fidelity_metrics.h"
 #include "feedback/controller.h"
+#include "harness/case_body.h"
 #include "harness/reconstruction.h"
 #include "harness/step_clock.h"
 #include "net/grid_resample.h"
@@ -182,9 +183,7 @@ class SwitchSubject final : public FidelitySubject {
 
 }  // namespace
 
-int subject_budget(const Net& net, const FidelitySubjectSpec& spec) {
-  return static_cast<int>(std::lround(spec.compression * static_cast<double>(net.node_count())));
-}
+int subject_budget(const Net& net, const FidelitySubjectSpec& spec) { return node_budget(net, spec.compression); }
 
 NetSpec coarse_net_spec(const NetSpec& fine, int budget) {
   const CoarseGrid g = coarse_grid_for(fine.width, fine.height, budget);
