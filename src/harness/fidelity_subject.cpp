@@ -11,6 +11,7 @@
 #include "softbody/bullet_setup.h"
 #include "softbody/plain_softbody.h"
 #include "softbody/tc_softbody.h"
+#include "softbody/vector_conversion.h"
 
 namespace tcsb {
 
@@ -139,9 +140,8 @@ class SwitchSubject final : public FidelitySubject {
       if (coarse_.pinned()[static_cast<std::size_t>(i)]) continue;  // corners stay at rest (the fine ones are too)
       const Eigen::Vector3d& p = cx_[static_cast<std::size_t>(i)];
       const Eigen::Vector3d& u = cv_[static_cast<std::size_t>(i)];
-      n.m_x = n.m_q =
-          btVector3(static_cast<btScalar>(p.x()), static_cast<btScalar>(p.y()), static_cast<btScalar>(p.z()));
-      n.m_v = btVector3(static_cast<btScalar>(u.x()), static_cast<btScalar>(u.y()), static_cast<btScalar>(u.z()));
+      n.m_x = n.m_q = to_bullet(p);
+      n.m_v = to_bullet(u);
     }
     coarse->updateBounds();
     body_ = std::move(coarse);  // frees the fine body: part of what a switch costs

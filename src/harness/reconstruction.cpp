@@ -2,11 +2,9 @@
 
 #include <stdexcept>
 
-namespace tcsb {
+#include "softbody/vector_conversion.h"
 
-namespace {
-Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
-}  // namespace
+namespace tcsb {
 
 void fill_block(const LodTree& tree, TreeId id, const Eigen::Vector3d& x, const Eigen::Matrix<double, 3, 2>& f,
                 std::span<Eigen::Vector3d> leaves) {

@@ -5,6 +5,8 @@
 #include <numeric>
 #include <random>
 
+#include "softbody/vector_conversion.h"
+
 namespace tcsb {
 
 void apply_solver_settings(btSoftBody& body, const SolverSettings& settings) {
@@ -26,7 +28,7 @@ void init_net_nodes(btSoftBody& body, const Net& net, int capacity) {
   for (int i = 0; i < n; ++i) {
     btSoftBody::Node& node = body.m_nodes[i];
     const Eigen::Vector3d& r = net.rest_positions()[static_cast<std::size_t>(i)];
-    node.m_x = btVector3(static_cast<btScalar>(r.x()), static_cast<btScalar>(r.y()), static_cast<btScalar>(r.z()));
+    node.m_x = to_bullet(r);
     node.m_q = node.m_x;
     const btScalar mass = net.pinned()[static_cast<std::size_t>(i)] ? btScalar(0)
                                                                       : static_cast<btScalar>(net.masses()[static_cast<std::size_t>(i)]);

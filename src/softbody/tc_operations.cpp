@@ -6,6 +6,7 @@
 
 #include "net/cut_adjacency.h"
 #include "softbody/tc_softbody.h"
+#include "softbody/vector_conversion.h"
 
 namespace tcsb {
 
@@ -20,10 +21,6 @@ bool is_child(const LodNode& block, TreeId n) {
   for (int i = 0; i < block.child_count; ++i)
     if (block.children[static_cast<std::size_t>(i)] == n) return true;
   return false;
-}
-Eigen::Vector3d to_eigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
-btVector3 to_bullet(const Eigen::Vector3d& v) {
-  return {static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z())};
 }
 }  // namespace
 

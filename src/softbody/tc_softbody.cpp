@@ -7,6 +7,7 @@
 
 #include "softbody/bullet_setup.h"
 #include "softbody/dbvt_local.h"
+#include "softbody/vector_conversion.h"
 
 namespace tcsb {
 
@@ -40,7 +41,7 @@ TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, con
   rest_.resize(tree_size);
   for (std::size_t id = 0; id < tree_size; ++id) {
     const Eigen::Vector3d& r = lod.nodes()[id].rest;
-    rest_[id] = btVector3(static_cast<btScalar>(r.x()), static_cast<btScalar>(r.y()), static_cast<btScalar>(r.z()));
+    rest_[id] = to_bullet(r);
   }
   tree_of_.resize(leaves);
   for (std::size_t leaf = 0; leaf < leaves; ++leaf) {
@@ -189,8 +190,7 @@ Eigen::Vector3d TcSoftBody::linear_momentum() const {
   for (int i = 0; i < m_nodes.size(); ++i) {
     const TreeId id = tree_of_[static_cast<std::size_t>(i)];
     if (tree().node(id).pinned()) continue;
-    const btVector3& v = m_nodes[i].m_v;
-    p += sim_mass_[static_cast<std::size_t>(id)] * Eigen::Vector3d(v.x(), v.y(), v.z());
+    p += sim_mass_[static_cast<std::size_t>(id)] * to_eigen(m_nodes[i].m_v);
   }
   return p;
 }
