@@ -22,10 +22,16 @@ namespace tcsb::bench {
 inline constexpr int kOpWidths[] = {33, 65, 129, 257, 513};
 /// Net widths of the step benchmarks.
 inline constexpr int kStepWidths[] = {33, 65, 129};
-/// Measured operations per size and benchmark (each iteration also runs an untimed round trip ~10x its cost).
-/// TCSB_BENCH_OP_ITERS in the environment overrides it, e.g. for quick runs while developing.
-inline constexpr int kOpIterations = 10000;
+/// Measured operations per size, benchmark and repetition (each iteration also runs an untimed round trip ~10x its
+/// cost). TCSB_BENCH_OP_ITERS in the environment overrides it, e.g. for quick runs while developing.
+inline constexpr int kOpIterations = 2000;
 int op_iterations();
+/// Repetitions main() asks for unless the command line says otherwise, randomly interleaved across sizes and
+/// benchmarks: flatness compares sizes, and on a shared VM whose speed drifts by tens of percent within minutes, sizes
+/// measured one after the other would compare moments, not sizes. 5 x 2 000 = 10 000 measured calls per size.
+inline constexpr int kDefaultRepetitions = 5;
+/// Untimed round trips before each repetition's measured ones (op_bench.cpp).
+inline constexpr int kWarmupRoundTrips = 1000;
 /// Step size of every benchmark body, seconds.
 inline constexpr btScalar kDt = btScalar(1.0 / 60.0);
 
@@ -59,15 +65,17 @@ struct OpBody {
 /// The cached body of a width (built on first use, outside any timed region).
 OpBody& op_body(int width);
 
-/// One finished run of a per-operation benchmark, for the flatness summary.
+/// One finished run (one repetition) of a per-operation benchmark, for the flatness summary, which pools the
+/// repetitions of each benchmark and size.
 struct OpRun {
   std::string op;          ///< benchmark name, e.g. "BM_Refine"
   int width = 0;
   long long nodes = 0;     ///< Bullet nodes when it ran (the N of the fit)
-  long long iterations = 0;
-  double mean_ns = 0, median_ns = 0, p90_ns = 0, p99_ns = 0, max_ns = 0;
-  double node_median_ns = 0, link_median_ns = 0;  ///< the body's own split (OpSample), medians
+  std::vector<double> ns;  ///< each measured call
+  std::vector<double> node_ns, link_ns;  ///< the body's own split of each call (OpSample)
 };
+/// The q-quantile (0..1) of v by rank, 0 for an empty v.
+double percentile(std::vector<double> v, double q);
 /// Every per-operation run of this process, in order.
 std::vector<OpRun>& op_runs();
 

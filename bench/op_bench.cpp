@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench_bodies.h"
@@ -76,13 +77,6 @@ double refine_round_trip(TcSoftBody& body, TreeId q, Timed timed, long long& res
   return t;
 }
 
-double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  const std::size_t k = std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())));
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  return v[k];
-}
-
 void run_op(benchmark::State& state, Timed timed, const char* name) {
   OpBody& fixture = op_body(static_cast<int>(state.range(0)));
   TcSoftBody& body = *fixture.body;
@@ -108,6 +102,19 @@ void run_op(benchmark::State& state, Timed timed, const char* name) {
   OpSample timed_sample[kOpKindCount];
   KindSink sink(timed_sample);
   body.set_op_sink(&sink);
+
+  // Untimed round trips first, so every repetition starts from the steady state a stream of operations keeps the
+  // caches in. Without them, the repetitions interleaved with other sizes (main()) would time a small body's first
+  // few thousand calls against lines the previous benchmark evicted, and a size would be measured by what ran before
+  // it. 1 000 random round trips touch a 65^2 body's per-node data several times over.
+  for (int i = 0; i < kWarmupRoundTrips; ++i) {
+    const TreeId id = coarse_first ? fixture.coarse_candidate() : fixture.refine_candidate();
+    if (id == kNoTreeNode) break;
+    if (coarse_first)
+      coarse_round_trip(body, id, timed, restore_failures);
+    else
+      refine_round_trip(body, id, timed, restore_failures);
+  }
 
   TCSB_CALLGRIND_ZERO_STATS();
   for (auto _ : state) {
@@ -136,26 +143,19 @@ void run_op(benchmark::State& state, Timed timed, const char* name) {
   state.counters["p99_ns"] = percentile(samples, 0.99);
   state.counters["node_ns"] = percentile(node_part, 0.5);
   state.counters["link_ns"] = percentile(link_part, 0.5);
-  state.counters["drift"] = body.committed_count() - committed_before;  // cut size change over the run: ~0
+  // Cut size change over the run, ~0; like restore_fail, set only when non-zero, because Google Benchmark's
+  // coefficient of variation over repetitions of an all-zero counter is 0/0, which it writes into JSON as NaN.
+  if (const int drift = body.committed_count() - committed_before) state.counters["drift"] = drift;
   if (restore_failures) state.counters["restore_fail"] = static_cast<double>(restore_failures);
 
   OpRun run;
   run.op = name;
   run.width = fixture.width;
   run.nodes = nodes;
-  run.iterations = static_cast<long long>(samples.size());
-  if (!samples.empty()) {
-    double sum = 0;
-    for (double s : samples) sum += s;
-    run.mean_ns = sum / static_cast<double>(samples.size());
-    run.median_ns = percentile(samples, 0.5);
-    run.p90_ns = percentile(samples, 0.9);
-    run.p99_ns = percentile(samples, 0.99);
-    run.max_ns = *std::max_element(samples.begin(), samples.end());
-    run.node_median_ns = percentile(node_part, 0.5);
-    run.link_median_ns = percentile(link_part, 0.5);
-  }
-  op_runs().push_back(run);
+  run.ns = std::move(samples);
+  run.node_ns = std::move(node_part);
+  run.link_ns = std::move(link_part);
+  op_runs().push_back(std::move(run));
 }
 
 void BM_Refine(benchmark::State& state) { run_op(state, Timed::kRefine, "BM_Refine"); }

@@ -123,6 +123,13 @@ int op_iterations() {
   return kOpIterations;
 }
 
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  const std::size_t k = std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
 namespace {
 
 double median(std::vector<double> v) {
@@ -132,51 +139,103 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
-/// Per op: the per-size medians, an ordinary least-squares line through (N, median ns), and the target check
-/// "slope x (largest N - smallest N) < 20% of the median cost" (the median of the per-size medians).
+/// One benchmark at one size, its repetitions pooled.
+struct SizeSummary {
+  int width = 0;
+  long long nodes = 0;  ///< mean over the repetitions (the cut is restored after each call, so they agree)
+  int repetitions = 0;
+  std::size_t calls = 0;
+  double median_ns = 0, mean_ns = 0, p90_ns = 0, p99_ns = 0, max_ns = 0;
+  double node_median_ns = 0, link_median_ns = 0;
+  double rep_median_lo = 0, rep_median_hi = 0;  ///< range of the repetitions' own medians: the drift between them
+};
+
+SizeSummary pool(const std::vector<const OpRun*>& reps) {
+  SizeSummary s;
+  s.width = reps.front()->width;
+  s.repetitions = static_cast<int>(reps.size());
+  std::vector<double> ns, node_ns, link_ns, rep_medians;
+  double nodes = 0;
+  for (const OpRun* r : reps) {
+    ns.insert(ns.end(), r->ns.begin(), r->ns.end());
+    node_ns.insert(node_ns.end(), r->node_ns.begin(), r->node_ns.end());
+    link_ns.insert(link_ns.end(), r->link_ns.begin(), r->link_ns.end());
+    rep_medians.push_back(percentile(r->ns, 0.5));
+    nodes += static_cast<double>(r->nodes);
+  }
+  s.nodes = std::llround(nodes / static_cast<double>(reps.size()));
+  s.calls = ns.size();
+  if (ns.empty()) return s;
+  double sum = 0;
+  for (double v : ns) sum += v;
+  s.mean_ns = sum / static_cast<double>(ns.size());
+  s.median_ns = percentile(ns, 0.5);
+  s.p90_ns = percentile(ns, 0.9);
+  s.p99_ns = percentile(ns, 0.99);
+  s.max_ns = *std::max_element(ns.begin(), ns.end());
+  s.node_median_ns = percentile(node_ns, 0.5);
+  s.link_median_ns = percentile(link_ns, 0.5);
+  s.rep_median_lo = *std::min_element(rep_medians.begin(), rep_medians.end());
+  s.rep_median_hi = *std::max_element(rep_medians.begin(), rep_medians.end());
+  return s;
+}
+
+/// Per op: the per-size medians (repetitions pooled), an ordinary least-squares line through (N, median ns), and
+/// the target check "slope x (largest N - smallest N) < 20% of the median cost" (the median of the per-size
+/// medians).
 void print_summary() {
   const auto& runs = op_runs();
   if (runs.empty()) return;
-  std::map<std::string, std::vector<const OpRun*>> by_op;
+  std::map<std::string, std::map<int, std::vector<const OpRun*>>> by_op;
   std::vector<std::string> order;
   for (const OpRun& r : runs) {
     if (!by_op.count(r.op)) order.push_back(r.op);
-    by_op[r.op].push_back(&r);
+    by_op[r.op][r.width].push_back(&r);
   }
-  std::fprintf(stderr, "\nPer-operation cost (ns, one call; N = Bullet nodes at the mixed cut)\n");
-  std::fprintf(stderr, "%-14s %6s %8s %7s %9s %9s %9s %9s %9s %9s %9s\n", "op", "width", "N", "iters", "median",
-               "mean", "p90", "p99", "max", "node_med", "link_med");
+  // Canonical order, whatever order the interleaving ran them in.
+  const std::vector<std::string> canonical{"BM_Refine", "BM_EndRefine", "BM_Coarse", "BM_EndCoarse"};
+  const auto rank = [&](const std::string& op) { return std::find(canonical.begin(), canonical.end(), op); };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](const std::string& a, const std::string& b) { return rank(a) < rank(b); });
+  std::map<std::string, std::vector<SizeSummary>> sizes;
   for (const std::string& op : order)
-    for (const OpRun* r : by_op[op])
-      std::fprintf(stderr, "%-14s %6d %8lld %7lld %9.0f %9.0f %9.0f %9.0f %9.0f %9.0f %9.0f\n", op.c_str(), r->width,
-                   r->nodes, r->iterations, r->median_ns, r->mean_ns, r->p90_ns, r->p99_ns, r->max_ns,
-                   r->node_median_ns, r->link_median_ns);
+    for (const auto& [width, reps] : by_op[op]) sizes[op].push_back(pool(reps));
+
+  std::fprintf(stderr, "\nPer-operation cost (ns, one call; N = Bullet nodes at the mixed cut; repetitions pooled, "
+                       "rep medians = the range of their own medians)\n");
+  std::fprintf(stderr, "%-14s %6s %8s %4s %7s %9s %9s %9s %9s %9s %9s %9s %15s\n", "op", "width", "N", "reps",
+               "calls", "median", "mean", "p90", "p99", "max", "node_med", "link_med", "rep medians");
+  for (const std::string& op : order)
+    for (const SizeSummary& z : sizes[op])
+      std::fprintf(stderr, "%-14s %6d %8lld %4d %7zu %9.0f %9.0f %9.0f %9.0f %9.0f %9.0f %9.0f %7.0f-%-7.0f\n",
+                   op.c_str(), z.width, z.nodes, z.repetitions, z.calls, z.median_ns, z.mean_ns, z.p90_ns, z.p99_ns,
+                   z.max_ns, z.node_median_ns, z.link_median_ns, z.rep_median_lo, z.rep_median_hi);
   std::fprintf(stderr, "\nFlatness in N (OLS of per-size median ns on N; target |slope x (Nmax-Nmin)| < 20%% of the "
                        "median cost)\n");
   std::fprintf(stderr, "%-14s %5s %8s %8s %12s %12s %10s %8s  %s\n", "op", "sizes", "Nmin", "Nmax", "slope ns/N",
                "slope*dN ns", "median ns", "ratio", "verdict");
   for (const std::string& op : order) {
-    const auto& rs = by_op[op];
+    const auto& zs = sizes[op];
     std::vector<double> medians;
     double sx = 0, sy = 0;
-    long long nmin = rs.front()->nodes, nmax = nmin;
-    for (const OpRun* r : rs) {
-      medians.push_back(r->median_ns);
-      sx += static_cast<double>(r->nodes);
-      sy += r->median_ns;
-      nmin = std::min(nmin, r->nodes);
-      nmax = std::max(nmax, r->nodes);
+    long long nmin = zs.front().nodes, nmax = nmin;
+    for (const SizeSummary& z : zs) {
+      medians.push_back(z.median_ns);
+      sx += static_cast<double>(z.nodes);
+      sy += z.median_ns;
+      nmin = std::min(nmin, z.nodes);
+      nmax = std::max(nmax, z.nodes);
     }
-    const double k = static_cast<double>(rs.size()), mx = sx / k, my = sy / k;
+    const double k = static_cast<double>(zs.size()), mx = sx / k, my = sy / k;
     double sxx = 0, sxy = 0;
-    for (const OpRun* r : rs) {
-      const double dx = static_cast<double>(r->nodes) - mx;
+    for (const SizeSummary& z : zs) {
+      const double dx = static_cast<double>(z.nodes) - mx;
       sxx += dx * dx;
-      sxy += dx * (r->median_ns - my);
+      sxy += dx * (z.median_ns - my);
     }
     const double cost = median(medians);
-    if (rs.size() < 2 || sxx <= 0) {
-      std::fprintf(stderr, "%-14s %5zu %8lld %8lld %12s %12s %10.0f %8s  %s\n", op.c_str(), rs.size(), nmin, nmax, "-",
+    if (zs.size() < 2 || sxx <= 0) {
+      std::fprintf(stderr, "%-14s %5zu %8lld %8lld %12s %12s %10.0f %8s  %s\n", op.c_str(), zs.size(), nmin, nmax, "-",
                    "-", cost, "-", "needs 2+ sizes");
       continue;
     }
@@ -184,23 +243,38 @@ void print_summary() {
     const double spread = slope * static_cast<double>(nmax - nmin);
     const double ratio = cost > 0 ? spread / cost : 0.0;
     const char* verdict = std::fabs(ratio) < 0.2 ? "flat" : (ratio > 0 ? "GROWS" : "falls");
-    std::fprintf(stderr, "%-14s %5zu %8lld %8lld %12.3e %12.1f %10.0f %7.1f%%  %s\n", op.c_str(), rs.size(), nmin,
+    std::fprintf(stderr, "%-14s %5zu %8lld %8lld %12.3e %12.1f %10.0f %7.1f%%  %s\n", op.c_str(), zs.size(), nmin,
                  nmax, slope, spread, cost, 100.0 * ratio, verdict);
   }
   // The median target is stated at 65x65.
   for (const std::string& op : order)
-    for (const OpRun* r : by_op[op])
-      if (r->width == 65)
-        std::fprintf(stderr, "%-14s at 65x65: median %.0f ns (target <= 2000 ns): %s\n", op.c_str(), r->median_ns,
-                     r->median_ns <= 2000 ? "met" : "MISSED");
+    for (const SizeSummary& z : sizes[op])
+      if (z.width == 65)
+        std::fprintf(stderr, "%-14s at 65x65: median %.0f ns (target <= 2000 ns): %s\n", op.c_str(), z.median_ns,
+                     z.median_ns <= 2000 ? "met" : "MISSED");
+}
+
+/// The command line with this benchmark's defaults in front: kDefaultRepetitions repetitions, randomly
+/// interleaved, aggregates only on the console (a --benchmark_out file still gets every repetition). Flags the
+/// user gives come later and so win.
+std::vector<char*> with_defaults(int argc, char** argv) {
+  static std::string repetitions = "--benchmark_repetitions=" + std::to_string(kDefaultRepetitions);
+  static std::string interleave = "--benchmark_enable_random_interleaving=true";
+  static std::string aggregates = "--benchmark_display_aggregates_only=true";
+  std::vector<char*> args{argv[0], repetitions.data(), interleave.data(), aggregates.data()};
+  for (int i = 1; i < argc; ++i) args.push_back(argv[i]);
+  args.push_back(nullptr);
+  return args;
 }
 
 }  // namespace
 }  // namespace tcsb::bench
 
 int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  std::vector<char*> args = tcsb::bench::with_defaults(argc, argv);
+  int count = static_cast<int>(args.size()) - 1;
+  benchmark::Initialize(&count, args.data());
+  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 1;
   benchmark::RunSpecifiedBenchmarks();
   tcsb::bench::print_summary();
   benchmark::Shutdown();

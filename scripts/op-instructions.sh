@@ -16,7 +16,7 @@ for width in $widths; do
   # bench/op_bench.cpp zeroes the counters when a benchmark loop starts and dumps them when it ends: cg.out.1, .2, ...
   TCSB_BENCH_OP_ITERS=2000 valgrind --tool=callgrind --cache-sim=yes --D1=49152,12,64 --LL=2097152,16,64 \
     --callgrind-out-file="$dir/cg.out" \
-    "$build/tcsb_bench" --benchmark_filter="BM_(Refine|Coarse)/width:$width/" >/dev/null 2>&1
+    "$build/tcsb_bench" --benchmark_filter="BM_(Refine|Coarse)/width:$width/" --benchmark_repetitions=1 >/dev/null 2>&1
   echo "width $width:"
   python3 scripts/callgrind_calls.py "$dir"/cg.out.*
   rm -rf "$dir"
