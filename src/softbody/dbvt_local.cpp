@@ -9,14 +9,6 @@ namespace tcsb {
 
 namespace {
 
-btDbvtNode* new_node(btDbvtNode* parent) {
-  auto* node = new (btAlignedAlloc(sizeof(btDbvtNode), 16)) btDbvtNode();
-  node->parent = parent;
-  node->childs[0] = nullptr;
-  node->childs[1] = nullptr;
-  return node;
-}
-
 void free_node(btDbvtNode* node) {
   node->~btDbvtNode();
   btAlignedFree(node);
@@ -26,12 +18,39 @@ int index_in_parent(const btDbvtNode* node) { return node->parent->childs[1] == 
 
 }  // namespace
 
-btDbvtNode* insert_leaf_beside(btDbvt& tree, btDbvtNode* beside, const btDbvtVolume& volume, void* data) {
-  btDbvtNode* leaf = new_node(nullptr);
+DbvtNodeCache::~DbvtNodeCache() {
+  for (btDbvtNode* node : spare_) free_node(node);
+}
+
+btDbvtNode* DbvtNodeCache::take(btDbvtNode* parent) {
+  btDbvtNode* node;
+  if (spare_.empty()) {
+    node = new (btAlignedAlloc(sizeof(btDbvtNode), 16)) btDbvtNode();
+  } else {
+    node = spare_.back();
+    spare_.pop_back();
+    *node = btDbvtNode();
+  }
+  node->parent = parent;
+  node->childs[0] = nullptr;
+  node->childs[1] = nullptr;
+  return node;
+}
+
+void DbvtNodeCache::give(btDbvtNode* node) {
+  if (spare_.size() < kMaxSpare)
+    spare_.push_back(node);
+  else
+    free_node(node);
+}
+
+btDbvtNode* insert_leaf_beside(btDbvt& tree, DbvtNodeCache& nodes, btDbvtNode* beside, const btDbvtVolume& volume,
+                               void* data) {
+  btDbvtNode* leaf = nodes.take(nullptr);
   leaf->volume = volume;
   leaf->data = data;  // shares storage with childs[0]; childs[1] == nullptr marks a leaf
   btDbvtNode* prev = beside->parent;
-  btDbvtNode* pair = new_node(prev);
+  btDbvtNode* pair = nodes.take(prev);
   ::Merge(volume, beside->volume, pair->volume);
   pair->childs[0] = beside;
   pair->childs[1] = leaf;
@@ -49,7 +68,7 @@ btDbvtNode* insert_leaf_beside(btDbvt& tree, btDbvtNode* beside, const btDbvtVol
   return leaf;
 }
 
-void remove_leaf_lazily(btDbvt& tree, btDbvtNode* leaf) {
+void remove_leaf_lazily(btDbvt& tree, DbvtNodeCache& nodes, btDbvtNode* leaf) {
   if (leaf == tree.m_root) {
     tree.m_root = nullptr;
   } else {
@@ -63,9 +82,9 @@ void remove_leaf_lazily(btDbvt& tree, btDbvtNode* leaf) {
       tree.m_root = sibling;
       sibling->parent = nullptr;
     }
-    free_node(parent);
+    nodes.give(parent);
   }
-  free_node(leaf);
+  nodes.give(leaf);
   --tree.m_leaves;
 }
 

@@ -74,18 +74,18 @@ void TcSoftBody::simulate_step(btScalar dt) {
 int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, TreeId beside) {
   const bool pinned = tree().node(id).pinned();
   // What appendNode does, but with the DBVT leaf placed beside the related node's leaf in O(1) instead of a
-  // descent from the root. Capacity was reserved for the whole tree, so push_back never reallocates.
-  Node node;
-  std::memset(static_cast<void*>(&node), 0, sizeof(node));
-  node.m_x = x;
-  node.m_q = x;
-  node.m_v = pinned ? btVector3(0, 0, 0) : v;
-  node.m_im = pinned ? btScalar(0) : static_cast<btScalar>(1.0 / sim_mass_[static_cast<std::size_t>(id)]);
-  node.m_material = m_materials[0];
-  m_nodes.push_back(node);
+  // descent from the root. Capacity was reserved for the whole tree, so the array never reallocates.
+  // Zeroed in place (Bullet's ZeroInitialize) rather than built on the stack and copied: 256 bytes written once.
+  Node& added = m_nodes.expandNonInitializing();
   const int index = m_nodes.size() - 1;
-  Node& added = m_nodes[index];
-  added.m_leaf = insert_leaf_beside(m_ndbvt, m_nodes[bullet_[static_cast<std::size_t>(beside)]].m_leaf,
+  std::memset(static_cast<void*>(&added), 0, sizeof(Node));
+  added.m_x = x;
+  added.m_q = x;
+  added.m_v = pinned ? btVector3(0, 0, 0) : v;
+  added.m_im = pinned ? btScalar(0) : static_cast<btScalar>(1.0 / sim_mass_[static_cast<std::size_t>(id)]);
+  added.m_material = m_materials[0];
+  btDbvtNode* beside_leaf = m_nodes[bullet_[static_cast<std::size_t>(beside)]].m_leaf;
+  added.m_leaf = insert_leaf_beside(m_ndbvt, dbvt_nodes_, beside_leaf,
                                     btDbvtVolume::FromCR(x, getCollisionShape()->getMargin()), &added);
   tree_of_.push_back(id);
   bullet_[static_cast<std::size_t>(id)] = index;
@@ -96,7 +96,7 @@ void TcSoftBody::remove_node(TreeId id) {
   const int k = bullet_[static_cast<std::size_t>(id)];
   if (incidence_[static_cast<std::size_t>(id)].size() != 0)
     throw std::logic_error("TcSoftBody::remove_node: node still has links");
-  remove_leaf_lazily(m_ndbvt, m_nodes[k].m_leaf);
+  remove_leaf_lazily(m_ndbvt, dbvt_nodes_, m_nodes[k].m_leaf);
   const int last = m_nodes.size() - 1;
   if (k != last) {
     // Swap-with-last: the moved node's leaf and incident links are re-pointed, O(degree).
@@ -126,9 +126,8 @@ btScalar TcSoftBody::rest_length(TreeId a, TreeId b) const {
 
 int TcSoftBody::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
   if (m_links.size() == m_links.capacity()) ++link_reallocations_;
-  m_links.push_back(Link());
+  Link& l = m_links.expandNonInitializing();  // zeroed in place, as add_node does
   const int index = m_links.size() - 1;
-  Link& l = m_links[index];
   std::memset(static_cast<void*>(&l), 0, sizeof(Link));
   l.m_material = m_materials[0];
   l.m_n[0] = &m_nodes[bullet_[static_cast<std::size_t>(a)]];

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "net/net.h"
+#include "softbody/dbvt_local.h"
 #include "softbody/incidence_list.h"
 #include "softbody/op_sample.h"
 #include "softbody/soft_body_world.h"
@@ -197,6 +198,7 @@ class TcSoftBody : public btSoftBody {
   std::vector<TreeId> tree_of_;           // per Bullet node
   std::vector<CutLink> link_meta_;       // per Bullet link
   std::vector<btVector3> rest_;           // per tree node: rest position in Bullet's precision
+  DbvtNodeCache dbvt_nodes_;              // spare nodes for the node DBVT's local edits
   std::vector<Op> ops_;                   // operation pool
   std::vector<std::int32_t> free_ops_;
   std::vector<std::int32_t> inflight_;    // operations blending
