@@ -143,5 +143,16 @@ TEST(ResultComparison, MachineDifferencesAreListed) {
   EXPECT_EQ(c.machine_differences[1], "build_type: \"Release\" vs \"Debug\"");
 }
 
+TEST(ResultComparison, HugePageSettingsCountAsMachineDifferences) {
+  ojson base = result_doc();
+  base["context"]["transparent_hugepages"] = "madvise";
+  base["context"]["glibc_tunables"] = "";  // unset
+  ojson next = base;
+  next["context"]["glibc_tunables"] = "glibc.malloc.hugetlb=1";
+  const ResultComparison c = compare(base, next);
+  ASSERT_EQ(c.machine_differences.size(), 1u);
+  EXPECT_EQ(c.machine_differences[0], "glibc_tunables: \"\" vs \"glibc.malloc.hugetlb=1\"");
+}
+
 }  // namespace
 }  // namespace tcsb
