@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Instructions and cache misses per call of the four TreeCut operations, from callgrind output files.
 
-Usage: callgrind_calls.py CALLGRIND_OUT...   (several dumps are summed)
+Usage: callgrind_calls.py [--only NAME] CALLGRIND_OUT...   (several dumps are summed)
 Reads the raw callgrind format: each `cfn=` names a callee, the following `calls=N ...` line and cost line give
 N calls and their inclusive cost. Prints calls and instructions (Ir) per call for begin/end refine/coarse, and with
 --cache-sim=yes also last-level data misses per call (DLmr + DLmw: cache lines fetched from beyond the simulated
-last-level cache).
+last-level cache). --only keeps the operation whose name contains NAME (e.g. begin_refine): a benchmark's dump
+also holds the untimed operations that undo each timed one, whose lines are still warm.
 """
 import collections
 import re
@@ -45,14 +46,20 @@ def read_dump(path, calls, inclusive):
     return events
 
 
-def main(paths):
+def main(args):
+    only = None
+    if len(args) >= 2 and args[0] == "--only":
+        only, args = args[1], args[2:]
+    paths = args
     calls = collections.Counter()
     inclusive = collections.Counter()
     events = []
     for path in paths:
         events = read_dump(path, calls, inclusive)
     for name in sorted(calls):
-        if re.search(r"TcSoftBody::(begin_refine|begin_coarse|end_refine|end_coarse)\(", name):
+        if re.search(r"TcSoftBody::(begin_refine|begin_coarse|end_refine|end_coarse)\(", name) and (
+            only is None or only in name
+        ):
             n = calls[name]
             line = f"{name.split('(')[0]:40s} calls={n:7d} Ir/call={inclusive[(name, 'Ir')] / n:8.0f}"
             if "DLmr" in events:
