@@ -19,9 +19,9 @@ namespace tcsb {
 /// Spare DBVT nodes for the local edits. Adding a TC-SB node takes two tree nodes (its leaf and the pair above it)
 /// and removing one gives two back; recycling them instead of calling btAlignedAlloc/btAlignedFree each time saves
 /// about 150 instructions per allocation (a refine adds four nodes: 7 800 -> 6 400 instructions with the in-place
-/// zeroing of tc_softbody.cpp, callgrind at 33^2), and a recycled node is usually still in cache. Every node is still a block of its
-/// own from btAlignedAlloc, so Bullet may free a node that came from here, and a node Bullet allocated may come
-/// back here, without harm.
+/// zeroing of tc_softbody.cpp, callgrind at 33^2), and a recycled node is usually still in cache. Every node is
+/// still a block of its own from btAlignedAlloc, so Bullet may free a node that came from here, and a node Bullet
+/// allocated may come back here, without harm.
 class DbvtNodeCache {
  public:
   /// At most this many spare nodes are kept; more are freed.
