@@ -74,8 +74,6 @@ struct OpRun {
   std::vector<double> ns;  ///< each measured call
   std::vector<double> node_ns, link_ns;  ///< the body's own split of each call (OpSample)
 };
-/// The q-quantile (0..1) of v by rank, 0 for an empty v.
-double percentile(std::vector<double> v, double q);
 /// Every per-operation run of this process, in order.
 std::vector<OpRun>& op_runs();
 

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/statistics.h"
 #include "bench_bodies.h"
 
 // scripts/op-instructions.sh runs this benchmark under callgrind: the loop below zeroes the counters when it starts
@@ -138,11 +139,11 @@ void run_op(benchmark::State& state, Timed timed, const char* name) {
   state.SetComplexityN(nodes);
   state.counters["N"] = static_cast<double>(nodes);
   state.counters["L"] = static_cast<double>(links);
-  state.counters["med_ns"] = percentile(samples, 0.5);
-  state.counters["p90_ns"] = percentile(samples, 0.9);
-  state.counters["p99_ns"] = percentile(samples, 0.99);
-  state.counters["node_ns"] = percentile(node_part, 0.5);
-  state.counters["link_ns"] = percentile(link_part, 0.5);
+  state.counters["med_ns"] = median(samples);
+  state.counters["p90_ns"] = percentile(samples, 90);
+  state.counters["p99_ns"] = percentile(samples, 99);
+  state.counters["node_ns"] = median(node_part);
+  state.counters["link_ns"] = median(link_part);
   // Cut size change over the run, ~0; like restore_fail, set only when non-zero, because Google Benchmark's
   // coefficient of variation over repetitions of an all-zero counter is 0/0, which it writes into JSON as NaN.
   if (const int drift = body.committed_count() - committed_before) state.counters["drift"] = drift;

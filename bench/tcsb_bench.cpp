@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/linear_fit.h"
+#include "analysis/statistics.h"
 #include "bench_bodies.h"
 #include "feedback/random_policy.h"
 
@@ -123,21 +125,7 @@ int op_iterations() {
   return kOpIterations;
 }
 
-double percentile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  const std::size_t k = std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())));
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  return v[k];
-}
-
 namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 
 /// One benchmark at one size, its repetitions pooled.
 struct SizeSummary {
@@ -160,21 +148,19 @@ SizeSummary pool(const std::vector<const OpRun*>& reps) {
     ns.insert(ns.end(), r->ns.begin(), r->ns.end());
     node_ns.insert(node_ns.end(), r->node_ns.begin(), r->node_ns.end());
     link_ns.insert(link_ns.end(), r->link_ns.begin(), r->link_ns.end());
-    rep_medians.push_back(percentile(r->ns, 0.5));
+    rep_medians.push_back(median(r->ns));
     nodes += static_cast<double>(r->nodes);
   }
   s.nodes = std::llround(nodes / static_cast<double>(reps.size()));
   s.calls = ns.size();
   if (ns.empty()) return s;
-  double sum = 0;
-  for (double v : ns) sum += v;
-  s.mean_ns = sum / static_cast<double>(ns.size());
-  s.median_ns = percentile(ns, 0.5);
-  s.p90_ns = percentile(ns, 0.9);
-  s.p99_ns = percentile(ns, 0.99);
+  s.mean_ns = mean(ns);
+  s.median_ns = median(ns);
+  s.p90_ns = percentile(ns, 90);
+  s.p99_ns = percentile(ns, 99);
   s.max_ns = *std::max_element(ns.begin(), ns.end());
-  s.node_median_ns = percentile(node_ns, 0.5);
-  s.link_median_ns = percentile(link_ns, 0.5);
+  s.node_median_ns = median(node_ns);
+  s.link_median_ns = median(link_ns);
   s.rep_median_lo = *std::min_element(rep_medians.begin(), rep_medians.end());
   s.rep_median_hi = *std::max_element(rep_medians.begin(), rep_medians.end());
   return s;
@@ -216,35 +202,25 @@ void print_summary() {
                "slope*dN ns", "median ns", "ratio", "verdict");
   for (const std::string& op : order) {
     const auto& zs = sizes[op];
-    std::vector<double> medians;
-    double sx = 0, sy = 0;
-    long long nmin = zs.front().nodes, nmax = nmin;
+    std::vector<double> nodes, medians;
     for (const SizeSummary& z : zs) {
+      nodes.push_back(static_cast<double>(z.nodes));
       medians.push_back(z.median_ns);
-      sx += static_cast<double>(z.nodes);
-      sy += z.median_ns;
-      nmin = std::min(nmin, z.nodes);
-      nmax = std::max(nmax, z.nodes);
     }
-    const double k = static_cast<double>(zs.size()), mx = sx / k, my = sy / k;
-    double sxx = 0, sxy = 0;
-    for (const SizeSummary& z : zs) {
-      const double dx = static_cast<double>(z.nodes) - mx;
-      sxx += dx * dx;
-      sxy += dx * (z.median_ns - my);
-    }
+    const double nmin = *std::min_element(nodes.begin(), nodes.end());
+    const double nmax = *std::max_element(nodes.begin(), nodes.end());
     const double cost = median(medians);
-    if (zs.size() < 2 || sxx <= 0) {
-      std::fprintf(stderr, "%-14s %5zu %8lld %8lld %12s %12s %10.0f %8s  %s\n", op.c_str(), zs.size(), nmin, nmax, "-",
+    const LinearFit fit = fit_linear(nodes, medians);
+    if (!fit.valid) {
+      std::fprintf(stderr, "%-14s %5zu %8.0f %8.0f %12s %12s %10.0f %8s  %s\n", op.c_str(), zs.size(), nmin, nmax, "-",
                    "-", cost, "-", "needs 2+ sizes");
       continue;
     }
-    const double slope = sxy / sxx;
-    const double spread = slope * static_cast<double>(nmax - nmin);
+    const double spread = fit.slope * (nmax - nmin);
     const double ratio = cost > 0 ? spread / cost : 0.0;
     const char* verdict = std::fabs(ratio) < 0.2 ? "flat" : (ratio > 0 ? "GROWS" : "falls");
-    std::fprintf(stderr, "%-14s %5zu %8lld %8lld %12.3e %12.1f %10.0f %7.1f%%  %s\n", op.c_str(), zs.size(), nmin,
-                 nmax, slope, spread, cost, 100.0 * ratio, verdict);
+    std::fprintf(stderr, "%-14s %5zu %8.0f %8.0f %12.3e %12.1f %10.0f %7.1f%%  %s\n", op.c_str(), zs.size(), nmin,
+                 nmax, fit.slope, spread, cost, 100.0 * ratio, verdict);
   }
   // The median target is stated at 65x65.
   for (const std::string& op : order)
