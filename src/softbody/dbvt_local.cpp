@@ -19,18 +19,18 @@ int index_in_parent(const btDbvtNode* node) { return node->parent->childs[1] == 
 }  // namespace
 
 DbvtNodeCache::~DbvtNodeCache() {
-  for (btDbvtNode* node : spare_) free_node(node);
+  for (void* storage : spare_) btAlignedFree(storage);
 }
 
 btDbvtNode* DbvtNodeCache::take(btDbvtNode* parent) {
-  btDbvtNode* node;
+  void* storage;
   if (spare_.empty()) {
-    node = new (btAlignedAlloc(sizeof(btDbvtNode), 16)) btDbvtNode();
+    storage = btAlignedAlloc(sizeof(btDbvtNode), 16);
   } else {
-    node = spare_.back();
+    storage = spare_.back();
     spare_.pop_back();
-    *node = btDbvtNode();
   }
+  auto* node = new (storage) btDbvtNode();
   node->parent = parent;
   node->childs[0] = nullptr;
   node->childs[1] = nullptr;
@@ -38,10 +38,12 @@ btDbvtNode* DbvtNodeCache::take(btDbvtNode* parent) {
 }
 
 void DbvtNodeCache::give(btDbvtNode* node) {
-  if (spare_.size() < kMaxSpare)
-    spare_.push_back(node);
-  else
+  if (spare_.size() < kMaxSpare) {
+    node->~btDbvtNode();  // a spare is storage only; take() constructs a node in it again
+    spare_.push_back(static_cast<void*>(node));
+  } else {
     free_node(node);
+  }
 }
 
 btDbvtNode* insert_leaf_beside(btDbvt& tree, DbvtNodeCache& nodes, btDbvtNode* beside, const btDbvtVolume& volume,

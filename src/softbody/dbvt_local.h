@@ -39,7 +39,7 @@ class DbvtNodeCache {
   std::size_t spare() const { return spare_.size(); }
 
  private:
-  std::vector<btDbvtNode*> spare_;
+  std::vector<void*> spare_;  // storage from btAlignedAlloc, no node living in it
 };
 
 /// Inserts a new leaf (volume, data) as the sibling of the existing leaf `beside`, then enlarges ancestors' boxes
