@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -104,28 +105,29 @@ void run_op(benchmark::State& state, Timed timed, const char* name) {
   KindSink sink(timed_sample);
   body.set_op_sink(&sink);
 
+  // One round trip on a random block; the timed part's seconds, or nullopt when no block qualifies.
+  const auto random_round_trip = [&]() -> std::optional<double> {
+    const TreeId id = coarse_first ? fixture.coarse_candidate() : fixture.refine_candidate();
+    if (id == kNoTreeNode) return std::nullopt;
+    return coarse_first ? coarse_round_trip(body, id, timed, restore_failures)
+                        : refine_round_trip(body, id, timed, restore_failures);
+  };
+
   // Untimed round trips first, so every repetition starts from the steady state a stream of operations keeps the
   // caches in. Without them, the repetitions interleaved with other sizes (main()) would time a small body's first
   // few thousand calls against lines the previous benchmark evicted, and a size would be measured by what ran before
   // it. 1 000 random round trips touch a 65^2 body's per-node data several times over.
-  for (int i = 0; i < kWarmupRoundTrips; ++i) {
-    const TreeId id = coarse_first ? fixture.coarse_candidate() : fixture.refine_candidate();
-    if (id == kNoTreeNode) break;
-    if (coarse_first)
-      coarse_round_trip(body, id, timed, restore_failures);
-    else
-      refine_round_trip(body, id, timed, restore_failures);
-  }
+  for (int i = 0; i < kWarmupRoundTrips; ++i)
+    if (!random_round_trip()) break;
 
   TCSB_CALLGRIND_ZERO_STATS();
   for (auto _ : state) {
-    const TreeId id = coarse_first ? fixture.coarse_candidate() : fixture.refine_candidate();
-    if (id == kNoTreeNode) {
+    const std::optional<double> measured = random_round_trip();
+    if (!measured) {
       state.SkipWithError("no block found for the operation");
       break;
     }
-    const double seconds = coarse_first ? coarse_round_trip(body, id, timed, restore_failures)
-                                        : refine_round_trip(body, id, timed, restore_failures);
+    const double seconds = *measured;
     state.SetIterationTime(seconds);
     samples.push_back(seconds * 1e9);
     // The round trip emits two begin and two end samples; keep the one of the timed kind.
