@@ -250,7 +250,7 @@ int main(int argc, char** argv) {
   std::vector<char*> args = tcsb::bench::with_defaults(argc, argv);
   int count = static_cast<int>(args.size()) - 1;
   benchmark::Initialize(&count, args.data());
-  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 1;
+  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 2;  // bad input: the project's exit code
   benchmark::RunSpecifiedBenchmarks();
   tcsb::bench::print_summary();
   benchmark::Shutdown();
