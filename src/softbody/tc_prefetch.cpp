@@ -39,6 +39,7 @@ inline void prefetch_node(const btSoftBody::Node& n) {
 }  // namespace
 
 void TcSoftBody::prefetch_footprint(TreeId id) const {
+  if constexpr (!TCSB_OP_PREFETCH) return;
   const LodNode& node = tree().node(id);  // waits for one line: the block's children come from it
   TreeId block[5] = {id, kNoTreeNode, kNoTreeNode, kNoTreeNode, kNoTreeNode};
   int count = 1;

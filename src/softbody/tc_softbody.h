@@ -180,7 +180,7 @@ class TcSoftBody : public btSoftBody {
   void end_refine(const Op& op);
   void end_coarse(const Op& op);
   /// Starts loading the cache lines an operation on the block of `id` will touch (tc_prefetch.cpp). No effect on
-  /// results; O(degree).
+  /// results; O(degree). Does nothing in a build with the CMake option TCSB_OP_PREFETCH off.
   void prefetch_footprint(TreeId id) const;
   void emit(OpKind kind, std::int64_t node_ns, std::int64_t link_ns);
   btVector3 place_child(TreeId parent, TreeId child, const btVector3& parent_x,
