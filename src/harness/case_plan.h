@@ -1,5 +1,5 @@
 // Case expansion and run order: a suite becomes cases (net x method x compression target), and the cases become a
-// run order that interleaves methods so their time ratios are measured under the same machine conditions.
+// run order that interleaves methods and nets so ratios and fits are measured under the same machine conditions.
 #pragma once
 
 #include <cstddef>
@@ -29,8 +29,9 @@ struct PlannedRun {
   int repetition = 0;          ///< 0-based
 };
 
-/// Run order that interleaves methods: for each net, for each repetition, every case of that net once
-/// (A,B,C,A,B,C,...), so ratios are measured under the same machine conditions.
+/// Run order, repetition-major: each repetition runs every case once, net by net with a net's cases together in
+/// suite order (plain, TC-SB, ... paired close in time for ratios), and the net that starts a repetition rotates.
+/// Every net is thus measured throughout the run, so cross-net fits see the same machine conditions for all nets.
 std::vector<PlannedRun> interleaved_plan(const Suite& suite, const std::vector<CaseKey>& cases);
 
 /// The seed of a case, the same for each of its repetitions: suite.seed x 1000003 + the case's index.

@@ -67,37 +67,42 @@ void expect_valid_plan(const Suite& s) {
   const std::vector<PlannedRun> plan = interleaved_plan(s, cases);
   ASSERT_EQ(plan.size(), cases.size() * static_cast<std::size_t>(s.repetitions));
   std::set<std::pair<std::size_t, int>> seen;
-  for (const PlannedRun& run : plan) {
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    const PlannedRun& run = plan[i];
     ASSERT_LT(run.case_index, cases.size());
-    ASSERT_GE(run.repetition, 0);
-    ASSERT_LT(run.repetition, s.repetitions);
+    // Repetition-major: every case once in repetition 0, then every case once in repetition 1, ...
+    EXPECT_EQ(run.repetition, static_cast<int>(i / cases.size())) << "at run " << i;
     EXPECT_TRUE(seen.insert({run.case_index, run.repetition}).second) << "run planned twice";
+    // A net's cases stay together within a repetition, in suite order, so its ratios pair runs close in time.
+    if (i % cases.size() != 0 && cases[plan[i - 1].case_index].net == cases[run.case_index].net) {
+      EXPECT_EQ(run.case_index, plan[i - 1].case_index + 1) << "at run " << i;
+    }
+    // Never the same case twice in a row, when the suite has more than one case.
+    if (i > 0 && cases.size() >= 2) EXPECT_NE(run.case_index, plan[i - 1].case_index) << "at run " << i;
   }
   EXPECT_EQ(seen.size(), plan.size());
-  const std::size_t per_net = cases.size() / s.nets.size();
-  for (std::size_t i = 1; i < plan.size(); ++i) {
-    // Nets are never interleaved with each other (one net's data is built once) ...
-    EXPECT_GE(cases[plan[i].case_index].net, cases[plan[i - 1].case_index].net);
-    // ... but the cases of a net are: never the same case twice in a row.
-    if (per_net >= 2) {
-      EXPECT_NE(plan[i].case_index, plan[i - 1].case_index) << "at run " << i;
-    }
-  }
 }
 
-TEST(CasePlan, InterleavesEveryCaseOncePerRepetition) {
+std::size_t first_net_of_repetition(const Suite& s, int rep) {
+  const std::vector<CaseKey> cases = expand_cases(s);
+  return cases[interleaved_plan(s, cases)[static_cast<std::size_t>(rep) * cases.size()].case_index].net;
+}
+
+TEST(CasePlan, EveryNetInEveryRepetitionWithTheFirstNetRotating) {
   const Suite s = make_suite({Method::kPlain, Method::kBulletPatch, Method::kTcsb}, {1.0, 0.75, 0.3}, 4, 9);
   expect_valid_plan(s);
   const std::vector<CaseKey> cases = expand_cases(s);
   const std::vector<PlannedRun> plan = interleaved_plan(s, cases);
-  // A,B,C,D,E,A,B,C,D,E,... for the first net.
-  for (int rep = 0; rep < 9; ++rep) {
-    for (std::size_t c = 0; c < 5; ++c) {
-      const PlannedRun& run = plan[static_cast<std::size_t>(rep) * 5 + c];
-      EXPECT_EQ(run.case_index, c);
-      EXPECT_EQ(run.repetition, rep);
-    }
+  // Repetition 1 starts with the second net: its five cases A..E in order, then the third net's, and so on.
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const PlannedRun& run = plan[cases.size() + k];
+    EXPECT_EQ(run.repetition, 1);
+    EXPECT_EQ(run.case_index, (5 + k) % cases.size());
   }
+  // Over 8 repetitions each of the 4 nets starts twice.
+  std::vector<int> starts(4, 0);
+  for (int rep = 0; rep < 8; ++rep) ++starts[first_net_of_repetition(s, rep)];
+  EXPECT_EQ(starts, std::vector<int>(4, 2));
 }
 
 TEST(CasePlan, TwoMethodsAlternate) {
@@ -112,6 +117,14 @@ TEST(CasePlan, TwoMethodsAlternate) {
 
 TEST(CasePlan, SingleCasePerNetIsStillComplete) {
   expect_valid_plan(make_suite({Method::kPlain}, {}, 3, 4));
+  expect_valid_plan(make_suite({Method::kPlain}, {}, 1, 3));
+}
+
+TEST(CasePlan, TwoNetsOfOneCaseKeepAlternating) {
+  // Rotating would run the second net twice in a row at each repetition's start, so the order stays n17, n25.
+  const Suite s = make_suite({Method::kPlain}, {}, 2, 4);
+  expect_valid_plan(s);
+  for (int rep = 0; rep < 4; ++rep) EXPECT_EQ(first_net_of_repetition(s, rep), 0u);
 }
 
 }  // namespace
