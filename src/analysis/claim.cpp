@@ -7,6 +7,19 @@
 
 namespace tcsb {
 
+namespace {
+
+bool passes(Comparison c, double expected, double tolerance, double m) {
+  switch (c) {
+    case Comparison::kAtMost: return m <= expected + tolerance;
+    case Comparison::kAtLeast: return m >= expected - tolerance;
+    case Comparison::kWithin: return std::fabs(m - expected) <= tolerance;
+  }
+  return false;
+}
+
+}  // namespace
+
 Claim check_claim(std::string id, std::string description, Comparison c, double expected, double tolerance,
                   std::optional<double> measured) {
   // Claims are written by us, not measured: a bad one is a programming error, so say so loudly.
@@ -22,13 +35,19 @@ Claim check_claim(std::string id, std::string description, Comparison c, double 
   if (measured && std::isfinite(*measured)) claim.measured = measured;
   if (!claim.measured) return claim;  // not measured: fails
 
-  const double m = *claim.measured;
-  switch (c) {
-    case Comparison::kAtMost: claim.pass = m <= expected + tolerance; break;
-    case Comparison::kAtLeast: claim.pass = m >= expected - tolerance; break;
-    case Comparison::kWithin: claim.pass = std::fabs(m - expected) <= tolerance; break;
-  }
+  claim.pass = passes(c, expected, tolerance, *claim.measured);
   return claim;
+}
+
+std::optional<bool> decided(const Claim& claim) {
+  if (!claim.interval || !claim.measured) return std::nullopt;
+  const auto verdict = [&](double m) { return passes(claim.comparison, claim.expected, claim.tolerance, m); };
+  const Interval& ci = *claim.interval;
+  if (verdict(ci.low) != claim.pass || verdict(ci.high) != claim.pass) return false;
+  // A failing "within" claim: both ends outside the band, but they must be on the same side of it.
+  if (claim.comparison == Comparison::kWithin && !claim.pass)
+    return (ci.low > claim.expected) == (ci.high > claim.expected);
+  return true;
 }
 
 bool all_pass(std::span<const Claim> claims) {

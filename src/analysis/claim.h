@@ -6,6 +6,8 @@
 #include <span>
 #include <string>
 
+#include "analysis/bootstrap.h"
+
 namespace tcsb {
 
 /// How a measurement is compared with a claim's expected value.
@@ -25,12 +27,18 @@ struct Claim {
   double tolerance = 0.0;                  ///< allowed slack, >= 0
   std::optional<double> measured;          ///< nullopt when not measured (or diverged, or non-finite); then fails
   bool pass = false;                       ///< the verdict
+  /// Where `measured` could lie had the run been repeated (a bootstrap interval over repetitions), when computed.
+  std::optional<Interval> interval;
 };
 
 /// Builds and judges a claim. A non-finite `measured` is stored as nullopt (and fails), so no NaN reaches a report.
 /// Throws std::invalid_argument if `expected` or `tolerance` is non-finite or `tolerance` is negative.
 Claim check_claim(std::string id, std::string description, Comparison c, double expected, double tolerance,
                   std::optional<double> measured);
+
+/// Whether the claim's interval gives the same verdict throughout, i.e. the verdict is not within the run's noise;
+/// nullopt when the claim has no interval (or no measurement).
+std::optional<bool> decided(const Claim& claim);
 
 /// True iff every claim passes; true for an empty list (nothing was claimed, so nothing failed).
 bool all_pass(std::span<const Claim> claims);

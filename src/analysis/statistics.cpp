@@ -15,17 +15,20 @@ void require_finite(std::span<const double> values, const char* who) {
     throw std::invalid_argument(std::string(who) + ": non-finite value (filter diverged data first)");
 }
 
-// Percentile of an already sorted, non-empty sample. Mirrors numpy.percentile(method='linear') exactly, including
-// its two-sided lerp, so values checked against numpy agree to the last bit rather than to a tolerance.
+// numpy's two-sided lerp between neighbouring order statistics a <= b at fraction t, so values checked against
+// numpy agree to the last bit rather than to a tolerance.
+double numpy_lerp(double a, double b, double t) {
+  const double diff = b - a;
+  return t >= 0.5 ? b - diff * (1.0 - t) : a + diff * t;
+}
+
+// Percentile of an already sorted, non-empty sample. Mirrors numpy.percentile(method='linear') exactly.
 double sorted_percentile(const std::vector<double>& sorted, double p) {
   const double index = static_cast<double>(sorted.size() - 1) * (p / 100.0);
   const double lo_index = std::floor(index);
   const auto lo = static_cast<std::size_t>(lo_index);
   if (lo + 1 >= sorted.size()) return sorted.back();
-  const double t = index - lo_index;
-  const double a = sorted[lo], b = sorted[lo + 1];
-  const double diff = b - a;
-  return t >= 0.5 ? b - diff * (1.0 - t) : a + diff * t;
+  return numpy_lerp(sorted[lo], sorted[lo + 1], index - lo_index);
 }
 
 void require_percent(double p) {
@@ -49,7 +52,16 @@ double percentile(std::span<const double> values, double p) {
   require_percent(p);
   require_finite(values, "percentile");
   if (values.empty()) return 0.0;
-  return sorted_percentile(sorted_copy(values), p);
+  // Selection instead of a full sort (O(n): the bootstrap takes medians of ~10^5 operation samples hundreds of
+  // times); the same two order statistics and the same lerp as sorted_percentile, so the same bits.
+  std::vector<double> v(values.begin(), values.end());
+  const double index = static_cast<double>(v.size() - 1) * (p / 100.0);
+  const double lo_index = std::floor(index);
+  const auto lo = static_cast<std::size_t>(lo_index);
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(lo), v.end());
+  if (lo + 1 >= v.size()) return v[lo];
+  const double b = *std::min_element(v.begin() + static_cast<std::ptrdiff_t>(lo) + 1, v.end());
+  return numpy_lerp(v[lo], b, index - lo_index);
 }
 
 double median(std::span<const double> values) { return percentile(values, 50.0); }

@@ -5,6 +5,7 @@
 
 #include "analysis/statistics.h"
 #include "harness/case_body.h"
+#include "harness/case_summary.h"
 #include "harness/fidelity_runner.h"
 #include "harness/state_hash.h"
 #include "harness/step_clock.h"
@@ -28,14 +29,6 @@ class OpRecorder final : public OpSink {
  private:
   std::vector<OpSample>& out_;
 };
-
-template <class T>
-double mean_of(const std::vector<T>& values) {
-  if (values.empty()) return 0;
-  double sum = 0;
-  for (const T& v : values) sum += static_cast<double>(v);
-  return sum / static_cast<double>(values.size());
-}
 
 RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repetition,
                                 const std::shared_ptr<const Net>& net, std::uint64_t seed,
@@ -92,28 +85,6 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
   rep.mean_feedback_ms = mean_of(series.feedback_ms);
   rep.mean_feedback_total_ms = mean_of(series.feedback_total_ms);
   return rep;
-}
-
-void summarize_case(CaseResult& c) {
-  std::vector<double> means, nodes, links, interps, feedback, feedback_total;
-  for (const RepetitionResult& r : c.repetitions) {
-    if (r.status != "ok") {
-      c.status = "diverged";
-      continue;
-    }
-    means.push_back(r.mean_step_ms);
-    nodes.push_back(r.mean_nodes);
-    links.push_back(r.mean_links);
-    interps.push_back(r.mean_interpolations);
-    feedback.push_back(r.mean_feedback_ms);
-    feedback_total.push_back(r.mean_feedback_total_ms);
-  }
-  c.step_ms = summarize(means);
-  c.mean_nodes = mean_of(nodes);
-  c.mean_links = mean_of(links);
-  c.mean_interpolations = mean_of(interps);
-  c.mean_feedback_ms = mean_of(feedback);
-  c.mean_feedback_total_ms = mean_of(feedback_total);
 }
 
 }  // namespace

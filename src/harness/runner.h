@@ -15,9 +15,9 @@ struct RunOptions {
   std::function<void(int done, int total, const std::string& label)> progress;
 };
 
-/// Runs every case of the suite: for each net, repetitions interleave the net's cases (A, B, A, B, ...); each
-/// repetition builds a fresh body, steps warm-up steps untimed, then times every step with a monotonic clock.
-/// A repetition that diverges stops at once and is reported with its step, never averaged in.
+/// Runs every case of the suite in interleaved_plan() order (every repetition runs every case once, a net's cases
+/// side by side); each repetition builds a fresh body, steps warm-up steps untimed, then times every step with a
+/// monotonic clock. A repetition that diverges stops at once and is reported with its step, never averaged in.
 RunResult run_suite(const Suite& suite, const Context& context, const RunOptions& options = {});
 
 }  // namespace tcsb

@@ -1,9 +1,12 @@
 #include "report/reproduction_report.h"
 
 #include <cmath>
+#include <limits>
 #include <ostream>
 
+#include "harness/claim_intervals.h"
 #include "harness/fidelity_tables.h"
+#include "harness/step_clock.h"
 #include "harness/paper_claims.h"
 #include "harness/paper_tables.h"
 #include "report/claims_console.h"
@@ -40,7 +43,11 @@ nlohmann::ordered_json claim_json(const Claim& c) {
           {"expected", json_number(c.expected)},
           {"tolerance", json_number(c.tolerance)},
           {"measured", json_number(c.measured)},
-          {"pass", c.pass}};
+          {"interval", c.interval ? nlohmann::ordered_json{{"low", json_number(c.interval->low)},
+                                                            {"high", json_number(c.interval->high)}}
+                                  : nlohmann::ordered_json(nullptr)},
+          {"pass", c.pass},
+          {"decided", decided(c) ? nlohmann::ordered_json(*decided(c)) : nlohmann::ordered_json(nullptr)}};
 }
 
 /// The fidelity row of TC-SB at a Table 2 row's target, when the run has a fidelity pass.
@@ -62,7 +69,25 @@ Reproduction check_reproduction(const RunResult& result, PaperReference paper) {
   r.paper = std::move(paper);
   const std::vector<Table2Row> t2 = table2(result);
   r.claims = paper_claims(r.paper, t2, step_ms_vs_nodes(result), op_ms_vs_nodes(result));
-  r.targets = project_targets(t2, result.wall_s);
+  // How far each measured value could move had the run been repeated: the same claims recomputed on bootstrap
+  // resamples of the repetitions. Seeded with the suite's seed, so the same measurements give the same intervals.
+  const StepClock::time_point bootstrap0 = StepClock::now();
+  const ClaimReplicates replicates = bootstrap_claims(
+      result,
+      [&](const RunResult& resample) {
+        const std::vector<Table2Row> rt2 = table2(resample);
+        std::vector<Claim> all = paper_claims(r.paper, rt2, step_ms_vs_nodes(resample), op_ms_vs_nodes(resample));
+        // The wall-time target is not resampled: NaN leaves it without an interval.
+        const std::vector<Claim> targets = project_targets(rt2, std::numeric_limits<double>::quiet_NaN());
+        all.insert(all.end(), targets.begin(), targets.end());
+        return all;
+      },
+      kClaimResamples, result.suite.seed);
+  r.bootstrap_s = ms_between(bootstrap0, StepClock::now()) / 1000.0;
+  r.wall_s = result.wall_s + r.bootstrap_s;
+  r.targets = project_targets(t2, r.wall_s);
+  attach_intervals(r.claims, replicates, kClaimConfidence);
+  attach_intervals(r.targets, replicates, kClaimConfidence);
   if (result.fidelity) {  // reported beside the speed targets; like them, they do not gate the exit code
     const std::vector<Claim> fidelity = fidelity_targets(fidelity_rows(*result.fidelity));
     r.targets.insert(r.targets.end(), fidelity.begin(), fidelity.end());
@@ -119,7 +144,8 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
           {"claims", claims},
           {"targets", targets},
           {"pass", reproduction.pass()},
-          {"wall_s", json_number(result.wall_s)}};
+          {"bootstrap_s", json_number(reproduction.bootstrap_s)},
+          {"wall_s", json_number(reproduction.wall_s)}};
 }
 
 void print_reproduction(const RunResult& result, const Reproduction& reproduction, std::ostream& out) {
@@ -171,7 +197,11 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
   t1.print(out);
   print_claims("Claims of the paper (any FAIL: exit 1):", reproduction.claims, out);
   print_claims("Targets of this project (reported, not gating):", reproduction.targets, out);
-  out << "Reproduction " << (reproduction.pass() ? "PASSED" : "FAILED") << " in " << fixed(result.wall_s, 1)
+  out << "95% interval: where the measured value could lie had the run been repeated (percentile bootstrap, "
+      << kClaimResamples << " resamples of the repetitions, a net's cases drawn together so ratios stay paired; "
+      << fixed(reproduction.bootstrap_s, 1) << " s). Beyond noise \"no\": the verdict flips inside the interval, so "
+      << "this run cannot decide it.\n";
+  out << "Reproduction " << (reproduction.pass() ? "PASSED" : "FAILED") << " in " << fixed(reproduction.wall_s, 1)
       << " s\n";
 }
 

@@ -18,10 +18,12 @@ struct Reproduction {
   PaperReference paper;
   std::vector<Claim> claims;   ///< the paper's claims (gate the exit code)
   std::vector<Claim> targets;  ///< this project's stricter targets (reported only)
+  double bootstrap_s = 0;      ///< computing the claims' intervals
+  double wall_s = 0;           ///< the whole reproduction: the run (fidelity pass included) and the intervals
   bool pass() const { return all_pass(claims); }
 };
 
-/// Computes the claims and targets of a finished run.
+/// Computes the claims and targets of a finished run, with bootstrap intervals for those the repetitions measure.
 Reproduction check_reproduction(const RunResult& result, PaperReference paper);
 
 /// The `reproduction` section: side-by-side tables (paper, ours), claims, targets, pass, wall time.

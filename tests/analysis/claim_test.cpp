@@ -88,6 +88,33 @@ TEST(Claim, AllPass) {
   EXPECT_FALSE(all_pass(std::vector<Claim>{good, unmeasured}));
 }
 
+Claim with_interval(Comparison c, double expected, double tolerance, double measured, double low, double high) {
+  Claim claim = check_claim("id", "desc", c, expected, tolerance, measured);
+  claim.interval = Interval{low, high};
+  return claim;
+}
+
+TEST(Claim, DecidedWhenTheWholeIntervalGivesTheVerdict) {
+  // at_most 0.2: 0.15 passes; decided only if the interval stays at or below 0.2.
+  EXPECT_EQ(decided(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.15, 0.10, 0.19)), true);
+  EXPECT_EQ(decided(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.15, 0.10, 0.25)), false);
+  EXPECT_EQ(decided(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.30, 0.21, 0.40)), true);   // a decided FAIL
+  EXPECT_EQ(decided(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.30, 0.19, 0.40)), false);
+  EXPECT_EQ(decided(with_interval(Comparison::kAtLeast, 0.98, 0.0, 0.99, 0.985, 0.995)), true);
+  EXPECT_EQ(decided(with_interval(Comparison::kAtLeast, 0.98, 0.0, 0.95, 0.93, 0.99)), false);
+  // within 2 +- 0.5: an interval across the whole band fails at both ends but is not a decided FAIL.
+  EXPECT_EQ(decided(with_interval(Comparison::kWithin, 2.0, 0.5, 2.2, 1.9, 2.4)), true);
+  EXPECT_EQ(decided(with_interval(Comparison::kWithin, 2.0, 0.5, 3.0, 2.6, 3.5)), true);
+  EXPECT_EQ(decided(with_interval(Comparison::kWithin, 2.0, 0.5, 3.0, 1.0, 3.5)), false);
+}
+
+TEST(Claim, NotDecidableWithoutIntervalOrMeasurement) {
+  EXPECT_EQ(decided(check_claim("id", "desc", Comparison::kAtMost, 1.0, 0.0, 0.5)), std::nullopt);
+  Claim unmeasured = check_claim("id", "desc", Comparison::kAtMost, 1.0, 0.0, std::nullopt);
+  unmeasured.interval = Interval{0.1, 0.2};
+  EXPECT_EQ(decided(unmeasured), std::nullopt);
+}
+
 TEST(Claim, ComparisonNames) {
   EXPECT_STREQ(comparison_name(Comparison::kAtMost), "at_most");
   EXPECT_STREQ(comparison_name(Comparison::kAtLeast), "at_least");

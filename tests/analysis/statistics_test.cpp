@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -97,6 +98,23 @@ TEST(Summarize, PercentilesMatchFreeFunctions) {
   EXPECT_DOUBLE_EQ(s.median, 5.5);
   EXPECT_DOUBLE_EQ(s.p95, percentile(kOneToTen, 95.0));
   EXPECT_DOUBLE_EQ(s.p99, percentile(kOneToTen, 99.0));
+}
+
+TEST(Summarize, SelectionPercentileEqualsTheSortedOneBitForBit) {
+  // percentile() selects two order statistics; summarize() sorts. Same bits on awkward data: ties, negatives,
+  // many sizes (odd and even), values of very different magnitude.
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (std::size_t n = 1; n < 60; ++n) {
+    std::vector<double> v;
+    for (std::size_t i = 0; i < n; ++i) v.push_back(i % 7 == 3 ? 0.25 : uniform(rng) * (i % 2 ? 1e6 : 1e-3));
+    const Summary s = summarize(v);
+    EXPECT_EQ(percentile(v, 50.0), s.median) << n;
+    EXPECT_EQ(percentile(v, 95.0), s.p95) << n;
+    EXPECT_EQ(percentile(v, 99.0), s.p99) << n;
+    EXPECT_EQ(percentile(v, 0.0), s.min) << n;
+    EXPECT_EQ(percentile(v, 100.0), s.max) << n;
+  }
 }
 
 TEST(Summarize, SingleValue) {
