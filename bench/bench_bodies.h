@@ -6,6 +6,7 @@
 #include <chrono>
 #include <map>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -26,6 +27,8 @@ inline constexpr int kStepWidths[] = {33, 65, 129};
 /// cost). TCSB_BENCH_OP_ITERS in the environment overrides it, e.g. for quick runs while developing.
 inline constexpr int kOpIterations = 2000;
 int op_iterations();
+/// Why TCSB_BENCH_OP_ITERS is unusable (set, but not a positive whole number), or nullopt; main() exits 2 on it.
+std::optional<std::string> op_iterations_error();
 /// Repetitions main() asks for unless the command line says otherwise, randomly interleaved across sizes and
 /// benchmarks: flatness compares sizes, and on a shared VM whose speed drifts by tens of percent within minutes, sizes
 /// measured one after the other would compare moments, not sizes. 5 x 2 000 = 10 000 measured calls per size.

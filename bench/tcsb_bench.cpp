@@ -5,12 +5,14 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "analysis/linear_fit.h"
@@ -117,11 +119,21 @@ std::vector<OpRun>& op_runs() {
   return runs;
 }
 
+std::optional<std::string> op_iterations_error() {
+  const char* env = std::getenv("TCSB_BENCH_OP_ITERS");
+  if (env == nullptr) return std::nullopt;
+  const std::string_view text(env);
+  int n = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (ec != std::errc() || end != text.data() + text.size() || n <= 0)
+    return "TCSB_BENCH_OP_ITERS: expected a positive whole number of calls, got \"" + std::string(text) + "\"";
+  return std::nullopt;
+}
+
 int op_iterations() {
-  if (const char* env = std::getenv("TCSB_BENCH_OP_ITERS")) {
-    const int n = std::atoi(env);
-    if (n > 0) return n;
-  }
+  // Read at benchmark registration (static initialisation); a bad value is reported by main() before anything runs.
+  if (op_iterations_error()) return kOpIterations;
+  if (const char* env = std::getenv("TCSB_BENCH_OP_ITERS")) return std::atoi(env);
   return kOpIterations;
 }
 
@@ -251,6 +263,10 @@ int main(int argc, char** argv) {
   int count = static_cast<int>(args.size()) - 1;
   benchmark::Initialize(&count, args.data());
   if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 2;  // bad input: the project's exit code
+  if (const std::optional<std::string> error = tcsb::bench::op_iterations_error()) {
+    std::fprintf(stderr, "tcsb_bench: %s\n", error->c_str());
+    return 2;
+  }
   benchmark::RunSpecifiedBenchmarks();
   tcsb::bench::print_summary();
   benchmark::Shutdown();
