@@ -11,6 +11,19 @@
 
 namespace tcsb {
 
+namespace {
+
+/// Writes every element of an array's reserved room once (constructs copies of `fill`, then drops them), so the
+/// operations that later append there never take a page fault on untouched memory in the middle of a step.
+template <class Array, class T>
+void touch_reserved(Array& array, const T& fill) {
+  const auto size = array.size();
+  array.resize(array.capacity(), fill);
+  array.resize(size, fill);  // (not the one-argument form: Bullet's default-constructs an uninitialised Node)
+}
+
+}  // namespace
+
 TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, const SolverSettings& solver,
                        const TcSettings& settings)
     : btSoftBody(&world.info, 0, nullptr, nullptr),
@@ -43,6 +56,7 @@ TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, con
     const Eigen::Vector3d& r = lod.nodes()[id].rest;
     rest_[id] = to_bullet(r);
   }
+  tree_of_.reserve(tree_size);  // one entry per simulated node: at most every tree node at once
   tree_of_.resize(leaves);
   for (std::size_t leaf = 0; leaf < leaves; ++leaf) {
     state_[leaf] = CutState::kActive;
@@ -59,6 +73,17 @@ TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, con
     incidence_[static_cast<std::size_t>(l.b)].add(index);
   }
   committed_count_ = static_cast<int>(leaves);
+
+  // Reserved is not yet mapped: the kernel maps a page on its first write. Write the room once now rather than
+  // inside operations (a minor fault costs microseconds, more than an operation).
+  Node zero_node;
+  std::memset(static_cast<void*>(&zero_node), 0, sizeof(zero_node));
+  touch_reserved(m_nodes, zero_node);
+  Link zero_link;
+  std::memset(static_cast<void*>(&zero_link), 0, sizeof(zero_link));
+  touch_reserved(m_links, zero_link);
+  touch_reserved(tree_of_, kNoTreeNode);
+  touch_reserved(link_meta_, CutLink{});
 }
 
 void TcSoftBody::simulate_step(btScalar dt) {

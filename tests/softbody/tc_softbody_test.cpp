@@ -187,6 +187,12 @@ TEST(TcSoftBodyProperty, HundredThousandRandomOperationsKeepEveryInvariant) {
   TcSoftBody tc(world, net, testing::test_solver(), settings);
   RandomPolicy policy(20261122);
   std::mt19937 rng(5);
+  // Every array was reserved for the whole tree at construction: no operation may reallocate one (that would be
+  // O(N) work, and would leave Bullet's raw Node* dangling).
+  const void* const nodes = &tc.m_nodes[0];
+  const void* const links = &tc.m_links[0];
+  const void* const tree_ids = tc.tree_ids().data();
+  const void* const cut_links = tc.cut_links().data();
   long operations = 0;
   int step = 0;
   int batches = 0;
@@ -207,6 +213,10 @@ TEST(TcSoftBodyProperty, HundredThousandRandomOperationsKeepEveryInvariant) {
   }
   EXPECT_GE(operations, 100000);
   EXPECT_EQ(tc.link_reallocations(), 0);
+  EXPECT_EQ(&tc.m_nodes[0], nodes);
+  EXPECT_EQ(&tc.m_links[0], links);
+  EXPECT_EQ(tc.tree_ids().data(), tree_ids);
+  EXPECT_EQ(tc.cut_links().data(), cut_links);
   RecordProperty("steps", step);
   RecordProperty("batches", batches);
 }
