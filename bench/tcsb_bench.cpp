@@ -119,23 +119,29 @@ std::vector<OpRun>& op_runs() {
   return runs;
 }
 
-std::optional<std::string> op_iterations_error() {
+namespace {
+
+/// TCSB_BENCH_OP_ITERS read: kOpIterations when unset, its value when a positive whole number, else nullopt.
+std::optional<int> op_iterations_setting() {
   const char* env = std::getenv("TCSB_BENCH_OP_ITERS");
-  if (env == nullptr) return std::nullopt;
+  if (env == nullptr) return kOpIterations;
   const std::string_view text(env);
   int n = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
-  if (ec != std::errc() || end != text.data() + text.size() || n <= 0)
-    return "TCSB_BENCH_OP_ITERS: expected a positive whole number of calls, got \"" + std::string(text) + "\"";
-  return std::nullopt;
+  if (ec != std::errc() || end != text.data() + text.size() || n <= 0) return std::nullopt;
+  return n;
 }
 
-int op_iterations() {
-  // Read at benchmark registration (static initialisation); a bad value is reported by main() before anything runs.
-  if (op_iterations_error()) return kOpIterations;
-  if (const char* env = std::getenv("TCSB_BENCH_OP_ITERS")) return std::atoi(env);
-  return kOpIterations;
+}  // namespace
+
+std::optional<std::string> op_iterations_error() {
+  if (op_iterations_setting()) return std::nullopt;
+  return "TCSB_BENCH_OP_ITERS: expected a positive whole number of calls, got \"" +
+         std::string(std::getenv("TCSB_BENCH_OP_ITERS")) + "\"";
 }
+
+// Read at benchmark registration (static initialisation); a bad value is reported by main() before anything runs.
+int op_iterations() { return op_iterations_setting().value_or(kOpIterations); }
 
 namespace {
 

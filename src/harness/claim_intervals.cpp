@@ -26,7 +26,8 @@ RunResult without_series(const RunResult& result) {
 /// Where each repetition's operation samples start in the case's pooled samples (one past the end last).
 std::vector<std::size_t> sample_offsets(const CaseResult& c) {
   std::vector<std::size_t> offsets{0};
-  for (const RepetitionResult& r : c.repetitions) offsets.push_back(offsets.back() + static_cast<std::size_t>(r.operations));
+  for (const RepetitionResult& r : c.repetitions)
+    offsets.push_back(offsets.back() + static_cast<std::size_t>(r.operations));
   if (offsets.back() != c.ops.samples.size())
     throw std::logic_error("resample_repetitions: " + c.label + ": operation samples do not match repetitions");
   return offsets;
@@ -60,8 +61,9 @@ RunResult resample_repetitions(const RunResult& result, std::mt19937_64& rng) {
       RepetitionResult& rep = r.repetitions.emplace_back(c.repetitions[picks[i]]);
       rep.series = StepSeries{};
       rep.repetition = static_cast<int>(i);
-      r.ops.samples.insert(r.ops.samples.end(), c.ops.samples.begin() + static_cast<std::ptrdiff_t>(offsets[picks[i]]),
-                           c.ops.samples.begin() + static_cast<std::ptrdiff_t>(offsets[picks[i] + 1]));
+      const auto first = c.ops.samples.begin() + static_cast<std::ptrdiff_t>(offsets[picks[i]]);
+      const auto last = c.ops.samples.begin() + static_cast<std::ptrdiff_t>(offsets[picks[i] + 1]);
+      r.ops.samples.insert(r.ops.samples.end(), first, last);
     }
     summarize_case(r);
   }

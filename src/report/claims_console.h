@@ -9,7 +9,8 @@
 
 namespace tcsb {
 
-/// Prints `title` on its own line, then one row per claim.
+/// Prints `title` on its own line, then one row per claim. When any claim has an interval, two more columns: the
+/// 95 % interval and whether the verdict is beyond noise ("yes", "no", "-" without an interval).
 void print_claims(const char* title, const std::vector<Claim>& claims, std::ostream& out);
 
 }  // namespace tcsb

@@ -6,9 +6,9 @@
 
 #include "harness/claim_intervals.h"
 #include "harness/fidelity_tables.h"
-#include "harness/step_clock.h"
 #include "harness/paper_claims.h"
 #include "harness/paper_tables.h"
+#include "harness/step_clock.h"
 #include "report/claims_console.h"
 #include "report/json_report.h"
 #include "report/text_table.h"
