@@ -73,9 +73,11 @@ RunResult resample_repetitions(const RunResult& result, std::mt19937_64& rng) {
 ClaimReplicates bootstrap_claims(const RunResult& result,
                                  const std::function<std::vector<Claim>(const RunResult&)>& claims_of, int resamples,
                                  std::uint64_t seed) {
+  ClaimReplicates replicates;
+  for (const CaseResult& c : result.cases)
+    if (c.repetitions.size() < kMinRepetitionsForIntervals) return replicates;
   const RunResult light = without_series(result);
   std::mt19937_64 rng(seed);
-  ClaimReplicates replicates;
   for (int i = 0; i < resamples; ++i) {
     for (const Claim& claim : claims_of(resample_repetitions(light, rng)))
       replicates[claim.id].push_back(claim.measured ? *claim.measured : std::numeric_limits<double>::quiet_NaN());

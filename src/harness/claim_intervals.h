@@ -18,6 +18,9 @@ namespace tcsb {
 /// Resamples behind a claim's interval, and its confidence.
 inline constexpr int kClaimResamples = 400;
 inline constexpr double kClaimConfidence = 0.95;
+/// Fewer repetitions than this and resampling them says nothing about the noise (one repetition would give a
+/// point "interval", falsely decided): no intervals then.
+inline constexpr std::size_t kMinRepetitionsForIntervals = 5;
 
 /// One bootstrap resample of a run's repetitions. For each net, repetition indices are drawn with replacement once
 /// and used for every case of that net, so runs measured side by side (plain and TC-SB of one repetition) stay
@@ -30,7 +33,8 @@ RunResult resample_repetitions(const RunResult& result, std::mt19937_64& rng);
 /// Claim id -> its measured value on each resample (NaN where a resample leaves it unmeasured).
 using ClaimReplicates = std::map<std::string, std::vector<double>>;
 
-/// Recomputes `claims_of` on `resamples` resamples of `result` drawn from a generator seeded with `seed`.
+/// Recomputes `claims_of` on `resamples` resamples of `result` drawn from a generator seeded with `seed`. Empty
+/// when some case has fewer than kMinRepetitionsForIntervals repetitions.
 ClaimReplicates bootstrap_claims(const RunResult& result,
                                  const std::function<std::vector<Claim>(const RunResult&)>& claims_of, int resamples,
                                  std::uint64_t seed);

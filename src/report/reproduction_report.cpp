@@ -1,5 +1,6 @@
 #include "report/reproduction_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <ostream>
@@ -197,10 +198,15 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
   t1.print(out);
   print_claims("Claims of the paper (any FAIL: exit 1):", reproduction.claims, out);
   print_claims("Targets of this project (reported, not gating):", reproduction.targets, out);
-  out << "95% interval: where the measured value could lie had the run been repeated (percentile bootstrap, "
-      << kClaimResamples << " resamples of the repetitions, a net's cases drawn together so ratios stay paired; "
-      << fixed(reproduction.bootstrap_s, 1) << " s). Beyond noise \"no\": the verdict flips inside the interval, so "
-      << "this run cannot decide it.\n";
+  const bool intervals = std::any_of(reproduction.claims.begin(), reproduction.claims.end(),
+                                     [](const Claim& c) { return c.interval.has_value(); });
+  if (intervals)
+    out << "95% interval: where the measured value could lie had the run been repeated (percentile bootstrap, "
+        << kClaimResamples << " resamples of the repetitions, a net's cases drawn together so ratios stay paired; "
+        << fixed(reproduction.bootstrap_s, 1) << " s). Beyond noise \"no\": the verdict flips inside the interval, "
+        << "so this run cannot decide it.\n";
+  else
+    out << "No intervals: they need at least " << kMinRepetitionsForIntervals << " repetitions per case.\n";
   out << "Reproduction " << (reproduction.pass() ? "PASSED" : "FAILED") << " in " << fixed(reproduction.wall_s, 1)
       << " s\n";
 }

@@ -137,5 +137,22 @@ TEST(ClaimIntervals, IdenticalRepetitionsGiveAPointInterval) {
   EXPECT_EQ(decided(claims[0]), true);
 }
 
+TEST(ClaimIntervals, TooFewRepetitionsGiveNoIntervals) {
+  // One repetition resampled is always itself: a point "interval" would claim a decided verdict. None instead.
+  RunResult run = two_nets();
+  for (CaseResult& c : run.cases) {
+    c.repetitions.resize(kMinRepetitionsForIntervals - 1);
+    std::size_t ops = 0;
+    for (const RepetitionResult& r : c.repetitions) ops += static_cast<std::size_t>(r.operations);
+    c.ops.samples.resize(ops);
+  }
+  const auto of_case1 = [](const RunResult& r) { return claims_on(r, 1); };
+  EXPECT_TRUE(bootstrap_claims(run, of_case1, 100, 3).empty());
+  std::vector<Claim> claims = claims_on(run, 1);
+  attach_intervals(claims, bootstrap_claims(run, of_case1, 100, 3), 0.95);
+  EXPECT_FALSE(claims[0].interval.has_value());
+  EXPECT_EQ(decided(claims[0]), std::nullopt);
+}
+
 }  // namespace
 }  // namespace tcsb
