@@ -33,6 +33,7 @@ int reproduce_command(const ReproduceArgs& args) {
   const RunResult result = run_with_progress(suite, context, !args.quiet);
   if (!args.quiet) print_console_report(result, std::cerr);
   warn_diverged(result);
+  warn_stalls(result);
   const Reproduction reproduction = check_reproduction(result, paper);
   print_reproduction(result, reproduction, std::cerr);
 

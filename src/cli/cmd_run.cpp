@@ -70,6 +70,7 @@ int run_and_report(const Suite& suite, const RunArgs& args) {
   const RunResult result = run_with_progress(suite, context, !args.quiet);
   if (!args.quiet) print_console_report(result, std::cerr);
   warn_diverged(result);
+  warn_stalls(result);
   return write_report(format->render(result), args.out);
 }
 

@@ -6,6 +6,8 @@
 
 #include "cli/cli_common.h"
 #include "harness/runner.h"
+#include "harness/stall.h"
+#include "report/text_table.h"
 #include "report/report_writer.h"
 
 namespace tcsb::cli {
@@ -91,6 +93,13 @@ void warn_diverged(const RunResult& result) {
   }
 }
 
+void warn_stalls(const RunResult& result) {
+  for (const Stall& s : stalled_repetitions(result)) {
+    print_warning("case " + s.label + " repetition " + std::to_string(s.repetition) + ": mean step " +
+                  fixed(s.mean_over_median, 1) + "x its median, the machine stalled for about " + fixed(s.lost_s, 1) +
+                  " s; the case's median over repetitions keeps one such repetition out");
+  }
+}
 
 int write_report(const std::string& text, const std::string& out) {
   if (out.empty()) {

@@ -28,6 +28,8 @@ RunResult run_with_progress(const Suite& suite, const Context& context, bool pro
 
 /// One warning line per diverged repetition: case, step, reason.
 void warn_diverged(const RunResult& result);
+/// A warning per repetition during which the machine stalled (harness/stall.h).
+void warn_stalls(const RunResult& result);
 
 /// Writes the report to stdout, or atomically to `out`. If the write fails after a long run, the report goes to
 /// stdout instead and the result is kExitInternal; otherwise kExitOk.
