@@ -22,13 +22,24 @@ double numpy_lerp(double a, double b, double t) {
   return t >= 0.5 ? b - diff * (1.0 - t) : a + diff * t;
 }
 
+// Where the p-th percentile of n > 0 sorted values lies: between order statistics lo and lo + 1, at fraction t
+// (numpy.percentile(method='linear')).
+struct Rank {
+  std::size_t lo = 0;
+  double t = 0.0;
+};
+
+Rank rank_of(std::size_t n, double p) {
+  const double index = static_cast<double>(n - 1) * (p / 100.0);
+  const double lo_index = std::floor(index);
+  return {static_cast<std::size_t>(lo_index), index - lo_index};
+}
+
 // Percentile of an already sorted, non-empty sample. Mirrors numpy.percentile(method='linear') exactly.
 double sorted_percentile(const std::vector<double>& sorted, double p) {
-  const double index = static_cast<double>(sorted.size() - 1) * (p / 100.0);
-  const double lo_index = std::floor(index);
-  const auto lo = static_cast<std::size_t>(lo_index);
-  if (lo + 1 >= sorted.size()) return sorted.back();
-  return numpy_lerp(sorted[lo], sorted[lo + 1], index - lo_index);
+  const Rank r = rank_of(sorted.size(), p);
+  if (r.lo + 1 >= sorted.size()) return sorted.back();
+  return numpy_lerp(sorted[r.lo], sorted[r.lo + 1], r.t);
 }
 
 void require_percent(double p) {
@@ -55,13 +66,11 @@ double percentile(std::span<const double> values, double p) {
   // Selection instead of a full sort (O(n): the bootstrap takes medians of ~10^5 operation samples hundreds of
   // times); the same two order statistics and the same lerp as sorted_percentile, so the same bits.
   std::vector<double> v(values.begin(), values.end());
-  const double index = static_cast<double>(v.size() - 1) * (p / 100.0);
-  const double lo_index = std::floor(index);
-  const auto lo = static_cast<std::size_t>(lo_index);
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(lo), v.end());
-  if (lo + 1 >= v.size()) return v[lo];
-  const double b = *std::min_element(v.begin() + static_cast<std::ptrdiff_t>(lo) + 1, v.end());
-  return numpy_lerp(v[lo], b, index - lo_index);
+  const Rank r = rank_of(v.size(), p);
+  const auto lo = v.begin() + static_cast<std::ptrdiff_t>(r.lo);
+  std::nth_element(v.begin(), lo, v.end());
+  if (r.lo + 1 >= v.size()) return *lo;
+  return numpy_lerp(*lo, *std::min_element(lo + 1, v.end()), r.t);
 }
 
 double median(std::span<const double> values) { return percentile(values, 50.0); }

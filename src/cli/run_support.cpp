@@ -7,8 +7,8 @@
 #include "cli/cli_common.h"
 #include "harness/runner.h"
 #include "harness/stall.h"
-#include "report/text_table.h"
 #include "report/report_writer.h"
+#include "report/text_table.h"
 
 namespace tcsb::cli {
 

@@ -38,6 +38,7 @@ const PaperTable1Row* paper_row(const PaperReference& paper, const std::string& 
 }
 
 nlohmann::ordered_json claim_json(const Claim& c) {
+  const std::optional<bool> beyond_noise = decided(c);
   return {{"id", c.id},
           {"description", c.description},
           {"comparison", comparison_name(c.comparison)},
@@ -48,7 +49,7 @@ nlohmann::ordered_json claim_json(const Claim& c) {
                                                             {"high", json_number(c.interval->high)}}
                                   : nlohmann::ordered_json(nullptr)},
           {"pass", c.pass},
-          {"decided", decided(c) ? nlohmann::ordered_json(*decided(c)) : nlohmann::ordered_json(nullptr)}};
+          {"decided", beyond_noise ? nlohmann::ordered_json(*beyond_noise) : nlohmann::ordered_json(nullptr)}};
 }
 
 /// The fidelity row of TC-SB at a Table 2 row's target, when the run has a fidelity pass.

@@ -1,7 +1,6 @@
 #include "softbody/bullet_setup.h"
 
 #include <algorithm>
-#include <cstring>
 #include <numeric>
 #include <random>
 
@@ -21,9 +20,7 @@ void apply_solver_settings(btSoftBody& body, const SolverSettings& settings) {
 void init_net_nodes(btSoftBody& body, const Net& net, int capacity) {
   const int n = static_cast<int>(net.node_count());
   if (capacity > n) body.m_nodes.reserve(capacity);
-  btSoftBody::Node zero;
-  std::memset(static_cast<void*>(&zero), 0, sizeof(zero));  // Bullet's ZeroInitialize
-  body.m_nodes.resize(n, zero);
+  body.m_nodes.resize(n, zeroed<btSoftBody::Node>());
   body.m_X.resize(n);
   for (int i = 0; i < n; ++i) {
     btSoftBody::Node& node = body.m_nodes[i];

@@ -4,12 +4,21 @@
 
 #include <BulletSoftBody/btSoftBody.h>
 
+#include <cstring>
 #include <vector>
 
 #include "net/net.h"
 #include "softbody/solver_settings.h"
 
 namespace tcsb {
+
+/// A Bullet node or link with every byte zero: what Bullet's ZeroInitialize makes before it fills in fields.
+template <class T>
+T zeroed() {
+  T value;
+  std::memset(static_cast<void*>(&value), 0, sizeof(T));
+  return value;
+}
 
 /// Bullet's solver configuration for every body of a run: the suite's iterations, damping and stiffness, and
 /// collisions off (the paper's tests run none; Bullet then runs no collision code at all when stepped solo).

@@ -76,12 +76,8 @@ TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, con
 
   // Reserved is not yet mapped: the kernel maps a page on its first write. Write the room once now rather than
   // inside operations (a minor fault costs microseconds, more than an operation).
-  Node zero_node;
-  std::memset(static_cast<void*>(&zero_node), 0, sizeof(zero_node));
-  touch_reserved(m_nodes, zero_node);
-  Link zero_link;
-  std::memset(static_cast<void*>(&zero_link), 0, sizeof(zero_link));
-  touch_reserved(m_links, zero_link);
+  touch_reserved(m_nodes, zeroed<Node>());
+  touch_reserved(m_links, zeroed<Link>());
   touch_reserved(tree_of_, kNoTreeNode);
   touch_reserved(link_meta_, CutLink{});
 }
