@@ -24,8 +24,11 @@ class Controller {
   /// Called right after Bullet stepped (a parallel controller snapshots the state here).
   virtual void after_step(const TcSoftBody& body) {}
   /// The body will not step for a while (the fidelity pass steps other bodies in between): a parallel controller
-  /// lets its worker sleep now instead of spinning for the next job, so it does not take a core from them.
+  /// lets its worker sleep now instead of spinning for the next job, so it does not take a core from them; a time
+  /// budget does not count the pause as a step.
   virtual void pause() {}
+  /// The body steps again after a pause(): a parallel controller wakes its worker before the next step.
+  virtual void resume() {}
   /// Cost of the last step's feedback work.
   virtual FeedbackCost last_cost() const { return {}; }
 };

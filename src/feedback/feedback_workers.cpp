@@ -53,6 +53,11 @@ void FeedbackWorkers::wait() {
   done_.wait(lock, [this] { return !job_pending_; });
 }
 
+void FeedbackWorkers::wake() {
+  post([] {});
+  wait();
+}
+
 void FeedbackWorkers::coordinator_loop() {
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {

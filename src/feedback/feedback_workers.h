@@ -33,6 +33,9 @@ class FeedbackWorkers {
   void wait();
   /// No job will come for a while: thread 0 stops spinning and sleeps until the next post().
   void park() { parked_.store(true, std::memory_order_release); }
+  /// Jobs will come again: wakes thread 0 (an empty job, waited for) so that it spins for the next one instead of
+  /// waking late from its sleep inside a timed step.
+  void wake();
   /// From inside a job: runs fn(chunk) for every chunk in [0, chunks) over all threads; returns when all are done.
   void parallel_for(int chunks, const std::function<void(int)>& fn);
   int threads() const { return static_cast<int>(helpers_.size()) + 1; }

@@ -82,6 +82,16 @@ void SaliencyController::after_step(const TcSoftBody& body) {
   cost_.total_ms += waited;
 }
 
+void SaliencyController::pause() {
+  if (workers_) workers_->park();
+  // Other bodies step until resume(): that gap is no step period of this body's, so the time budget forgets it.
+  last_boundary_ = {};
+}
+
+void SaliencyController::resume() {
+  if (workers_) workers_->wake();
+}
+
 void SaliencyController::adapt_time_budget() {
   // The step period (boundary to boundary) is the step time; an exponential average smooths the noise, and the
   // budget moves multiplicatively: down 3% while over the target, up 1% while clearly under it.

@@ -31,9 +31,8 @@ class SaliencyController final : public Controller {
   void before_step(TcSoftBody& body) override;
   void after_step(const TcSoftBody& body) override;
   FeedbackCost last_cost() const override { return cost_; }
-  void pause() override {
-    if (workers_) workers_->park();
-  }
+  void pause() override;
+  void resume() override;
 
   /// The budget in force now: the node budget, lowered by the time budget when one is set.
   int budget() const;

@@ -143,6 +143,7 @@ class Track {
   void run_block(int first, int last, const ReferenceBlock& reference, double reference_energy0) {
     const int warmup = suite_.warmup_steps, total = warmup + suite_.steps;
     const double to_pct = 100.0 / net_->extent();
+    body_->resume();  // its feedback worker spins again before the first timed step, not woken late inside it
     for (int s = first; s < last && alive(); ++s) {
       const bool measured = s >= warmup;
       const Clock::time_point t0 = Clock::now();

@@ -57,6 +57,9 @@ class TreeCutSubject final : public FidelitySubject {
   void pause() override {
     if (controller_) controller_->pause();
   }
+  void resume() override {
+    if (controller_) controller_->resume();
+  }
   void simulate(btScalar dt) override {
     body_->simulate_step(dt);
     if (controller_) controller_->after_step(*body_);

@@ -48,6 +48,8 @@ class FidelitySubject {
   virtual std::optional<int> converged_step() const { return std::nullopt; }
   /// The pass moves on to other subjects for a while (see Controller::pause()).
   virtual void pause() {}
+  /// The pass comes back to this subject (see Controller::resume()).
+  virtual void resume() {}
   /// Step at whose boundary the body switched (switch_body only).
   virtual std::optional<int> switch_step() const { return std::nullopt; }
 };

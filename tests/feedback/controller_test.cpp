@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <string>
+#include <thread>
 
 #include "feedback/budget_policy.h"
 #include "feedback/saliency_controller.h"
@@ -67,7 +70,9 @@ struct Trace {
   std::vector<btVector3> final_positions;
 };
 
-Trace run_swinging(const FeedbackSettings& settings, int steps) {
+/// `pause_every` > 0: the controller is paused and resumed before every such step, as the fidelity pass does
+/// between its blocks.
+Trace run_swinging(const FeedbackSettings& settings, int steps, int pause_every = 0) {
   const auto net = net_of(33);
   SoftBodyWorld world({});
   SolverSettings solver;
@@ -76,6 +81,10 @@ Trace run_swinging(const FeedbackSettings& settings, int steps) {
   SaliencyController controller(settings, 400);
   Trace t;
   for (int s = 0; s < steps; ++s) {
+    if (pause_every > 0 && s % pause_every == 0) {
+      controller.pause();
+      controller.resume();
+    }
     body.advance_blends();
     controller.before_step(body);
     body.simulate_step(kDt);
@@ -101,16 +110,19 @@ TEST(SaliencyController, HoldsTheNodeBudgetAndIsIdenticalSyncAndParallel) {
   for (std::size_t s = 1; s < reference.n.size(); ++s) changed += reference.n[s] != reference.n[s - 1];
   EXPECT_GT(changed, 10) << "the feedback loop should be changing the cut while the net swings";
   for (int threads : {1, 2, 3}) {
-    FeedbackSettings parallel = sync;
-    parallel.parallel = true;
-    parallel.threads = threads;
-    const Trace t = run_swinging(parallel, 300);
-    EXPECT_EQ(t.n, reference.n) << threads << " threads";
-    EXPECT_EQ(t.l, reference.l) << threads << " threads";
-    EXPECT_EQ(t.i, reference.i) << threads << " threads";
-    ASSERT_EQ(t.final_positions.size(), reference.final_positions.size());
-    for (std::size_t k = 0; k < t.final_positions.size(); ++k)
-      ASSERT_EQ(t.final_positions[k], reference.final_positions[k]) << threads << " threads, node " << k;
+    for (int pause_every : {0, 20}) {  // with and without the worker parked and woken again
+      FeedbackSettings parallel = sync;
+      parallel.parallel = true;
+      parallel.threads = threads;
+      const Trace t = run_swinging(parallel, 300, pause_every);
+      const std::string what = std::to_string(threads) + " threads, pause every " + std::to_string(pause_every);
+      EXPECT_EQ(t.n, reference.n) << what;
+      EXPECT_EQ(t.l, reference.l) << what;
+      EXPECT_EQ(t.i, reference.i) << what;
+      ASSERT_EQ(t.final_positions.size(), reference.final_positions.size());
+      for (std::size_t k = 0; k < t.final_positions.size(); ++k)
+        ASSERT_EQ(t.final_positions[k], reference.final_positions[k]) << what << ", node " << k;
+    }
   }
 }
 
@@ -132,6 +144,31 @@ TEST(SaliencyController, ATimeBudgetLowersTheNodeBudget) {
   EXPECT_LT(controller.budget(), 250 / 2);
   EXPECT_LT(body.committed_count(), 250);
   EXPECT_TRUE(body.validate().ok()) << body.validate().summary();
+}
+
+TEST(SaliencyController, ATimeBudgetDoesNotCountAPauseAsAStep) {
+  // The fidelity pass pauses a body while the others run their blocks. Counted as a step period, this 300 ms pause
+  // would lift the step-time average above the 20 ms target (0.1 x 300 ms) and cut the node budget; a 17 x 17 net's
+  // real steps take well under a millisecond, so nothing else can.
+  FeedbackSettings settings;
+  settings.max_step_ms = 20;
+  const auto net = net_of(17);
+  SoftBodyWorld world({});
+  TcSoftBody body(world, net, {}, {});
+  SaliencyController controller(settings, 250);
+  const auto step = [&] {
+    body.advance_blends();
+    controller.before_step(body);
+    body.simulate_step(kDt);
+    controller.after_step(body);
+  };
+  for (int s = 0; s < 10; ++s) step();
+  ASSERT_EQ(controller.budget(), 250);
+  controller.pause();
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  controller.resume();
+  for (int s = 0; s < 3; ++s) step();
+  EXPECT_EQ(controller.budget(), 250);
 }
 
 }  // namespace

@@ -39,6 +39,17 @@ TEST(FeedbackWorkers, AParkedWorkerStillRunsTheNextJob) {
   post_and_check(workers);
 }
 
+TEST(FeedbackWorkers, AWokenWorkerRunsTheNextJob) {
+  FeedbackWorkers workers(1);
+  post_and_check(workers);
+  workers.park();
+  std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  workers.wake();  // returns once the worker ran the empty job: it is awake
+  post_and_check(workers);
+  workers.wake();  // also while it is still spinning
+  post_and_check(workers);
+}
+
 TEST(FeedbackWorkers, AWorkerThatSpunOutWakesForTheNextJob) {
   FeedbackWorkers workers(1);
   post_and_check(workers);

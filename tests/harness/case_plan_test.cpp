@@ -78,7 +78,9 @@ void expect_valid_plan(const Suite& s) {
       EXPECT_EQ(run.case_index, plan[i - 1].case_index + 1) << "at run " << i;
     }
     // Never the same case twice in a row, when the suite has more than one case.
-    if (i > 0 && cases.size() >= 2) EXPECT_NE(run.case_index, plan[i - 1].case_index) << "at run " << i;
+    if (i > 0 && cases.size() >= 2) {
+      EXPECT_NE(run.case_index, plan[i - 1].case_index) << "at run " << i;
+    }
   }
   EXPECT_EQ(seen.size(), plan.size());
 }
