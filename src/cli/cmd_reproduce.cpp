@@ -21,13 +21,15 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceArgs& args) {
   cmd->add_option("--paper", args.paper, "The paper's numbers (JSON)")->capture_default_str();
   cmd->add_option("--out", args.out, "Write the JSON report to FILE (atomically) instead of stdout");
   cmd->add_flag("--quiet", args.quiet, "Only the side-by-side tables and claims on stderr");
+  add_repetitions_option(*cmd, args.repetitions);
   return cmd;
 }
 
 int reproduce_command(const ReproduceArgs& args) {
   check_out_path(args.out);
   const PaperReference paper = load_paper_reference(resolve_data_file(args.paper));
-  const Suite suite = parse_suite(resolve_suite(args.suite));
+  Suite suite = parse_suite(resolve_suite(args.suite));
+  apply_repetitions(args.repetitions, suite);
   const Context context = gather_context();
   print_warnings(context, std::cerr);
   const RunResult result = run_with_progress(suite, context, !args.quiet);

@@ -50,6 +50,7 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
       ->delimiter(',');
   run->add_option("--max-step-ms", args.max_step_ms,
                   "TC-SB time budget per step in ms, 0 to disable (overrides the suite)");
+  add_repetitions_option(*run, args.repetitions);
   return run;
 }
 
@@ -58,6 +59,7 @@ int run_command(const RunArgs& args) {
   check_out_path(args.out);
   Suite suite = parse_suite(resolve_suite(args.suite));
   apply_budget_overrides(args, suite);
+  apply_repetitions(args.repetitions, suite);
   return run_and_report(suite, args);
 }
 

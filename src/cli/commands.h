@@ -22,6 +22,7 @@ struct RunArgs {
   bool quiet = false;           ///< no console report on stderr
   std::vector<double> compression;  ///< overrides the suite's TC-SB node budgets (fractions), when given
   std::optional<double> max_step_ms;  ///< overrides the suite's time budget per step (ms; 0 disables), when given
+  std::optional<int> repetitions;     ///< overrides the suite's repetitions per case, when given
 };
 
 /// Options of `tcsb reproduce`.
@@ -30,6 +31,7 @@ struct ReproduceArgs {
   std::string paper = "results/paper.json";   ///< the paper's own numbers
   std::string out;                            ///< output file; empty: stdout
   bool quiet = false;                         ///< only the reproduction tables on stderr
+  std::optional<int> repetitions;             ///< overrides the suite's repetitions per case, when given
 };
 
 /// Options of `tcsb validate`.

@@ -1,5 +1,6 @@
 #include "cli/run_support.h"
 
+#include <CLI/CLI.hpp>
 #include <fstream>
 #include <iostream>
 #include <unistd.h>
@@ -28,6 +29,21 @@ void check_out_path(const std::string& out, const std::string& option) {
   const bool writable = std::ofstream(probe).good();
   std::filesystem::remove(probe, ec);
   if (!writable) throw UsageError(option + " " + out + ": cannot create files in directory " + dir.string());
+}
+
+void add_repetitions_option(CLI::App& command, std::optional<int>& repetitions) {
+  command.add_option("--repetitions", repetitions,
+                     "Repetitions of every case, 1 to " + std::to_string(kMaxRepetitions) +
+                         " (overrides the suite; more make the medians and claim intervals steadier on a noisy machine)");
+}
+
+void apply_repetitions(const std::optional<int>& repetitions, Suite& suite) {
+  if (!repetitions) return;
+  if (*repetitions < 1 || *repetitions > kMaxRepetitions) {
+    throw UsageError("--repetitions: must be a whole number from 1 to " + std::to_string(kMaxRepetitions) + ", got " +
+                     std::to_string(*repetitions));
+  }
+  suite.repetitions = *repetitions;
 }
 
 std::string known_formats() {

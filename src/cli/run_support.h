@@ -4,12 +4,17 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "harness/context.h"
 #include "harness/run_result.h"
 #include "harness/suite.h"
 #include "report/report_format.h"
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace tcsb::cli {
 
@@ -22,6 +27,11 @@ std::string known_formats();
 
 /// The output format called `name` (--format); throws UsageError listing the known ones when there is none.
 std::unique_ptr<ReportFormat> checked_format(const std::string& name);
+
+/// Options both `run` and `reproduce` take: --repetitions.
+void add_repetitions_option(CLI::App& command, std::optional<int>& repetitions);
+/// Applies --repetitions to the suite, within the bounds the suite file itself has (UsageError otherwise).
+void apply_repetitions(const std::optional<int>& repetitions, Suite& suite);
 
 /// Runs the suite with a single updating progress line on stderr when `progress` and stderr is a terminal.
 RunResult run_with_progress(const Suite& suite, const Context& context, bool progress);

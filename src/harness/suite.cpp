@@ -488,7 +488,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file) {
   root.read("gravity", s.world.gravity, kNonNegative);
   root.read("steps", s.steps, 1, INT_MAX, true);
   root.read("warmup_steps", s.warmup_steps, 0, INT_MAX, true);
-  root.read("repetitions", s.repetitions, 1, 1000, true);
+  root.read("repetitions", s.repetitions, 1, kMaxRepetitions, true);
   s.seed = r.unsigned_integer(root.need("seed"), "seed");
   parse_settings(r, root, s);
 

@@ -32,6 +32,9 @@ struct FidelitySettings {
 };
 
 /// A validated suite.
+/// The most repetitions a suite (or --repetitions) may ask for.
+inline constexpr int kMaxRepetitions = 1000;
+
 struct Suite {
   std::string name;
   std::string description;

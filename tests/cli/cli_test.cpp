@@ -174,4 +174,32 @@ TEST_F(Cli, BadBudgetFlagsAreUsageErrors) {
   }
 }
 
+TEST_F(Cli, RepetitionsFlagOverridesTheSuiteForRunAndReproduce) {
+  write_file(dir_ / "tiny.json", kTinySuite);  // 2 repetitions
+  for (const char* command : {"run tiny.json --quiet", "reproduce --suite tiny.json --quiet"}) {
+    fs::remove(dir_ / "out.json");
+    const Outcome o = tcsb(std::string(command) + " --repetitions 3 --out out.json");
+    // reproduce may fail claims on one tiny net (exit 1); what matters here is that it ran 3 repetitions.
+    ASSERT_TRUE(o.exit_code == 0 || o.exit_code == 1) << command << ": " << o.err;
+    const nlohmann::json j = nlohmann::json::parse(read_file(dir_ / "out.json"));
+    EXPECT_EQ(j["suite"]["repetitions"], 3) << command;
+    for (const auto& c : j["cases"]) EXPECT_EQ(c["repetitions"].size(), 3u) << command << " " << c["label"];
+  }
+}
+
+TEST_F(Cli, BadRepetitionsAreUsageErrors) {
+  write_file(dir_ / "tiny.json", kTinySuite);
+  for (const char* command : {"run tiny.json", "reproduce --suite tiny.json"}) {
+    for (const char* flag : {"--repetitions 0", "--repetitions 1001", "--repetitions=-2", "--repetitions 2.5",
+                             "--repetitions many"}) {
+      const std::string line = std::string(command) + " --out out.json " + flag;
+      const Outcome o = tcsb(line);
+      EXPECT_EQ(o.exit_code, 2) << line;
+      EXPECT_EQ(count_lines(o.err), 1) << line << ": " << o.err;
+      EXPECT_NE(o.err.find("--repetitions"), std::string::npos) << line << ": " << o.err;
+      EXPECT_FALSE(fs::exists(dir_ / "out.json")) << line;
+    }
+  }
+}
+
 }  // namespace
