@@ -23,8 +23,6 @@ namespace tcsb {
 
 namespace {
 
-using Clock = StepClock;
-
 MetricSummary summarize_metric(const std::vector<double>& values) {
   const Summary s = summarize(values);
   return {s.count, s.mean, s.p95, s.max};
@@ -78,9 +76,9 @@ class Reference {
     block.saliency.resize(frames * n);
     block.energy.assign(frames, 0.0);
     for (int s = first; s < last; ++s) {
-      const Clock::time_point t0 = Clock::now();
+      const StepClock::time_point t0 = StepClock::now();
       step_soft_body(*body_, static_cast<btScalar>(suite_.world.dt));
-      const Clock::time_point t1 = Clock::now();
+      const StepClock::time_point t1 = StepClock::now();
       if (auto diverged = divergence_after_step(*body_, net_->extent(), s, total)) {
         diverged_step = s;
         diverged_reason = "the reference diverged: " + *diverged;
@@ -146,9 +144,9 @@ class Track {
     body_->resume();  // its feedback worker spins again before the first timed step, not woken late inside it
     for (int s = first; s < last && alive(); ++s) {
       const bool measured = s >= warmup;
-      const Clock::time_point t0 = Clock::now();
+      const StepClock::time_point t0 = StepClock::now();
       body_->boundary(s);
-      const Clock::time_point t1 = Clock::now();
+      const StepClock::time_point t1 = StepClock::now();
       // No simulated time passes between the previous step's end and this point, so the reference does not move:
       // any jump of the surface is pure popping. Measured at every boundary, warm-up included: "every operation"
       // includes TC-SB's first coarsening and a switch made before the measured steps.
@@ -157,9 +155,9 @@ class Track {
         body_->reconstruct(after_);
         pop = max_displacement(surface_, after_);
       }
-      const Clock::time_point t2 = Clock::now();
+      const StepClock::time_point t2 = StepClock::now();
       body_->simulate(static_cast<btScalar>(suite_.world.dt));
-      const Clock::time_point t3 = Clock::now();
+      const StepClock::time_point t3 = StepClock::now();
       if (auto diverged = divergence_after_step(body_->bullet(), net_->extent(), s, total)) {
         stop(s, *diverged);
         break;
@@ -269,7 +267,7 @@ std::uint64_t fidelity_seed(const Suite& suite, std::size_t net, const FidelityS
 
 FidelityResult run_fidelity(const Suite& suite, const std::vector<std::shared_ptr<const Net>>& nets,
                             const FidelityProgress& progress) {
-  const Clock::time_point start = Clock::now();
+  const StepClock::time_point start = StepClock::now();
   FidelityResult result;
   result.rms_threshold_pct = suite.fidelity.rms_threshold_pct;
   const std::vector<FidelitySubjectSpec> plan = fidelity_plan(suite);
@@ -279,7 +277,7 @@ FidelityResult run_fidelity(const Suite& suite, const std::vector<std::shared_pt
       if (progress) progress(nets[n]->spec().name);
     }
   }
-  result.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  result.wall_s = std::chrono::duration<double>(StepClock::now() - start).count();
   return result;
 }
 

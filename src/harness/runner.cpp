@@ -15,8 +15,6 @@ namespace tcsb {
 
 namespace {
 
-using Clock = StepClock;
-
 /// Collects operation samples of timed steps only.
 class OpRecorder final : public OpSink {
  public:
@@ -36,9 +34,9 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
   RepetitionResult rep;
   rep.repetition = repetition;
   SoftBodyWorld world(suite.world);
-  const Clock::time_point built0 = Clock::now();
+  const StepClock::time_point built0 = StepClock::now();
   std::unique_ptr<CaseBody> body = make_case_body(suite, key, world, net, seed);
-  rep.build_ms = ms_between(built0, Clock::now());
+  rep.build_ms = ms_between(built0, StepClock::now());
   OpRecorder recorder(op_samples);
   if (TcSoftBody* tc = body->tc()) tc->set_op_sink(&recorder);
 
@@ -51,9 +49,9 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
   for (int s = 0; s < total; ++s) {
     const bool timed = s >= suite.warmup_steps;
     recorder.recording = timed;
-    const Clock::time_point t0 = Clock::now();
+    const StepClock::time_point t0 = StepClock::now();
     body->step(dt);
-    const Clock::time_point t1 = Clock::now();
+    const StepClock::time_point t1 = StepClock::now();
     const btSoftBody& b = body->bullet();
     if (timed) {
       series.step_ms.push_back(ms_between(t0, t1));
@@ -90,7 +88,7 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
 }  // namespace
 
 RunResult run_suite(const Suite& suite, const Context& context, const RunOptions& options) {
-  const Clock::time_point start = Clock::now();
+  const StepClock::time_point start = StepClock::now();
   RunResult result;
   result.suite = suite;
   result.context = context;
@@ -133,7 +131,7 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
       if (options.progress) options.progress(done, total, net + "/fidelity");
     });
   }
-  result.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  result.wall_s = std::chrono::duration<double>(StepClock::now() - start).count();
   return result;
 }
 
