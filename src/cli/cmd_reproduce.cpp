@@ -6,9 +6,6 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/run_support.h"
-#include "harness/context.h"
-#include "harness/runner.h"
-#include "report/console_report.h"
 #include "report/json_report.h"
 #include "report/reproduction_report.h"
 #include "report/report_writer.h"
@@ -30,12 +27,7 @@ int reproduce_command(const ReproduceArgs& args) {
   const PaperReference paper = load_paper_reference(resolve_data_file(args.paper));
   Suite suite = parse_suite(resolve_suite(args.suite));
   apply_repetitions(args.repetitions, suite);
-  const Context context = gather_context();
-  print_warnings(context, std::cerr);
-  const RunResult result = run_with_progress(suite, context, !args.quiet);
-  if (!args.quiet) print_console_report(result, std::cerr);
-  warn_diverged(result);
-  warn_stalls(result);
+  const RunResult result = run_on_console(suite, args.quiet);
   const Reproduction reproduction = check_reproduction(result, paper);
   print_reproduction(result, reproduction, std::cerr);
 

@@ -3,15 +3,11 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "harness/context.h"
-#include "harness/runner.h"
-#include "report/console_report.h"
-#include "report/report_format.h"
 #include "cli/run_support.h"
+#include "report/report_format.h"
 
 namespace tcsb::cli {
 namespace {
@@ -66,13 +62,7 @@ int run_command(const RunArgs& args) {
 int run_and_report(const Suite& suite, const RunArgs& args) {
   const std::unique_ptr<ReportFormat> format = checked_format(args.format);
   check_out_path(args.out);
-  const Context context = gather_context();
-  print_warnings(context, std::cerr);
-
-  const RunResult result = run_with_progress(suite, context, !args.quiet);
-  if (!args.quiet) print_console_report(result, std::cerr);
-  warn_diverged(result);
-  warn_stalls(result);
+  const RunResult result = run_on_console(suite, args.quiet);
   return write_report(format->render(result), args.out);
 }
 

@@ -6,8 +6,10 @@
 #include <unistd.h>
 
 #include "cli/cli_common.h"
+#include "harness/context.h"
 #include "harness/runner.h"
 #include "harness/stall.h"
+#include "report/console_report.h"
 #include "report/report_writer.h"
 #include "report/text_table.h"
 
@@ -88,15 +90,7 @@ class ProgressLine {
   std::size_t width_ = 0;
 };
 
-}  // namespace
-
-RunResult run_with_progress(const Suite& suite, const Context& context, bool progress) {
-  ProgressLine line(progress && ::isatty(STDERR_FILENO) == 1);
-  RunOptions options;
-  options.progress = [&line](int done, int total, const std::string& label) { line.update(done, total, label); };
-  return run_suite(suite, context, options);
-}
-
+/// One warning line per diverged repetition: case, step, reason.
 void warn_diverged(const RunResult& result) {
   for (const CaseResult& c : result.cases) {
     for (const RepetitionResult& r : c.repetitions) {
@@ -109,12 +103,31 @@ void warn_diverged(const RunResult& result) {
   }
 }
 
+/// A warning per repetition during which the machine stalled.
 void warn_stalls(const RunResult& result) {
   for (const Stall& s : stalled_repetitions(result)) {
     print_warning("case " + s.label + " repetition " + std::to_string(s.repetition) + ": mean step " +
                   fixed(s.mean_over_median, 1) + "x its median, the machine stalled for about " + fixed(s.lost_s, 1) +
                   " s; the case's median over repetitions keeps one such repetition out");
   }
+}
+
+}  // namespace
+
+RunResult run_on_console(const Suite& suite, bool quiet) {
+  const Context context = gather_context();
+  print_warnings(context, std::cerr);
+  RunResult result;
+  {
+    ProgressLine line(!quiet && ::isatty(STDERR_FILENO) == 1);  // cleared before anything else is printed
+    RunOptions options;
+    options.progress = [&line](int done, int total, const std::string& label) { line.update(done, total, label); };
+    result = run_suite(suite, context, options);
+  }
+  if (!quiet) print_console_report(result, std::cerr);
+  warn_diverged(result);
+  warn_stalls(result);
+  return result;
 }
 
 int write_report(const std::string& text, const std::string& out) {

@@ -7,7 +7,6 @@
 #include <optional>
 #include <string>
 
-#include "harness/context.h"
 #include "harness/run_result.h"
 #include "harness/suite.h"
 #include "report/report_format.h"
@@ -33,13 +32,11 @@ void add_repetitions_option(CLI::App& command, std::optional<int>& repetitions);
 /// Applies --repetitions to the suite, within the bounds the suite file itself has (UsageError otherwise).
 void apply_repetitions(const std::optional<int>& repetitions, Suite& suite);
 
-/// Runs the suite with a single updating progress line on stderr when `progress` and stderr is a terminal.
-RunResult run_with_progress(const Suite& suite, const Context& context, bool progress);
-
-/// One warning line per diverged repetition: case, step, reason.
-void warn_diverged(const RunResult& result);
-/// A warning per repetition during which the machine stalled (harness/stall.h).
-void warn_stalls(const RunResult& result);
+/// Runs the suite as `run` and `reproduce` do, talking on stderr: the machine's warnings (harness/context.h), a
+/// single updating progress line when stderr is a terminal and not `quiet`, the console report unless `quiet`, then
+/// a warning per diverged repetition (case, step, reason) and per repetition during which the machine stalled
+/// (harness/stall.h).
+RunResult run_on_console(const Suite& suite, bool quiet);
 
 /// Writes the report to stdout, or atomically to `out`. If the write fails after a long run, the report goes to
 /// stdout instead and the result is kExitInternal; otherwise kExitOk.
