@@ -10,7 +10,9 @@
 //
 // Measured (tcsb_bench, begin operations, builds with and without it run alternately, 3 rounds): at 513^2 refine
 // 5.0-7.0 -> 3.6-3.9 us and coarse 4.0-6.0 -> 3.4-3.6 us; at 33^2-65^2 inside the noise. The end operations do
-// not call it: their blocks were touched by the blend steps just before, and there it only cost time.
+// not call it: their blocks were touched by the blend steps just before, and there it only cost time (in real runs
+// too: with it, end-refine's and end-coarse's cost grew no less from n45 to n81 — README, "Operations in constant
+// time").
 #include "softbody/tc_softbody.h"
 
 namespace tcsb {
