@@ -34,6 +34,18 @@ struct ReproduceArgs {
   std::optional<int> repetitions;             ///< overrides the suite's repetitions per case, when given
 };
 
+/// Options of `tcsb frames`.
+struct FramesArgs {
+  std::string suite = "paper";          ///< a path or a bundled suite name
+  std::string net;                      ///< a net of the suite by name; empty: its last
+  std::optional<double> compression;    ///< TC-SB node budget; absent: the suite's smallest target
+  std::vector<int> steps{30, 60, 120, 240};  ///< record after these steps (the cloth falls, then swings)
+  std::string out;                      ///< output file; empty: stdout
+};
+
+/// The latest step `tcsb frames` records (a bound against typing errors; 100 000 steps take minutes at 81 x 81).
+inline constexpr int kMaxFrameStep = 100000;
+
 /// Options of `tcsb validate`.
 struct ValidateArgs {
   std::string suite;
@@ -78,6 +90,11 @@ int validate_command(const ValidateArgs& args);
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args);
 /// The CI regression gate: 0 pass, 1 a regression or changed behaviour, 2 unusable input or different suites.
 int compare_command(const CompareArgs& args);
+
+/// Registers `frames [--suite S] [--net N] [--compression C] [--steps A,B,...] [--out FILE]`.
+CLI::App* add_frames_command(CLI::App& app, FramesArgs& args);
+/// Records the frames (harness/figure_frames.h) and writes their JSON (report/frames_json.h).
+int frames_command(const FramesArgs& args);
 
 /// Registers `export RESULT --format NAME [--out FILE]`.
 CLI::App* add_export_command(CLI::App& app, ExportArgs& args);

@@ -19,12 +19,14 @@ int main(int argc, char** argv) {
   ReproduceArgs reproduce_args;
   CompareArgs compare_args;
   ExportArgs export_args;
+  FramesArgs frames_args;
   CLI::App* run = add_run_command(app, run_args);
   CLI::App* list = add_list_command(app);
   CLI::App* validate = add_validate_command(app, validate_args);
   CLI::App* reproduce = add_reproduce_command(app, reproduce_args);
   CLI::App* compare = add_compare_command(app, compare_args);
   CLI::App* export_ = add_export_command(app, export_args);
+  CLI::App* frames = add_frames_command(app, frames_args);
 
   try {
     app.parse(argc, argv);
@@ -42,6 +44,7 @@ int main(int argc, char** argv) {
     if (*validate) return validate_command(validate_args);
     if (*compare) return compare_command(compare_args);
     if (*export_) return export_command(export_args);
+    if (*frames) return frames_command(frames_args);
     // `reproduce`, or no subcommand at all: the default job.
     return reproduce_command(reproduce_args);
   });

@@ -202,4 +202,33 @@ TEST_F(Cli, BadRepetitionsAreUsageErrors) {
   }
 }
 
+TEST_F(Cli, FramesRecordsBothBodiesAtTheRequestedSteps) {
+  write_file(dir_ / "tiny.json", kTinySuite);
+  const Outcome o = tcsb("frames --suite tiny.json --net n9 --compression 0.5 --steps 0,5,10 --out frames.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const nlohmann::json j = nlohmann::json::parse(read_file(dir_ / "frames.json"));
+  EXPECT_EQ(j["status"], "ok");
+  EXPECT_EQ(j["net"]["width"], 9);
+  ASSERT_EQ(j["frames"].size(), 3u);
+  EXPECT_EQ(j["frames"][2]["step"], 10);
+  for (const auto& f : j["frames"]) {
+    EXPECT_EQ(f["plain"].size(), 81u);
+    EXPECT_EQ(f["tcsb_surface"].size(), 81u);
+    EXPECT_EQ(f["tcsb_nodes"][0].size(), 3u);
+    EXPECT_TRUE(f["tcsb_links"][0][2].is_string());
+  }
+}
+
+TEST_F(Cli, BadFramesArgumentsAreUsageErrors) {
+  write_file(dir_ / "tiny.json", kTinySuite);
+  for (const char* flags : {"--net n99", "--steps 5,3", "--steps=-1", "--steps 100001", "--compression 0",
+                            "--compression 1.5", "--steps x"}) {
+    const std::string line = std::string("frames --suite tiny.json --out frames.json ") + flags;
+    const Outcome o = tcsb(line);
+    EXPECT_EQ(o.exit_code, 2) << line;
+    EXPECT_EQ(count_lines(o.err), 1) << line << ": " << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "frames.json")) << line;
+  }
+}
+
 }  // namespace

@@ -1,0 +1,80 @@
+// `tcsb frames`: the paper's Figure 6 as data — plain Bullet and TC-SB of one net in lockstep, both recorded at a
+// few steps (positions, the TC-SB surface reconstructed at full resolution, TC-SB's links with their blend roles).
+// scripts/plot_figure6.py draws it. Nothing is timed.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <iostream>
+
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "cli/run_support.h"
+#include "harness/figure_frames.h"
+#include "report/frames_json.h"
+
+namespace tcsb::cli {
+
+namespace {
+
+/// The suite's net called `name`; the last (largest in the bundled suites) when `name` is empty.
+std::size_t net_index(const Suite& suite, const std::string& name) {
+  if (suite.nets.empty()) throw UsageError("--suite: the suite has no nets");
+  if (name.empty()) return suite.nets.size() - 1;
+  for (std::size_t i = 0; i < suite.nets.size(); ++i) {
+    if (suite.nets[i].name == name) return i;
+  }
+  std::string known;
+  for (const NetSpec& n : suite.nets) known += (known.empty() ? "" : ", ") + n.name;
+  throw UsageError("--net: the suite has no net \"" + name + "\" (it has: " + known + ")");
+}
+
+/// The TC-SB node budget: --compression, else the suite's smallest target.
+double compression_of(const Suite& suite, const std::optional<double>& given) {
+  if (given) {
+    if (!(*given > 0 && *given <= 1)) throw UsageError("--compression: must be in (0, 1], got " + std::to_string(*given));
+    return *given;
+  }
+  return suite.compression.empty() ? 1.0 : *std::min_element(suite.compression.begin(), suite.compression.end());
+}
+
+void check_steps(const std::vector<int>& steps) {
+  if (steps.empty()) throw UsageError("--steps: give at least one step");
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (steps[i] < 0 || steps[i] > kMaxFrameStep)
+      throw UsageError("--steps: each step must be from 0 to " + std::to_string(kMaxFrameStep) + ", got " +
+                       std::to_string(steps[i]));
+    if (i > 0 && steps[i] <= steps[i - 1]) throw UsageError("--steps: steps must be given in increasing order");
+  }
+}
+
+}  // namespace
+
+CLI::App* add_frames_command(CLI::App& app, FramesArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "frames", "Record plain Bullet and TC-SB side by side at a few steps (the paper's Figure 6) as JSON");
+  cmd->add_option("--suite", args.suite, "Suite whose net, solver and feedback settings to use")->capture_default_str();
+  cmd->add_option("--net", args.net, "Net of the suite (default: its last)");
+  cmd->add_option("--compression", args.compression,
+                  "TC-SB node budget as a fraction of the net's nodes (default: the suite's smallest target)");
+  cmd->add_option("--steps", args.steps, "Steps after which both bodies are recorded, increasing")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--out", args.out, "Write to FILE (atomically) instead of stdout");
+  return cmd;
+}
+
+int frames_command(const FramesArgs& args) {
+  check_out_path(args.out);
+  check_steps(args.steps);
+  const Suite suite = parse_suite(resolve_suite(args.suite));
+  const std::size_t net = net_index(suite, args.net);
+  const double compression = compression_of(suite, args.compression);
+  const FigureFrames frames = record_figure_frames(suite, net, compression, args.steps);
+  if (frames.diverged_step) {
+    print_warning("net " + frames.net + " diverged after step " + std::to_string(*frames.diverged_step) + " (" +
+                  frames.diverged_reason + "); the frames after it are missing");
+  }
+  return write_report(frames_json(suite, frames).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n",
+                      args.out);
+}
+
+}  // namespace tcsb::cli

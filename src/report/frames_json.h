@@ -1,0 +1,18 @@
+// The document `tcsb frames` writes: the paper's Figure 6 as data (harness/figure_frames.h), for
+// scripts/plot_figure6.py.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "harness/figure_frames.h"
+#include "harness/suite.h"
+
+namespace tcsb {
+
+/// {"tool", "suite", "net": {name, width, height}, "compression", "dt", "status", "diverged_step",
+/// "diverged_reason", "frames": [{step, interpolations, plain, tcsb_surface, tcsb_nodes, tcsb_links}]}. Points are
+/// [x, y, z] in metres rounded to 10 um (y up); plain and tcsb_surface hold one point per grid node, row-major;
+/// tcsb_links are [a, b, role] with a and b indices into tcsb_nodes and role a link_role_name().
+nlohmann::ordered_json frames_json(const Suite& suite, const FigureFrames& frames);
+
+}  // namespace tcsb
