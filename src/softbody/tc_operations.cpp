@@ -260,6 +260,7 @@ void TcSoftBody::end_refine(const Op& op) {
   const std::int64_t t0 = now_ns();
   const TreeId p = op.parent;
   const LodNode& pn = tree().node(p);
+  prefetch_link_removals(std::span<const TreeId>(&p, 1));
   while (incidence_[static_cast<std::size_t>(p)].size() > 0)  // faded-out links and tethers
     remove_link(incidence_[static_cast<std::size_t>(p)][0]);
   for (int i = 0; i < pn.child_count; ++i)
@@ -297,6 +298,7 @@ void TcSoftBody::end_coarse(const Op& op) {
   const std::int64_t t0 = now_ns();
   const TreeId p = op.parent;
   const LodNode& pn = tree().node(p);
+  prefetch_link_removals(std::span<const TreeId>(pn.children.data(), static_cast<std::size_t>(pn.child_count)));
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     while (incidence_[static_cast<std::size_t>(c)].size() > 0)  // faded-out, doomed and tether links

@@ -182,6 +182,10 @@ class TcSoftBody : public btSoftBody {
   /// Starts loading the cache lines an operation on the block of `id` will touch (tc_prefetch.cpp). No effect on
   /// results; O(degree). Does nothing in a build with the CMake option TCSB_OP_PREFETCH off.
   void prefetch_footprint(TreeId id) const;
+  /// Starts loading what removing the links incident to `ids` will touch beyond them: the other endpoints'
+  /// incidence lists, and the incidence lists of the links at the end of the array that the swap-with-last removals
+  /// will move (tc_prefetch.cpp). No effect on results; O(links removed).
+  void prefetch_link_removals(std::span<const TreeId> ids) const;
   void emit(OpKind kind, std::int64_t node_ns, std::int64_t link_ns);
   btVector3 place_child(TreeId parent, TreeId child, const btVector3& parent_x,
                         const Eigen::Matrix<double, 3, 2>& deformation) const;
