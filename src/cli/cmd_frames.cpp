@@ -3,7 +3,6 @@
 // scripts/plot_figure6.py draws it. Nothing is timed.
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <iostream>
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
