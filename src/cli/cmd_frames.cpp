@@ -9,6 +9,7 @@
 #include "cli/run_support.h"
 #include "harness/figure_frames.h"
 #include "report/frames_json.h"
+#include "report/json_report.h"
 
 namespace tcsb::cli {
 
@@ -28,10 +29,7 @@ std::size_t net_index(const Suite& suite, const std::string& name) {
 
 /// The TC-SB node budget: --compression, else the suite's smallest target.
 double compression_of(const Suite& suite, const std::optional<double>& given) {
-  if (given) {
-    if (!(*given > 0 && *given <= 1)) throw UsageError("--compression: must be in (0, 1], got " + std::to_string(*given));
-    return *given;
-  }
+  if (given) return checked_budget(*given);
   return suite.compression.empty() ? 1.0 : *std::min_element(suite.compression.begin(), suite.compression.end());
 }
 
@@ -72,8 +70,8 @@ int frames_command(const FramesArgs& args) {
     print_warning("net " + frames.net + " diverged after step " + std::to_string(*frames.diverged_step) + " (" +
                   frames.diverged_reason + "); the frames after it are missing");
   }
-  return write_report(frames_json(suite, frames).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n",
-                      args.out);
+  // On one line: about 200 000 numbers for an 81 x 81 net, which indented would be as many lines.
+  return write_report(json_text(frames_json(suite, frames), -1), args.out);
 }
 
 }  // namespace tcsb::cli

@@ -18,8 +18,7 @@ void apply_budget_overrides(const RunArgs& args, Suite& suite) {
     if (std::find(suite.methods.begin(), suite.methods.end(), Method::kTcsb) == suite.methods.end())
       throw UsageError("--compression: the suite runs no tcsb method");
     for (std::size_t i = 0; i < args.compression.size(); ++i) {
-      const double c = args.compression[i];
-      if (!(c > 0 && c <= 1)) throw UsageError("--compression: each budget must be in (0, 1], got " + std::to_string(c));
+      const double c = checked_budget(args.compression[i]);
       if (std::find(args.compression.begin(), args.compression.begin() + static_cast<std::ptrdiff_t>(i), c) !=
           args.compression.begin() + static_cast<std::ptrdiff_t>(i))
         throw UsageError("--compression: budget " + std::to_string(c) + " given twice");

@@ -33,6 +33,12 @@ void check_out_path(const std::string& out, const std::string& option) {
   if (!writable) throw UsageError(option + " " + out + ": cannot create files in directory " + dir.string());
 }
 
+double checked_budget(double compression) {
+  if (!(compression > 0 && compression <= 1))
+    throw UsageError("--compression: each budget must be in (0, 1], got " + std::to_string(compression));
+  return compression;
+}
+
 void add_repetitions_option(CLI::App& command, std::optional<int>& repetitions) {
   command.add_option("--repetitions", repetitions,
                      "Repetitions of every case, 1 to " + std::to_string(kMaxRepetitions) +

@@ -27,6 +27,9 @@ std::string known_formats();
 /// The output format called `name` (--format); throws UsageError listing the known ones when there is none.
 std::unique_ptr<ReportFormat> checked_format(const std::string& name);
 
+/// A TC-SB node budget given with --compression: returned when in (0, 1], else UsageError.
+double checked_budget(double compression);
+
 /// Options both `run` and `reproduce` take: --repetitions.
 void add_repetitions_option(CLI::App& command, std::optional<int>& repetitions);
 /// Applies --repetitions to the suite, within the bounds the suite file itself has (UsageError otherwise).

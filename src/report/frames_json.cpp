@@ -25,7 +25,7 @@ nlohmann::ordered_json points_json(const std::vector<Eigen::Vector3d>& points) {
 nlohmann::ordered_json frames_json(const Suite& suite, const FigureFrames& f) {
   nlohmann::ordered_json doc;
   doc["tool"] = {{"name", "tcsb"}, {"version", build_info::kVersion}, {"git_commit", build_info::kGitCommit}};
-  doc["suite"] = {{"name", suite.name}, {"path", suite.path.string()}, {"sha256", suite.sha256}};
+  doc["suite"] = suite_json(suite);
   doc["net"] = {{"name", f.net}, {"width", f.width}, {"height", f.height}};
   doc["compression"] = f.compression;
   doc["dt"] = suite.world.dt;

@@ -9,7 +9,7 @@
 
 namespace tcsb {
 
-/// {"tool", "suite", "net": {name, width, height}, "compression", "dt", "status", "diverged_step",
+/// {"tool", "suite" (suite_json), "net": {name, width, height}, "compression", "dt", "status", "diverged_step",
 /// "diverged_reason", "frames": [{step, interpolations, plain, tcsb_surface, tcsb_nodes, tcsb_links}]}. Points are
 /// [x, y, z] in metres rounded to 10 um (y up); plain and tcsb_surface hold one point per grid node, row-major;
 /// tcsb_links are [a, b, role] with a and b indices into tcsb_nodes and role a link_role_name().

@@ -21,6 +21,8 @@ ojson context_json(const RunResult& r) {
   return context;
 }
 
+}  // namespace
+
 ojson suite_json(const Suite& s) {
   ojson nets = ojson::array();
   for (const NetSpec& n : s.nets) {
@@ -66,6 +68,8 @@ ojson suite_json(const Suite& s) {
       {"compression", std::move(compression)},
   };
 }
+
+namespace {
 
 ojson summary_json(const Summary& s) {
   // An empty sample has no median: null, not a misleading 0 (the case's status says why).
@@ -217,8 +221,8 @@ ojson native_json(const RunResult& result) {
   return doc;
 }
 
-std::string json_text(const nlohmann::ordered_json& doc) {
-  return doc.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+std::string json_text(const nlohmann::ordered_json& doc, int indent) {
+  return doc.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 std::string NativeJsonFormat::render_native(const nlohmann::ordered_json& native) const { return json_text(native); }

@@ -27,9 +27,12 @@ nlohmann::ordered_json json_number(const std::optional<double>& value);
 /// An optional integer (a step, a count) as JSON: null when absent.
 nlohmann::ordered_json json_integer(const std::optional<int>& value);
 
-/// A JSON document as output text: indented by 2, newline-terminated; invalid UTF-8 in recorded strings (a host
-/// name, say) is replaced, not thrown on.
-std::string json_text(const nlohmann::ordered_json& doc);
+/// A JSON document as output text: indented by `indent` (-1: all on one line), newline-terminated; invalid UTF-8 in
+/// recorded strings (a host name, say) is replaced, not thrown on.
+std::string json_text(const nlohmann::ordered_json& doc, int indent = 2);
+
+/// The suite as run (after any command-line overrides): the `suite` block of every document tcsb writes.
+nlohmann::ordered_json suite_json(const Suite& suite);
 
 /// The whole run as the native JSON document (schema_version, tool, context, suite, cases, table1, table2,
 /// scaling, [fidelity, pareto, max_compression when the run has a fidelity pass], status, wall_s — in that order).
