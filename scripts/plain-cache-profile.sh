@@ -26,8 +26,6 @@ for net in paper["nets"]:
         s.pop(key)
     s["fidelity"] = dict(paper["fidelity"], enabled=False)
     json.dump(s, open(f"{out}/{net['name']}.json", "w"))
-    steps = paper["warmup_steps"] + paper["steps"]
-    print(net["name"], net["width"] * net["height"], steps, file=open(f"{out}/{net['name']}.nodes", "w"))
 EOF
 
 printf '%-6s %7s %14s %18s %18s\n' net nodes "instr/node-step" "LL reads/node-step" "LL writes/node-step"
@@ -36,9 +34,11 @@ for suite in "$dir"/*.json; do
   valgrind --tool=callgrind --cache-sim=yes --D1=49152,12,64 --LL=2097152,16,64 \
     --toggle-collect='*StockBody::step*' --callgrind-out-file="$dir/$name.out" \
     "$build/tcsb" run "$suite" --quiet --out "$dir/$name.result.json" >/dev/null 2>&1
-  python3 - "$dir/$name.out" $(cat "$dir/$name.nodes") <<'EOF'
-import sys
-path, name, nodes, steps = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
+  python3 - "$dir/$name.out" "$suite" <<'EOF'
+import json, sys
+path, suite = sys.argv[1], json.load(open(sys.argv[2]))
+net = suite["nets"][0]
+name, nodes, steps = net["name"], net["width"] * net["height"], suite["warmup_steps"] + suite["steps"]
 events = totals = None
 for line in open(path):
     if line.startswith("events:"):
