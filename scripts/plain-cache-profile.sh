@@ -16,18 +16,7 @@ dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 
 # One suite per net: the paper suite narrowed to plain Bullet on that net.
-python3 - "$dir" <<'EOF'
-import json, sys
-out = sys.argv[1]
-paper = json.load(open("suites/paper.json"))
-for net in paper["nets"]:
-    s = dict(paper, name=f"plain-{net['name']}", methods=["plain"], repetitions=1, nets=[net])
-    for key in ("compression", "feedback", "tcsb"):
-        s.pop(key)
-    s["fidelity"] = dict(paper["fidelity"], enabled=False)
-    json.dump(s, open(f"{out}/{net['name']}.json", "w"))
-EOF
-
+python3 scripts/plain_paper_suites.py "$dir"
 printf '%-6s %7s %14s %18s %18s\n' net nodes "instr/node-step" "LL reads/node-step" "LL writes/node-step"
 for suite in "$dir"/*.json; do
   name=$(basename "$suite" .json)

@@ -6,7 +6,8 @@
 #     (plain only, the suite's 400 + 120 steps, 1 repetition)
 #  2. TC-SB at 75 % and 30 %: instructions and cache lines fetched from beyond a simulated 2 MiB cache per
 #     operation, between real steps (200 + 60 steps, 1 repetition, synchronous feedback so one thread does it all).
-# The suites are copies of suites/paper.json narrowed as said, written to a temporary directory.
+# The suites are copies of suites/paper.json narrowed as said (the plain ones by scripts/plain_paper_suites.py),
+# written to a temporary directory.
 # Usage: bash scripts/profile-paper-nets.sh [build-dir]   (needs valgrind; takes about 10 minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,32 +16,25 @@ command -v valgrind >/dev/null || { echo "profile-paper-nets: valgrind is not in
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 
+python3 scripts/plain_paper_suites.py "$dir" n45 n81
 python3 - "$dir" <<'EOF'
 import json, sys
 out = sys.argv[1]
 paper = json.load(open("suites/paper.json"))
-for width in (45, 81):
-    s = dict(paper, name=f"plain{width}", methods=["plain"], repetitions=1,
-             nets=[n for n in paper["nets"] if n["width"] == width])
-    for key in ("compression", "feedback", "tcsb"):
-        s.pop(key)
-    s["fidelity"] = dict(paper["fidelity"], enabled=False)
-    json.dump(s, open(f"{out}/plain{width}.json", "w"))
 t = dict(paper, name="tcsb-ops", methods=["tcsb"], compression=[0.75, 0.3], repetitions=1, steps=200,
          warmup_steps=60, nets=[n for n in paper["nets"] if n["width"] in (45, 81)])
 t["feedback"] = dict(paper["feedback"], parallel=False)
 t["fidelity"] = dict(paper["fidelity"], enabled=False)
 json.dump(t, open(f"{out}/tcsb-ops.json", "w"))
 EOF
-
 inclusive() {  # inclusive instructions of the functions whose names match $2, in callgrind file $1
   callgrind_annotate --inclusive=yes --threshold=100 "$1" 2>/dev/null | grep -E "$2" | head -3
 }
-for width in 45 81; do
-  valgrind --tool=callgrind --callgrind-out-file="$dir/plain$width.out" \
-    "$build/tcsb" run "$dir/plain$width.json" --quiet --out "$dir/plain$width.result.json" >/dev/null 2>&1
-  echo "plain Bullet, n$width (instructions, inclusive):"
-  inclusive "$dir/plain$width.out" 'PROGRAM TOTALS|btSoftBody::predictMotion|btDbvt::update\(btDbvtNode\*, btDbvtAabbMm&\) '
+for net in n45 n81; do
+  valgrind --tool=callgrind --callgrind-out-file="$dir/$net.out" \
+    "$build/tcsb" run "$dir/$net.json" --quiet --out "$dir/$net.result.json" >/dev/null 2>&1
+  echo "plain Bullet, $net (instructions, inclusive):"
+  inclusive "$dir/$net.out" 'PROGRAM TOTALS|btSoftBody::predictMotion|btDbvt::update\(btDbvtNode\*, btDbvtAabbMm&\) '
 done
 
 valgrind --tool=callgrind --cache-sim=yes --D1=49152,12,64 --LL=2097152,16,64 \
