@@ -22,7 +22,7 @@ import json, sys
 out = sys.argv[1]
 paper = json.load(open("suites/paper.json"))
 t = dict(paper, name="tcsb-ops", methods=["tcsb"], compression=[0.75, 0.3], repetitions=1, steps=200,
-         warmup_steps=60, nets=[n for n in paper["nets"] if n["width"] in (45, 81)])
+         warmup_steps=60, nets=[n for n in paper["nets"] if n["name"] in ("n45", "n81")])
 t["feedback"] = dict(paper["feedback"], parallel=False)
 t["fidelity"] = dict(paper["fidelity"], enabled=False)
 json.dump(t, open(f"{out}/tcsb-ops.json", "w"))
