@@ -13,7 +13,8 @@ def main() -> None:
     nets = [n for n in paper["nets"] if not wanted or n["name"] in wanted]
     missing = set(wanted) - {n["name"] for n in nets}
     if missing:
-        sys.exit(f"plain_paper_suites: suites/paper.json has no net named {', '.join(sorted(missing))}")
+        print(f"plain_paper_suites: suites/paper.json has no net named {', '.join(sorted(missing))}", file=sys.stderr)
+        sys.exit(2)  # bad input, as everywhere in the project; nothing written
     for net in nets:
         suite = dict(paper, name=f"plain-{net['name']}", methods=["plain"], repetitions=1, nets=[net])
         for key in ("compression", "feedback", "tcsb"):
