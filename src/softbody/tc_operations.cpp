@@ -77,15 +77,16 @@ Eigen::Matrix<double, 3, 2> TcSoftBody::local_affine_fit(TreeId id) const {
   // the node's neighbours: minimises sum |(x_n - x_p) - F (r_n - r_p)|^2.
   Eigen::Matrix<double, 3, 2> f;
   f << 1, 0, 0, 0, 0, 1;
-  const btVector3& xp = m_nodes[bullet_[static_cast<std::size_t>(id)]].m_x;
-  const btVector3& rp = rest_[static_cast<std::size_t>(id)];
+  const btVector3& xp = m_nodes[record(id).bullet].m_x;
+  const btVector3 rp = record(id).rest_position();
   Eigen::Matrix2d rr = Eigen::Matrix2d::Zero();
   Eigen::Matrix<double, 3, 2> xr = Eigen::Matrix<double, 3, 2>::Zero();
   for (std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
     const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
     const TreeId n = meta.a == id ? meta.b : meta.a;
-    const btVector3 dr = rest_[static_cast<std::size_t>(n)] - rp;
-    const btVector3 dx = m_nodes[bullet_[static_cast<std::size_t>(n)]].m_x - xp;
+    const NodeRecord& rn = record(n);
+    const btVector3 dr = rn.rest_position() - rp;
+    const btVector3 dx = m_nodes[rn.bullet].m_x - xp;
     const Eigen::Vector2d r(dr.x(), dr.z());
     rr += r * r.transpose();
     xr += to_eigen(dx) * r.transpose();
@@ -98,8 +99,8 @@ Eigen::Matrix<double, 3, 2> TcSoftBody::local_affine_fit(TreeId id) const {
 
 btVector3 TcSoftBody::place_child(TreeId parent, TreeId child, const btVector3& parent_x,
                                   const Eigen::Matrix<double, 3, 2>& deformation) const {
-  if (tree().node(child).pinned()) return rest_[static_cast<std::size_t>(child)];  // corners never move
-  const btVector3 d = rest_[static_cast<std::size_t>(child)] - rest_[static_cast<std::size_t>(parent)];
+  if (tree().node(child).pinned()) return record(child).rest_position();  // corners never move
+  const btVector3 d = record(child).rest_position() - record(parent).rest_position();
   if (settings_.placement == Placement::kRigid) return parent_x + d;
   return to_bullet(to_eigen(parent_x) + deformation * Eigen::Vector2d(d.x(), d.z()));
 }
@@ -129,21 +130,21 @@ void TcSoftBody::begin_refine(TreeId p) {
   prefetch_footprint(p);
   const LodNode& pn = tree().node(p);
   const std::int32_t op = new_op(OpKind::kRefine, p);
-  const Node& parent_node = m_nodes[bullet_[static_cast<std::size_t>(p)]];
+  const Node& parent_node = m_nodes[record(p).bullet];
   const btVector3 xp = parent_node.m_x, vp = parent_node.m_v;
   const Eigen::Matrix<double, 3, 2> affine = deformation(p);
   // Children take the parent's velocity and half their mass; the parent keeps the other half. Total mass and
   // linear momentum are unchanged.
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
-    sim_mass_[static_cast<std::size_t>(c)] = 0.5 * tree().node(c).mass;
+    record(c).sim_mass = 0.5 * tree().node(c).mass;
     add_node(c, place_child(p, c, xp, affine), vp, p);
     state_[static_cast<std::size_t>(c)] = CutState::kArriving;
-    op_of_[static_cast<std::size_t>(c)] = op;
+    record(c).op = op;
   }
   set_simulated_mass(p, 0.5 * pn.mass);
   state_[static_cast<std::size_t>(p)] = CutState::kLeaving;
-  op_of_[static_cast<std::size_t>(p)] = op;
+  record(p).op = op;
   committed_count_ += pn.child_count - 1;
   const std::int64_t t1 = now_ns();
 
@@ -180,21 +181,21 @@ void TcSoftBody::begin_coarse(TreeId p) {
   Eigen::Vector3d weighted_x = Eigen::Vector3d::Zero(), momentum = Eigen::Vector3d::Zero();
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
-    const Node& n = m_nodes[bullet_[static_cast<std::size_t>(c)]];
+    const Node& n = m_nodes[record(c).bullet];
     const double m = tree().node(c).mass;
     weighted_x += m * to_eigen(n.m_x);
     momentum += m * to_eigen(n.m_v);
   }
-  const btVector3 xp = pn.pinned() ? rest_[static_cast<std::size_t>(p)] : to_bullet(weighted_x / pn.mass);
-  sim_mass_[static_cast<std::size_t>(p)] = 0.5 * pn.mass;
+  const btVector3 xp = pn.pinned() ? record(p).rest_position() : to_bullet(weighted_x / pn.mass);
+  record(p).sim_mass = 0.5 * pn.mass;
   add_node(p, xp, to_bullet(momentum / pn.mass), pn.children[0]);
   state_[static_cast<std::size_t>(p)] = CutState::kArriving;
-  op_of_[static_cast<std::size_t>(p)] = op;
+  record(p).op = op;
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     set_simulated_mass(c, 0.5 * tree().node(c).mass);
     state_[static_cast<std::size_t>(c)] = CutState::kLeaving;
-    op_of_[static_cast<std::size_t>(c)] = op;
+    record(c).op = op;
   }
   committed_count_ += 1 - pn.child_count;
   const std::int64_t t1 = now_ns();
@@ -271,22 +272,22 @@ void TcSoftBody::end_refine(const Op& op) {
   const std::int64_t t1 = now_ns();
 
   // The parent's half of the mass and its momentum go to the children in proportion to their masses.
-  const Eigen::Vector3d vp = to_eigen(m_nodes[bullet_[static_cast<std::size_t>(p)]].m_v);
-  const double parent_share = sim_mass_[static_cast<std::size_t>(p)] / pn.mass;
+  const Eigen::Vector3d vp = to_eigen(m_nodes[record(p).bullet].m_v);
+  const double parent_share = record(p).sim_mass / pn.mass;
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     const double full = tree().node(c).mass;
-    Node& n = m_nodes[bullet_[static_cast<std::size_t>(c)]];
+    Node& n = m_nodes[record(c).bullet];
     if (!tree().node(c).pinned())
-      n.m_v = to_bullet((sim_mass_[static_cast<std::size_t>(c)] * to_eigen(n.m_v) + parent_share * full * vp) / full);
+      n.m_v = to_bullet((record(c).sim_mass * to_eigen(n.m_v) + parent_share * full * vp) / full);
     set_simulated_mass(c, full);
     state_[static_cast<std::size_t>(c)] = CutState::kActive;
-    op_of_[static_cast<std::size_t>(c)] = -1;
+    record(c).op = -1;
   }
   remove_node(p);
-  sim_mass_[static_cast<std::size_t>(p)] = 0;
+  record(p).sim_mass = 0;
   state_[static_cast<std::size_t>(p)] = CutState::kOff;
-  op_of_[static_cast<std::size_t>(p)] = -1;
+  record(p).op = -1;
   const std::int64_t t2 = now_ns();
 
   for (int i = 0; i < pn.child_count; ++i) refresh_incident_constants(pn.children[static_cast<std::size_t>(i)]);
@@ -311,22 +312,22 @@ void TcSoftBody::end_coarse(const Op& op) {
   const std::int64_t t1 = now_ns();
 
   // The children's halves of the mass and their momentum go to the parent.
-  Node& parent_node = m_nodes[bullet_[static_cast<std::size_t>(p)]];
-  Eigen::Vector3d momentum = sim_mass_[static_cast<std::size_t>(p)] * to_eigen(parent_node.m_v);
+  Node& parent_node = m_nodes[record(p).bullet];
+  Eigen::Vector3d momentum = record(p).sim_mass * to_eigen(parent_node.m_v);
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
-    momentum += sim_mass_[static_cast<std::size_t>(c)] * to_eigen(m_nodes[bullet_[static_cast<std::size_t>(c)]].m_v);
+    momentum += record(c).sim_mass * to_eigen(m_nodes[record(c).bullet].m_v);
   }
   if (!pn.pinned()) parent_node.m_v = to_bullet(momentum / pn.mass);
   set_simulated_mass(p, pn.mass);
   state_[static_cast<std::size_t>(p)] = CutState::kActive;
-  op_of_[static_cast<std::size_t>(p)] = -1;
+  record(p).op = -1;
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     remove_node(c);
-    sim_mass_[static_cast<std::size_t>(c)] = 0;
+    record(c).sim_mass = 0;
     state_[static_cast<std::size_t>(c)] = CutState::kOff;
-    op_of_[static_cast<std::size_t>(c)] = -1;
+    record(c).op = -1;
   }
   const std::int64_t t2 = now_ns();
 

@@ -65,16 +65,15 @@ void TcSoftBody::prefetch_footprint(TreeId id) const {
     const auto x = static_cast<std::size_t>(block[i]);
     prefetch_object(&tree().node(block[i]));
     prefetch(&incidence_[x]);  // one cache line each
+    prefetch(&record_[x]);     // one cache line each
     prefetch(&bullet_[x]);
-    prefetch(&rest_[x]);
-    prefetch(&sim_mass_[x]);
-    prefetch(&op_of_[x]);
+    prefetch(&state_[x]);
   }
   // Wave 2: the block's simulated Bullet nodes, and their links (Bullet's and ours).
   for (int i = 0; i < count; ++i) {
-    const auto x = static_cast<std::size_t>(block[i]);
-    if (bullet_[x] >= 0) prefetch_node(m_nodes[bullet_[x]]);
-    for (std::int32_t li : incidence_[x]) {
+    const NodeRecord& r = record(block[i]);
+    if (r.bullet >= 0) prefetch_node(m_nodes[r.bullet]);
+    for (std::int32_t li : incidence_[static_cast<std::size_t>(block[i])]) {
       prefetch(&link_meta_[static_cast<std::size_t>(li)]);
       prefetch_object(&m_links[li]);
     }
@@ -82,28 +81,28 @@ void TcSoftBody::prefetch_footprint(TreeId id) const {
   // Wave 3: the block's DBVT leaves (a begin operation inserts the new leaves beside them), and the neighbours at
   // the other end of the links: their tree-side records.
   for (int i = 0; i < count; ++i) {
-    const auto x = static_cast<std::size_t>(block[i]);
-    if (bullet_[x] >= 0) prefetch(m_nodes[bullet_[x]].m_leaf);
+    const NodeRecord& r = record(block[i]);
+    if (r.bullet >= 0) prefetch(m_nodes[r.bullet].m_leaf);
   }
   for (int i = 0; i < count; ++i)
     for (std::int32_t li : incidence_[static_cast<std::size_t>(block[i])]) {
       const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
       const auto n = static_cast<std::size_t>(meta.a == block[i] ? meta.b : meta.a);
       prefetch(&incidence_[n]);
-      prefetch(&bullet_[n]);
-      prefetch(&rest_[n]);
+      prefetch(&record_[n]);
     }
-  // Wave 4: the leaves' parents, and the neighbours' Bullet nodes.
+  // Wave 4: the leaves' parents; and when a refine will fit the local deformation, the neighbours' positions (the
+  // link constants take the neighbours' inverse masses from their records, so nothing else of their Bullet nodes).
   for (int i = 0; i < count; ++i) {
-    const auto x = static_cast<std::size_t>(block[i]);
-    if (bullet_[x] >= 0) prefetch(m_nodes[bullet_[x]].m_leaf->parent);
+    const NodeRecord& r = record(block[i]);
+    if (r.bullet >= 0) prefetch(m_nodes[r.bullet].m_leaf->parent);
   }
-  for (int i = 0; i < count; ++i)
-    for (std::int32_t li : incidence_[static_cast<std::size_t>(block[i])]) {
-      const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
-      const auto n = static_cast<std::size_t>(meta.a == block[i] ? meta.b : meta.a);
-      if (bullet_[n] >= 0) prefetch_node(m_nodes[bullet_[n]]);
-    }
+  if (record(id).bullet < 0 || settings_.placement == Placement::kRigid) return;
+  for (std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
+    const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
+    const int n = record(meta.a == id ? meta.b : meta.a).bullet;
+    if (n >= 0) prefetch(&m_nodes[n].m_x);
+  }
 }
 
 void TcSoftBody::prefetch_link_removals(std::span<const TreeId> ids) const {

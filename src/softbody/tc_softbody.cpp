@@ -49,20 +49,20 @@ TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, con
   state_.assign(tree_size, CutState::kOff);
   bullet_.assign(tree_size, -1);
   incidence_.assign(tree_size, IncidenceList{});
-  sim_mass_.assign(tree_size, 0.0);
-  op_of_.assign(tree_size, -1);
-  rest_.resize(tree_size);
+  record_.assign(tree_size, NodeRecord{});
   for (std::size_t id = 0; id < tree_size; ++id) {
-    const Eigen::Vector3d& r = lod.nodes()[id].rest;
-    rest_[id] = to_bullet(r);
+    const btVector3 r = to_bullet(lod.nodes()[id].rest);
+    for (int k = 0; k < 3; ++k) record_[id].rest[k] = r[k];
   }
   tree_of_.reserve(tree_size);  // one entry per simulated node: at most every tree node at once
   tree_of_.resize(leaves);
   for (std::size_t leaf = 0; leaf < leaves; ++leaf) {
     state_[leaf] = CutState::kActive;
     bullet_[leaf] = static_cast<std::int32_t>(leaf);
+    record_[leaf].bullet = static_cast<std::int32_t>(leaf);
+    record_[leaf].inv_mass = m_nodes[static_cast<int>(leaf)].m_im;
     tree_of_[leaf] = static_cast<TreeId>(leaf);
-    sim_mass_[leaf] = lod.nodes()[leaf].mass;
+    record_[leaf].sim_mass = lod.nodes()[leaf].mass;
     total_mass_ += lod.nodes()[leaf].mass;
   }
   link_meta_.reserve(static_cast<std::size_t>(m_links.capacity()));
@@ -103,18 +103,19 @@ int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, Tree
   added.m_x = x;
   added.m_q = x;
   added.m_v = pinned ? btVector3(0, 0, 0) : v;
-  added.m_im = pinned ? btScalar(0) : static_cast<btScalar>(1.0 / sim_mass_[static_cast<std::size_t>(id)]);
+  NodeRecord& r = record(id);
+  r.inv_mass = added.m_im = inverse_mass(id, r.sim_mass);
   added.m_material = m_materials[0];
-  btDbvtNode* beside_leaf = m_nodes[bullet_[static_cast<std::size_t>(beside)]].m_leaf;
+  btDbvtNode* beside_leaf = m_nodes[record(beside).bullet].m_leaf;
   added.m_leaf = insert_leaf_beside(m_ndbvt, dbvt_nodes_, beside_leaf,
                                     btDbvtVolume::FromCR(x, getCollisionShape()->getMargin()), &added);
   tree_of_.push_back(id);
-  bullet_[static_cast<std::size_t>(id)] = index;
+  bullet_[static_cast<std::size_t>(id)] = r.bullet = index;
   return index;
 }
 
 void TcSoftBody::remove_node(TreeId id) {
-  const int k = bullet_[static_cast<std::size_t>(id)];
+  const int k = record(id).bullet;
   if (incidence_[static_cast<std::size_t>(id)].size() != 0)
     throw std::logic_error("TcSoftBody::remove_node: node still has links");
   remove_leaf_lazily(m_ndbvt, dbvt_nodes_, m_nodes[k].m_leaf);
@@ -132,17 +133,17 @@ void TcSoftBody::remove_node(TreeId id) {
       if (l.m_n[1] == from) l.m_n[1] = to;
     }
     tree_of_[static_cast<std::size_t>(k)] = moved;
-    bullet_[static_cast<std::size_t>(moved)] = k;
+    bullet_[static_cast<std::size_t>(moved)] = record(moved).bullet = k;
   }
   m_nodes.pop_back();
   tree_of_.pop_back();
-  bullet_[static_cast<std::size_t>(id)] = -1;
+  bullet_[static_cast<std::size_t>(id)] = record(id).bullet = -1;
 }
 
 btScalar TcSoftBody::rest_length(TreeId a, TreeId b) const {
   // The same float expression Bullet's resetLinkRestLengths evaluates at rest, so finest-level links match it bit
   // for bit.
-  return (rest_[static_cast<std::size_t>(a)] - rest_[static_cast<std::size_t>(b)]).length();
+  return (record(a).rest_position() - record(b).rest_position()).length();
 }
 
 int TcSoftBody::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
@@ -151,8 +152,8 @@ int TcSoftBody::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
   const int index = m_links.size() - 1;
   std::memset(static_cast<void*>(&l), 0, sizeof(Link));
   l.m_material = m_materials[0];
-  l.m_n[0] = &m_nodes[bullet_[static_cast<std::size_t>(a)]];
-  l.m_n[1] = &m_nodes[bullet_[static_cast<std::size_t>(b)]];
+  l.m_n[0] = &m_nodes[record(a).bullet];
+  l.m_n[1] = &m_nodes[record(b).bullet];
   l.m_rl = rest_length(a, b);
   l.m_c1 = l.m_rl * l.m_rl;
   link_meta_.push_back({a, b, role, op});
@@ -180,9 +181,13 @@ void TcSoftBody::remove_link(int link) {
 }
 
 void TcSoftBody::set_simulated_mass(TreeId id, double mass) {
-  sim_mass_[static_cast<std::size_t>(id)] = mass;
-  Node& n = m_nodes[bullet_[static_cast<std::size_t>(id)]];
-  n.m_im = tree().node(id).pinned() ? btScalar(0) : static_cast<btScalar>(1.0 / mass);
+  NodeRecord& r = record(id);
+  r.sim_mass = mass;
+  r.inv_mass = m_nodes[r.bullet].m_im = inverse_mass(id, mass);
+}
+
+btScalar TcSoftBody::inverse_mass(TreeId id, double mass) const {
+  return tree().node(id).pinned() ? btScalar(0) : static_cast<btScalar>(1.0 / mass);
 }
 
 double TcSoftBody::blend_alpha(const CutLink& meta) const {
@@ -194,10 +199,12 @@ double TcSoftBody::blend_alpha(const CutLink& meta) const {
 
 void TcSoftBody::refresh_link_constant(int link) {
   Link& l = m_links[link];
-  // Bullet's updateLinkConstants expression; a blend divides it by alpha, which scales the solver's correction
-  // by alpha without touching the rest length (notes §6a).
-  l.m_c0 = (l.m_n[0]->m_im + l.m_n[1]->m_im) / l.m_material->m_kLST;
-  const double alpha = blend_alpha(link_meta_[static_cast<std::size_t>(link)]);
+  const CutLink& meta = link_meta_[static_cast<std::size_t>(link)];
+  // Bullet's updateLinkConstants expression, (m_n[0]->m_im + m_n[1]->m_im) / kLST, with the inverse masses read
+  // from the records (equal to Bullet's, one line fewer per endpoint). A blend divides it by alpha, which scales the
+  // solver's correction by alpha without touching the rest length (notes §6a).
+  l.m_c0 = (record(meta.a).inv_mass + record(meta.b).inv_mass) / l.m_material->m_kLST;
+  const double alpha = blend_alpha(meta);
   if (alpha != 1.0) l.m_c0 = static_cast<btScalar>(l.m_c0 / alpha);
 }
 
@@ -210,14 +217,14 @@ Eigen::Vector3d TcSoftBody::linear_momentum() const {
   for (int i = 0; i < m_nodes.size(); ++i) {
     const TreeId id = tree_of_[static_cast<std::size_t>(i)];
     if (tree().node(id).pinned()) continue;
-    p += sim_mass_[static_cast<std::size_t>(id)] * to_eigen(m_nodes[i].m_v);
+    p += record(id).sim_mass * to_eigen(m_nodes[i].m_v);
   }
   return p;
 }
 
 double TcSoftBody::total_mass() const {
   double sum = 0;
-  for (TreeId id : tree_of_) sum += sim_mass_[static_cast<std::size_t>(id)];
+  for (TreeId id : tree_of_) sum += record(id).sim_mass;
   return sum;
 }
 

@@ -94,7 +94,7 @@ class TcSoftBody : public btSoftBody {
   /// In the committed (target) cut: active or arriving.
   bool committed(TreeId id) const { return state(id) == CutState::kActive || state(id) == CutState::kArriving; }
   /// Bullet node index of a tree node, or -1 when it is not simulated.
-  int bullet_index(TreeId id) const { return bullet_[static_cast<std::size_t>(id)]; }
+  int bullet_index(TreeId id) const { return record(id).bullet; }
   /// Tree node simulated by Bullet node `index`.
   TreeId tree_id(int index) const { return tree_of_[static_cast<std::size_t>(index)]; }
   const IncidenceList& incidence(TreeId id) const { return incidence_[static_cast<std::size_t>(id)]; }
@@ -107,7 +107,7 @@ class TcSoftBody : public btSoftBody {
   std::span<const CutLink> cut_links() const { return link_meta_; }
   LinkRole link_role(int link) const { return link_meta_[static_cast<std::size_t>(link)].role; }
   /// Mass the node carries now (half of its block's while an operation blends it), kg. Pinned nodes included.
-  double simulated_mass(TreeId id) const { return sim_mass_[static_cast<std::size_t>(id)]; }
+  double simulated_mass(TreeId id) const { return record(id).sim_mass; }
   int node_count() const { return m_nodes.size(); }
   int link_count() const { return m_links.size(); }
   /// Nodes of the committed cut (what the simulation converges to once blends end).
@@ -157,6 +157,24 @@ class TcSoftBody : public btSoftBody {
   double total_mass() const;
 
  private:
+  /// What the operations read and write of one tree node besides its state and incidence list, in 32 bytes: a node
+  /// costs them one cache line, where separate arrays (Bullet index, rest, carried mass, operation, and the inverse
+  /// mass in Bullet's node) cost five. Cache lines, not instructions, are what an operation's time grows with on a
+  /// large net (tc_prefetch.cpp).
+  struct alignas(32) NodeRecord {
+    btScalar rest[3] = {0, 0, 0};  ///< rest position, in Bullet's precision
+    /// Bullet's m_im of the node while simulated (0 when pinned), kept equal to it so that link constants are
+    /// computed from here instead of from a neighbour's Bullet node, which is one more line per neighbour.
+    btScalar inv_mass = 0;
+    std::int32_t op = -1;      ///< operation it is a subject of, or -1
+    /// Bullet index, or -1: the same as bullet_[id], which stays as a flat array for the feedback stage's readers
+    /// (CutView); validate() checks that the two agree.
+    std::int32_t bullet = -1;
+    double sim_mass = 0;       ///< carried mass while simulated, kg
+    btVector3 rest_position() const { return {rest[0], rest[1], rest[2]}; }
+  };
+  static_assert(sizeof(NodeRecord) == 32, "two records per cache line");
+
   struct Op {
     OpKind kind = OpKind::kRefine;  ///< kRefine or kCoarse
     TreeId parent = kNoTreeNode;    ///< the refined node, or the coarse's new node
@@ -170,6 +188,10 @@ class TcSoftBody : public btSoftBody {
   int add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op);
   void remove_link(int link);
   void set_simulated_mass(TreeId id, double mass);
+  NodeRecord& record(TreeId id) { return record_[static_cast<std::size_t>(id)]; }
+  const NodeRecord& record(TreeId id) const { return record_[static_cast<std::size_t>(id)]; }
+  /// Bullet's inverse mass for carrying `mass`: 0 when the node is pinned.
+  btScalar inverse_mass(TreeId id, double mass) const;
   void refresh_link_constant(int link);
   void refresh_incident_constants(TreeId id);
   double blend_alpha(const CutLink& meta) const;
@@ -195,13 +217,11 @@ class TcSoftBody : public btSoftBody {
   double total_mass_ = 0;
 
   std::vector<CutState> state_;           // per tree node
-  std::vector<std::int32_t> bullet_;      // per tree node: Bullet index or -1
+  std::vector<std::int32_t> bullet_;      // per tree node: Bullet index or -1 (as record_, for CutView's readers)
   std::vector<IncidenceList> incidence_;  // per tree node
-  std::vector<double> sim_mass_;          // per tree node: carried mass while simulated
-  std::vector<std::int32_t> op_of_;       // per tree node: operation it is a subject of, or -1
+  std::vector<NodeRecord> record_;        // per tree node
   std::vector<TreeId> tree_of_;           // per Bullet node
   std::vector<CutLink> link_meta_;       // per Bullet link
-  std::vector<btVector3> rest_;           // per tree node: rest position in Bullet's precision
   DbvtNodeCache dbvt_nodes_;              // spare nodes for the node DBVT's local edits
   std::vector<Op> ops_;                   // operation pool
   std::vector<std::int32_t> free_ops_;

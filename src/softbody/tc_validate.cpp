@@ -38,27 +38,31 @@ Validation TcSoftBody::validate() const {
       fail(name + ": tree id out of range");
       continue;
     }
-    if (bullet_[static_cast<std::size_t>(id)] != i) fail(name + ": bullet_ does not map back");
+    const NodeRecord& r = record(id);
+    if (r.bullet != i) fail(name + ": Bullet index does not map back");
     if (state(id) == CutState::kOff) fail(name + ": simulated but off the cut");
     if (n.m_leaf == nullptr || n.m_leaf->data != &n) fail(name + ": DBVT leaf missing or pointing elsewhere");
     if (!finite(n.m_x) || !finite(n.m_v)) fail(name + ": NaN or Inf position/velocity");
     const LodNode& t = lod.node(id);
-    const double m = sim_mass_[static_cast<std::size_t>(id)];
+    const double m = r.sim_mass;
     mass += m;
     if (t.pinned()) {
       if (n.m_im != 0) fail(name + ": pinned but has finite mass");
-      if ((n.m_x - rest_[static_cast<std::size_t>(id)]).length() > 1e-6 * extent) fail(name + ": pinned node moved");
+      if ((n.m_x - r.rest_position()).length() > 1e-6 * extent) fail(name + ": pinned node moved");
     } else if (!(m > 0) || std::abs(n.m_im * m - 1.0) > 1e-5) {
       fail(name + ": inverse mass does not match its carried mass");
     }
+    if (r.inv_mass != n.m_im) fail(name + ": the record's inverse mass differs from Bullet's");
     const double expected = (state(id) == CutState::kActive) ? t.mass : 0.5 * t.mass;
     if (std::abs(m - expected) > 1e-9 * t.mass) fail(name + ": carried mass is not its block's (or half of it)");
   }
   if (std::abs(mass - total_mass_) > 1e-6 * total_mass_)
     fail("total mass " + std::to_string(mass) + " differs from " + std::to_string(total_mass_));
-  for (std::size_t id = 0; id < tree_size; ++id)
+  for (std::size_t id = 0; id < tree_size; ++id) {
     if ((bullet_[id] >= 0) != (state_[id] != CutState::kOff))
       fail("tree " + std::to_string(id) + ": state and simulation disagree");
+    if (bullet_[id] != record_[id].bullet) fail("tree " + std::to_string(id) + ": the two Bullet indices disagree");
+  }
 
   // Links: pointers, metadata, constants, and incidence lists equal to the link set.
   if (static_cast<int>(link_meta_.size()) != m_links.size()) fail("link_meta_ size differs from Bullet's link count");
@@ -71,7 +75,7 @@ Validation TcSoftBody::validate() const {
     const Link& l = m_links[li];
     const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
     const std::string name = "link " + std::to_string(li);
-    const int ba = bullet_[static_cast<std::size_t>(meta.a)], bb = bullet_[static_cast<std::size_t>(meta.b)];
+    const int ba = record(meta.a).bullet, bb = record(meta.b).bullet;
     if (ba < 0 || bb < 0) {
       fail(name + ": endpoint not simulated");
       continue;
@@ -133,7 +137,7 @@ Validation TcSoftBody::validate() const {
   for (std::size_t slot = 0; slot < inflight_.size(); ++slot) {
     const Op& op = ops_[static_cast<std::size_t>(inflight_[slot])];
     if (op.slot != static_cast<std::int32_t>(slot)) fail("operation slot stale");
-    if (op_of_[static_cast<std::size_t>(op.parent)] != inflight_[slot]) fail("operation does not own its parent");
+    if (record(op.parent).op != inflight_[slot]) fail("operation does not own its parent");
     if (op.step < 0 || op.step >= settings_.blend_steps) fail("operation step out of range");
   }
   if (link_reallocations_ != 0) fail("the link array was reallocated during an operation");
