@@ -63,13 +63,13 @@ double lambert_factor(const CutSnapshot& snapshot, std::size_t i, const std::arr
   const LodTree& tree = *snapshot.cut.tree;
   const TreeId id = snapshot.cut.tree_of[i];
   const auto& xi = snapshot.position[i];
-  const Eigen::Vector3d ri = tree.node(id).rest;
+  const Eigen::Vector3d ri = tree.rest(id);
   double tx[3] = {0, 0, 0}, tz[3] = {0, 0, 0};
   for_each_cut_neighbour(
       tree, id, [&](TreeId n) { return snapshot.cut.committed(n); },
       [&](TreeId n) {
         const auto& xn = snapshot.position[static_cast<std::size_t>(snapshot.cut.index[static_cast<std::size_t>(n)])];
-        const Eigen::Vector3d dr = tree.node(n).rest - ri;
+        const Eigen::Vector3d dr = tree.rest(n) - ri;
         const bool along_x = std::abs(dr.x()) >= std::abs(dr.z());
         const double sign = along_x ? (dr.x() > 0 ? 1 : -1) : (dr.z() > 0 ? 1 : -1);
         double* t = along_x ? tx : tz;

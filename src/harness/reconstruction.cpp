@@ -17,7 +17,7 @@ void fill_block(const LodTree& tree, TreeId id, const Eigen::Vector3d& x, const 
   for (int gy = node.leaf_y0; gy < node.leaf_y1; ++gy) {
     for (int gx = node.leaf_x0; gx < node.leaf_x1; ++gx) {
       const TreeId leaf = gy * width + gx;
-      const Eigen::Vector3d d = tree.node(leaf).rest - node.rest;
+      const Eigen::Vector3d d = tree.rest(leaf) - tree.rest(id);
       leaves[static_cast<std::size_t>(leaf)] = x + f * Eigen::Vector2d(d.x(), d.z());
     }
   }

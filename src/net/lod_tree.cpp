@@ -21,6 +21,8 @@ LodTree::LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_re
     if (w == 1 && h == 1) break;
   }
   nodes_.resize(total);
+  centroid_.resize(total);
+  rest_.resize(total);
 
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
@@ -30,7 +32,8 @@ LodTree::LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_re
       n.gy = y;
       n.leaf_x0 = x, n.leaf_x1 = x + 1, n.leaf_y0 = y, n.leaf_y1 = y + 1;
       n.mass = leaf_mass[static_cast<std::size_t>(id)];
-      n.centroid = n.rest = leaf_rest[static_cast<std::size_t>(id)];
+      const auto i = static_cast<std::size_t>(id);
+      centroid_[i] = rest_[i] = leaf_rest[i];
       n.pinned_leaf_count = leaf_pinned[static_cast<std::size_t>(id)] ? 1 : 0;
       n.anchor_leaf = n.pinned_leaf_count ? id : kNoTreeNode;
     }
@@ -55,7 +58,7 @@ LodTree::LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_re
             child.parent = id;
             n.children[static_cast<std::size_t>(n.child_count++)] = c;
             n.mass += child.mass;
-            weighted += child.mass * child.centroid;
+            weighted += child.mass * centroid(c);
             pinned += child.pinned_leaf_count;
             if (child.anchor_leaf != kNoTreeNode) n.anchor_leaf = child.anchor_leaf;
             if (first) {
@@ -66,9 +69,10 @@ LodTree::LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_re
           }
         }
         n.pinned_leaf_count = static_cast<std::int8_t>(pinned > 100 ? 100 : pinned);
-        n.centroid = n.mass > 0 ? Eigen::Vector3d(weighted / n.mass) : Eigen::Vector3d::Zero();
+        const auto i = static_cast<std::size_t>(id);
+        centroid_[i] = n.mass > 0 ? Eigen::Vector3d(weighted / n.mass) : Eigen::Vector3d::Zero();
         if (n.pinned_leaf_count != 1) n.anchor_leaf = kNoTreeNode;
-        n.rest = n.anchor_leaf != kNoTreeNode ? nodes_[static_cast<std::size_t>(n.anchor_leaf)].rest : n.centroid;
+        rest_[i] = n.anchor_leaf != kNoTreeNode ? rest(n.anchor_leaf) : centroid_[i];
       }
     }
   }

@@ -16,9 +16,11 @@ namespace tcsb {
 using TreeId = std::int32_t;
 inline constexpr TreeId kNoTreeNode = -1;
 
-/// One node of the LOD tree. The fields the feedback stage reads for every node each evaluation come first, so
-/// they share a cache line.
-struct LodNode {
+/// One node of the LOD tree: what the TreeCut operations and the feedback stage read of it, in one cache line
+/// (its rest position and centroid are kept apart, LodTree::rest() and centroid()). An operation reads a block's
+/// node and its children's, scattered over two rows of a level; at 64 bytes each costs one line where 112 cost
+/// two, and lines are what an operation's time grows with on a large net (src/softbody/tc_prefetch.cpp).
+struct alignas(64) LodNode {
   std::int16_t level = 0;                  ///< 0 for leaves
   std::int8_t child_count = 0;             ///< 0 for leaves, 1..4 otherwise
   std::int8_t pinned_leaf_count = 0;       ///< pinned grid nodes inside this block
@@ -29,10 +31,6 @@ struct LodNode {
   std::int32_t leaf_x0 = 0, leaf_y0 = 0;   ///< covered leaves: [leaf_x0, leaf_x1) x [leaf_y0, leaf_y1)
   std::int32_t leaf_x1 = 0, leaf_y1 = 0;
   TreeId anchor_leaf = kNoTreeNode;        ///< the pinned leaf inside, when exactly one; else kNoTreeNode
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< mass-weighted centroid of the leaves' rest positions
-  /// Where the node rests when simulated: its centroid, except that a block holding one pinned leaf rests on
-  /// that leaf, so a pinned corner stays exactly fixed whatever level represents it.
-  Eigen::Vector3d rest = Eigen::Vector3d::Zero();
 
   bool is_leaf() const { return child_count == 0; }
   bool pinned() const { return pinned_leaf_count > 0; }
@@ -40,6 +38,7 @@ struct LodNode {
   /// share one simulated point).
   bool simulable() const { return pinned_leaf_count <= 1; }
 };
+static_assert(sizeof(LodNode) == 64, "one LOD node per cache line");
 
 /// The LOD hierarchy of one grid. Built once in O(N), immutable afterwards.
 class LodTree {
@@ -51,6 +50,11 @@ class LodTree {
   /// All nodes, leaves first, then level by level, row-major within a level.
   std::span<const LodNode> nodes() const { return nodes_; }
   const LodNode& node(TreeId id) const { return nodes_[static_cast<std::size_t>(id)]; }
+  /// Mass-weighted centroid of the node's leaves' rest positions.
+  const Eigen::Vector3d& centroid(TreeId id) const { return centroid_[static_cast<std::size_t>(id)]; }
+  /// Where the node rests when simulated: its centroid, except that a block holding one pinned leaf rests on that
+  /// leaf, so a pinned corner stays exactly fixed whatever level represents it.
+  const Eigen::Vector3d& rest(TreeId id) const { return rest_[static_cast<std::size_t>(id)]; }
   std::size_t size() const { return nodes_.size(); }
   std::size_t leaf_count() const { return static_cast<std::size_t>(level_width_[0]) * level_height_[0]; }
   int level_count() const { return static_cast<int>(level_width_.size()); }
@@ -68,6 +72,7 @@ class LodTree {
 
  private:
   std::vector<LodNode> nodes_;
+  std::vector<Eigen::Vector3d> centroid_, rest_;  // per node, beside nodes_: read only when building and measuring
   std::vector<int> level_width_, level_height_;
   std::vector<TreeId> level_offset_;
 };

@@ -51,7 +51,7 @@ TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, con
   incidence_.assign(tree_size, IncidenceList{});
   record_.assign(tree_size, NodeRecord{});
   for (std::size_t id = 0; id < tree_size; ++id) {
-    const btVector3 r = to_bullet(lod.nodes()[id].rest);
+    const btVector3 r = to_bullet(lod.rest(static_cast<TreeId>(id)));
     for (int k = 0; k < 3; ++k) record_[id].rest[k] = r[k];
   }
   tree_of_.reserve(tree_size);  // one entry per simulated node: at most every tree node at once

@@ -40,7 +40,7 @@ TEST(BudgetPolicy, ThresholdPreventsOscillationOnAConstantField) {
     take_snapshot(body, cut_view(body), false, step, snapshot);
     std::vector<float> s(snapshot.size());
     for (std::size_t i = 0; i < s.size(); ++i) {
-      const Eigen::Vector3d& r = net->lod().node(snapshot.cut.tree_of[i]).rest;
+      const Eigen::Vector3d& r = net->lod().rest(snapshot.cut.tree_of[i]);
       s[i] = static_cast<float>(std::exp(-((r.x() - 2) * (r.x() - 2) + (r.z() - 2) * (r.z() - 2))));
     }
     rank_candidates(snapshot, s, 2 * settings.max_ops_per_step, evaluation);

@@ -48,7 +48,7 @@ Eigen::Vector3d affine(const Eigen::Vector3d& rest) {
 /// Moves every simulated node onto the affine image of its own rest position.
 void deform_affinely(TcSoftBody& body) {
   for (int i = 0; i < body.node_count(); ++i) {
-    const Eigen::Vector3d p = affine(body.tree().node(body.tree_id(i)).rest);
+    const Eigen::Vector3d p = affine(body.tree().rest(body.tree_id(i)));
     body.m_nodes[i].m_x =
         btVector3(static_cast<btScalar>(p.x()), static_cast<btScalar>(p.y()), static_cast<btScalar>(p.z()));
   }
@@ -109,7 +109,7 @@ TEST(Reconstruction, ReproducesAnAffineFieldFromAnyCutWhateverThePlacement) {
     reconstruct_leaves(tc, leaves);
     double worst = 0;
     for (TreeId leaf = 0; leaf < static_cast<TreeId>(net->node_count()); ++leaf)
-      worst = std::max(worst, (leaves[static_cast<std::size_t>(leaf)] - affine(net->lod().node(leaf).rest)).norm());
+      worst = std::max(worst, (leaves[static_cast<std::size_t>(leaf)] - affine(net->lod().rest(leaf))).norm());
     EXPECT_LT(worst, 2e-5) << (placement == Placement::kRigid ? "rigid" : "affine");  // float positions
   }
 }
@@ -127,7 +127,7 @@ TEST(Reconstruction, CoversTheNetWhileOperationsBlend) {
   std::vector<Eigen::Vector3d> leaves;
   reconstruct_leaves(tc, leaves);  // throws if the committed cut failed to cover every leaf once
   for (TreeId leaf = 0; leaf < static_cast<TreeId>(net->node_count()); ++leaf)
-    ASSERT_LT((leaves[static_cast<std::size_t>(leaf)] - affine(net->lod().node(leaf).rest)).norm(), 2e-5) << leaf;
+    ASSERT_LT((leaves[static_cast<std::size_t>(leaf)] - affine(net->lod().rest(leaf))).norm(), 2e-5) << leaf;
 }
 
 /// The largest jump of the reconstructed surface over `boundaries` step boundaries of random operations on a body
@@ -185,7 +185,7 @@ TEST(Popping, CoarseningATwistedBlockJumpsByItsTwist) {
   // A saddle, y = 8 - 0.3 x z: inside a 2x2 block its twist is not affine (a bowl's curvature would be: the
   // block's four nodes sit at the same distance from its centre, so a bowl only shifts them all alike).
   for (int i = 0; i < tc.node_count(); ++i) {
-    const Eigen::Vector3d r = net->lod().node(tc.tree_id(i)).rest;
+    const Eigen::Vector3d r = net->lod().rest(tc.tree_id(i));
     tc.m_nodes[i].m_x.setY(static_cast<btScalar>(8.0 - 0.3 * r.x() * r.z()));
   }
   std::vector<Eigen::Vector3d> before, after;

@@ -229,7 +229,8 @@ TEST(LodTree, MassIsTheSumOfTheChildrenAndTheRootHoldsItAll) {
 
 TEST(LodTree, CentroidIsTheMassWeightedMeanOfTheBlocksLeaves) {
   for_each_tree([](const LodTree& tree, const Net& net) {
-    for (const LodNode& n : tree.nodes()) {
+    for (std::size_t id = 0; id < tree.size(); ++id) {
+      const LodNode& n = tree.node(static_cast<TreeId>(id));
       Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
       double mass = 0;
       for (int y = n.leaf_y0; y < n.leaf_y1; ++y)
@@ -239,7 +240,8 @@ TEST(LodTree, CentroidIsTheMassWeightedMeanOfTheBlocksLeaves) {
           mass += net.masses()[i];
         }
       const Eigen::Vector3d expected = weighted / mass;
-      ASSERT_LT((n.centroid - expected).norm(), 1e-9) << "level " << n.level << " (" << n.gx << "," << n.gy << ")";
+      ASSERT_LT((tree.centroid(static_cast<TreeId>(id)) - expected).norm(), 1e-9)
+          << "level " << n.level << " (" << n.gx << "," << n.gy << ")";
     }
   });
 }
@@ -248,13 +250,14 @@ TEST(LodTree, CentroidOfUniformBlockIsItsMidpoint) {
   // Uniform masses: the centroid of a block is the midpoint of its corner leaves. Independent of the weighting code.
   const auto net = make_net(33, 17);
   const LodTree& tree = net->lod();
-  for (const LodNode& n : tree.nodes()) {
+  for (std::size_t id = 0; id < tree.size(); ++id) {
+    const LodNode& n = tree.node(static_cast<TreeId>(id));
     const Eigen::Vector3d& a = net->rest_positions()[static_cast<std::size_t>(net->index(n.leaf_x0, n.leaf_y0))];
     const Eigen::Vector3d& b =
         net->rest_positions()[static_cast<std::size_t>(net->index(n.leaf_x1 - 1, n.leaf_y1 - 1))];
-    ASSERT_LT((n.centroid - 0.5 * (a + b)).norm(), 1e-9);
+    ASSERT_LT((tree.centroid(static_cast<TreeId>(id)) - 0.5 * (a + b)).norm(), 1e-9);
   }
-  EXPECT_LT(tree.node(tree.root()).centroid.head<1>().norm(), 1e-12);
+  EXPECT_LT(tree.centroid(tree.root()).head<1>().norm(), 1e-12);
 }
 
 TEST(LodTree, PinnedLeafCountAnchorAndRestFollowTheBlock) {
@@ -274,10 +277,11 @@ TEST(LodTree, PinnedLeafCountAnchorAndRestFollowTheBlock) {
       ASSERT_EQ(n.simulable(), pinned <= 1) << "node " << id;
       if (pinned == 1) {
         ASSERT_EQ(n.anchor_leaf, only) << "node " << id;
-        ASSERT_EQ(n.rest, net.rest_positions()[static_cast<std::size_t>(only)]) << "node " << id;
+        ASSERT_EQ(tree.rest(static_cast<TreeId>(id)), net.rest_positions()[static_cast<std::size_t>(only)])
+            << "node " << id;
       } else {
         ASSERT_EQ(n.anchor_leaf, kNoTreeNode) << "node " << id;
-        ASSERT_EQ(n.rest, n.centroid) << "node " << id;
+        ASSERT_EQ(tree.rest(static_cast<TreeId>(id)), tree.centroid(static_cast<TreeId>(id))) << "node " << id;
       }
     }
   });
@@ -303,14 +307,15 @@ TEST(LodTree, BlocksHoldingTwoCornersAreNotSimulable) {
     EXPECT_EQ(t.node(corner).pinned_leaf_count, 1) << "level " << l;
     EXPECT_TRUE(t.node(corner).simulable()) << "level " << l;
     EXPECT_EQ(t.node(corner).anchor_leaf, big->index(64, 64)) << "level " << l;
-    EXPECT_EQ(t.node(corner).rest, big->rest_positions()[static_cast<std::size_t>(big->index(64, 64))]);
+    EXPECT_EQ(t.rest(corner), big->rest_positions()[static_cast<std::size_t>(big->index(64, 64))]);
     EXPECT_EQ(t.node(corner).leaf_x1 - t.node(corner).leaf_x0, 1) << "level " << l;
     // The (0, 0) corner's blocks are full 2^l squares: they rest on the corner, away from their centroid.
-    const LodNode& low = t.node(t.at(l, 0, 0));
+    const TreeId low_id = t.at(l, 0, 0);
+    const LodNode& low = t.node(low_id);
     EXPECT_EQ(low.anchor_leaf, 0) << "level " << l;
-    EXPECT_EQ(low.rest, big->rest_positions()[0]) << "level " << l;
+    EXPECT_EQ(t.rest(low_id), big->rest_positions()[0]) << "level " << l;
     if (l > 0) {
-      EXPECT_NE(low.rest, low.centroid) << "level " << l;
+      EXPECT_NE(t.rest(low_id), t.centroid(low_id)) << "level " << l;
     }
   }
   EXPECT_EQ(t.node(t.root()).pinned_leaf_count, 4);
@@ -338,14 +343,15 @@ TEST(LodTree, ThinGridsDirectly) {
   for (int l = 0; l < tree.level_count(); ++l) EXPECT_EQ(tree.level_width(l), 1);
   EXPECT_EQ(tree.size(), 9u + 5 + 3 + 2 + 1);
   EXPECT_DOUBLE_EQ(tree.node(tree.root()).mass, 45.0);
-  EXPECT_NEAR(tree.node(tree.root()).centroid.z(), (0 * 1 + 1 * 2 + 2 * 3 + 3 * 4 + 4 * 5 + 5 * 6 + 6 * 7 + 7 * 8 + 8 * 9) / 45.0,
-              1e-12);
+  EXPECT_NEAR(tree.centroid(tree.root()).z(),
+              (0 * 1 + 1 * 2 + 2 * 3 + 3 * 4 + 4 * 5 + 5 * 6 + 6 * 7 + 7 * 8 + 8 * 9) / 45.0, 1e-12);
   EXPECT_EQ(tree.node(tree.root()).anchor_leaf, 0);
-  EXPECT_EQ(tree.node(tree.root()).rest, rest[0]);
-  const LodNode& l1 = tree.node(tree.at(1, 0, 1));  // leaves 2 and 3
+  EXPECT_EQ(tree.rest(tree.root()), rest[0]);
+  const TreeId l1_id = tree.at(1, 0, 1);  // leaves 2 and 3
+  const LodNode& l1 = tree.node(l1_id);
   EXPECT_EQ(l1.child_count, 2);
   EXPECT_DOUBLE_EQ(l1.mass, 3.0 + 4.0);
-  EXPECT_NEAR(l1.centroid.z(), (2 * 3.0 + 3 * 4.0) / 7.0, 1e-12);
+  EXPECT_NEAR(tree.centroid(l1_id).z(), (2 * 3.0 + 3 * 4.0) / 7.0, 1e-12);
   EXPECT_EQ(tree.at(0, 1, 0), kNoTreeNode);
 }
 

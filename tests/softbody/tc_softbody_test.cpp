@@ -146,7 +146,7 @@ TEST(TcSoftBody, FlatNetAtRestStaysAtRestThroughOperations) {
     double drift = 0;
     for (int i = 0; i < tc.node_count(); ++i) {
       const TreeId id = tc.tree_id(i);
-      const Eigen::Vector3d& rest = net->lod().node(id).rest;
+      const Eigen::Vector3d& rest = net->lod().rest(id);
       const btVector3& x = tc.m_nodes[i].m_x;
       drift = std::max(drift, (Eigen::Vector3d(x.x(), x.y(), x.z()) - rest).norm());
     }
