@@ -83,7 +83,7 @@ Eigen::Matrix<double, 3, 2> TcSoftBody::local_affine_fit(TreeId id) const {
   Eigen::Matrix<double, 3, 2> xr = Eigen::Matrix<double, 3, 2>::Zero();
   for (std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
     const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
-    const TreeId n = meta.a == id ? meta.b : meta.a;
+    const TreeId n = meta.other(id);
     const NodeRecord& rn = record(n);
     const btVector3 dr = rn.rest_position() - rp;
     const btVector3 dx = m_nodes[rn.bullet].m_x - xp;
@@ -204,7 +204,7 @@ void TcSoftBody::begin_coarse(TreeId p) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     for (std::int32_t li : incidence_[static_cast<std::size_t>(c)]) {
       CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
-      const TreeId other = meta.a == c ? meta.b : meta.a;
+      const TreeId other = meta.other(c);
       // Links among the children hold at full strength until the end; links to the outside fade out.
       meta.role = is_child(pn, other) ? LinkRole::kDoomed : LinkRole::kFadeOut;
       meta.op = op;

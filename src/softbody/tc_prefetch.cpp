@@ -100,7 +100,7 @@ void TcSoftBody::prefetch_footprint(TreeId id) const {
   for (int i = 0; i < count; ++i)
     for (std::int32_t li : incidence_[static_cast<std::size_t>(block[i])]) {
       const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
-      const auto n = static_cast<std::size_t>(meta.a == block[i] ? meta.b : meta.a);
+      const auto n = static_cast<std::size_t>(meta.other(block[i]));
       prefetch(&incidence_[n]);
       prefetch(&record_[n]);
     }
@@ -113,7 +113,7 @@ void TcSoftBody::prefetch_footprint(TreeId id) const {
   if (record(id).bullet < 0 || settings_.placement == Placement::kRigid) return;
   for (std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
     const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
-    const int n = record(meta.a == id ? meta.b : meta.a).bullet;
+    const int n = record(meta.other(id)).bullet;
     if (n >= 0) prefetch(&m_nodes[n].m_x);
   }
 }
@@ -124,7 +124,7 @@ void TcSoftBody::prefetch_link_removals(std::span<const TreeId> ids) const {
   for (const TreeId id : ids) {
     for (std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
       const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
-      prefetch(&incidence_[static_cast<std::size_t>(meta.a == id ? meta.b : meta.a)]);
+      prefetch(&incidence_[static_cast<std::size_t>(meta.other(id))]);
       // The removal overwrites the whole link; the begin operation and the blend touched only its constant's line.
       prefetch_object(&m_links[li]);
       ++removed;

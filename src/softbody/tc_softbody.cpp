@@ -58,8 +58,7 @@ TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, con
   tree_of_.resize(leaves);
   for (std::size_t leaf = 0; leaf < leaves; ++leaf) {
     state_[leaf] = CutState::kActive;
-    bullet_[leaf] = static_cast<std::int32_t>(leaf);
-    record_[leaf].bullet = static_cast<std::int32_t>(leaf);
+    set_bullet_index(static_cast<TreeId>(leaf), static_cast<std::int32_t>(leaf));
     record_[leaf].inv_mass = m_nodes[static_cast<int>(leaf)].m_im;
     tree_of_[leaf] = static_cast<TreeId>(leaf);
     record_[leaf].sim_mass = lod.nodes()[leaf].mass;
@@ -110,7 +109,7 @@ int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, Tree
   added.m_leaf = insert_leaf_beside(m_ndbvt, dbvt_nodes_, beside_leaf,
                                     btDbvtVolume::FromCR(x, getCollisionShape()->getMargin()), &added);
   tree_of_.push_back(id);
-  bullet_[static_cast<std::size_t>(id)] = r.bullet = index;
+  set_bullet_index(id, index);
   return index;
 }
 
@@ -133,11 +132,15 @@ void TcSoftBody::remove_node(TreeId id) {
       if (l.m_n[1] == from) l.m_n[1] = to;
     }
     tree_of_[static_cast<std::size_t>(k)] = moved;
-    bullet_[static_cast<std::size_t>(moved)] = record(moved).bullet = k;
+    set_bullet_index(moved, k);
   }
   m_nodes.pop_back();
   tree_of_.pop_back();
-  bullet_[static_cast<std::size_t>(id)] = record(id).bullet = -1;
+  set_bullet_index(id, -1);
+}
+
+void TcSoftBody::set_bullet_index(TreeId id, std::int32_t index) {
+  bullet_[static_cast<std::size_t>(id)] = record(id).bullet = index;
 }
 
 btScalar TcSoftBody::rest_length(TreeId a, TreeId b) const {

@@ -63,6 +63,8 @@ struct CutLink {
   std::int32_t op = -1;                     ///< owning operation while not steady
   /// Links that join two nodes of the committed cut as neighbours (not the old cut's, not tethers).
   bool joins_committed() const { return role == LinkRole::kSteady || role == LinkRole::kFadeIn; }
+  /// The endpoint that is not `end` (one of the two).
+  TreeId other(TreeId end) const { return a == end ? b : a; }
 };
 
 /// Why an operation may not begin now.
@@ -188,6 +190,8 @@ class TcSoftBody : public btSoftBody {
   int add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op);
   void remove_link(int link);
   void set_simulated_mass(TreeId id, double mass);
+  /// Writes a tree node's Bullet index (or -1) to its record and to the bullet_ mirror together.
+  void set_bullet_index(TreeId id, std::int32_t index);
   NodeRecord& record(TreeId id) { return record_[static_cast<std::size_t>(id)]; }
   const NodeRecord& record(TreeId id) const { return record_[static_cast<std::size_t>(id)]; }
   /// Bullet's inverse mass for carrying `mass`: 0 when the node is pinned.
