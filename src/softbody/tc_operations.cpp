@@ -264,11 +264,7 @@ void TcSoftBody::end_refine(const Op& op) {
   prefetch_link_removals(std::span<const TreeId>(&p, 1));
   while (incidence_[static_cast<std::size_t>(p)].size() > 0)  // faded-out links and tethers
     remove_link(incidence_[static_cast<std::size_t>(p)][0]);
-  for (int i = 0; i < pn.child_count; ++i)
-    for (std::int32_t li : incidence_[static_cast<std::size_t>(pn.children[static_cast<std::size_t>(i)])]) {
-      CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
-      if (meta.role == LinkRole::kFadeIn) meta = {meta.a, meta.b, LinkRole::kSteady, -1};
-    }
+  for (int i = 0; i < pn.child_count; ++i) make_faded_in_links_steady(pn.children[static_cast<std::size_t>(i)]);
   const std::int64_t t1 = now_ns();
 
   // The parent's half of the mass and its momentum go to the children in proportion to their masses.
@@ -280,14 +276,9 @@ void TcSoftBody::end_refine(const Op& op) {
     Node& n = m_nodes[record(c).bullet];
     if (!tree().node(c).pinned())
       n.m_v = to_bullet((record(c).sim_mass * to_eigen(n.m_v) + parent_share * full * vp) / full);
-    set_simulated_mass(c, full);
-    state_[static_cast<std::size_t>(c)] = CutState::kActive;
-    record(c).op = -1;
+    settle_in_cut(c, full);
   }
-  remove_node(p);
-  record(p).sim_mass = 0;
-  state_[static_cast<std::size_t>(p)] = CutState::kOff;
-  record(p).op = -1;
+  retire_from_cut(p);
   const std::int64_t t2 = now_ns();
 
   for (int i = 0; i < pn.child_count; ++i) refresh_incident_constants(pn.children[static_cast<std::size_t>(i)]);
@@ -305,10 +296,7 @@ void TcSoftBody::end_coarse(const Op& op) {
     while (incidence_[static_cast<std::size_t>(c)].size() > 0)  // faded-out, doomed and tether links
       remove_link(incidence_[static_cast<std::size_t>(c)][0]);
   }
-  for (std::int32_t li : incidence_[static_cast<std::size_t>(p)]) {
-    CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
-    if (meta.role == LinkRole::kFadeIn) meta = {meta.a, meta.b, LinkRole::kSteady, -1};
-  }
+  make_faded_in_links_steady(p);
   const std::int64_t t1 = now_ns();
 
   // The children's halves of the mass and their momentum go to the parent.
@@ -319,21 +307,33 @@ void TcSoftBody::end_coarse(const Op& op) {
     momentum += record(c).sim_mass * to_eigen(m_nodes[record(c).bullet].m_v);
   }
   if (!pn.pinned()) parent_node.m_v = to_bullet(momentum / pn.mass);
-  set_simulated_mass(p, pn.mass);
-  state_[static_cast<std::size_t>(p)] = CutState::kActive;
-  record(p).op = -1;
-  for (int i = 0; i < pn.child_count; ++i) {
-    const TreeId c = pn.children[static_cast<std::size_t>(i)];
-    remove_node(c);
-    record(c).sim_mass = 0;
-    state_[static_cast<std::size_t>(c)] = CutState::kOff;
-    record(c).op = -1;
-  }
+  settle_in_cut(p, pn.mass);
+  for (int i = 0; i < pn.child_count; ++i) retire_from_cut(pn.children[static_cast<std::size_t>(i)]);
   const std::int64_t t2 = now_ns();
 
   refresh_incident_constants(p);
   const std::int64_t t3 = now_ns();
   emit(OpKind::kEndCoarse, t2 - t1, (t1 - t0) + (t3 - t2));
+}
+
+void TcSoftBody::make_faded_in_links_steady(TreeId id) {
+  for (std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
+    CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
+    if (meta.role == LinkRole::kFadeIn) meta = {meta.a, meta.b, LinkRole::kSteady, -1};
+  }
+}
+
+void TcSoftBody::settle_in_cut(TreeId id, double mass) {
+  set_simulated_mass(id, mass);
+  state_[static_cast<std::size_t>(id)] = CutState::kActive;
+  record(id).op = -1;
+}
+
+void TcSoftBody::retire_from_cut(TreeId id) {
+  remove_node(id);
+  record(id).sim_mass = 0;
+  state_[static_cast<std::size_t>(id)] = CutState::kOff;
+  record(id).op = -1;
 }
 
 void TcSoftBody::emit(OpKind kind, std::int64_t node_ns, std::int64_t link_ns) {

@@ -205,6 +205,11 @@ class TcSoftBody : public btSoftBody {
   void end_op(std::int32_t op);
   void end_refine(const Op& op);
   void end_coarse(const Op& op);
+  /// The end operations' shared steps: links that finished fading in become steady; a node that stays carries its
+  /// full mass and belongs to no operation; a node that goes leaves Bullet and the cut (it must have no links left).
+  void make_faded_in_links_steady(TreeId id);
+  void settle_in_cut(TreeId id, double mass);
+  void retire_from_cut(TreeId id);
   /// Starts loading the cache lines an operation on the block of `id` will touch (tc_prefetch.cpp). No effect on
   /// results; O(degree). Does nothing in a build with the CMake option TCSB_OP_PREFETCH off.
   void prefetch_footprint(TreeId id) const;
