@@ -6,6 +6,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "harness/case_plan.h"
+#include "harness/suite_memory.h"
 
 namespace tcsb::cli {
 

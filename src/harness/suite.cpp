@@ -4,231 +4,20 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <climits>
-#include <cmath>
-#include <cstdio>
 #include <fstream>
-#include <initializer_list>
 #include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
-#include <set>
-#include <string_view>
-#include <utility>
 
-#include "harness/case_plan.h"
-#include "harness/fidelity_plan.h"
 #include "harness/sha256.h"
-#include "net/net.h"
+#include "harness/suite_fields.h"
+#include "harness/suite_memory.h"
 
 namespace tcsb {
 namespace {
 
-using json = nlohmann::json;
-
-std::string fmt_number(double v) {
-  char buf[32];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return ec == std::errc() ? std::string(buf, end) : std::string("?");
-}
-
-/// A JSON value as it appears in error messages: short, one line, with its type when that is the problem.
-std::string describe(const json& j) {
-  std::string text;
-  if (j.is_string()) text = "string " + j.dump();
-  else if (j.is_object()) text = "an object";
-  else if (j.is_array()) text = "an array";
-  else text = j.dump();
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  return text;
-}
-
-std::string key_path(const std::string& parent, std::string_view key) {
-  return parent.empty() ? std::string(key) : parent + "." + std::string(key);
-}
-std::string index_path(const std::string& parent, std::size_t i) { return parent + "[" + std::to_string(i) + "]"; }
-
-/// A range of real numbers for messages and checks; infinite bounds print as ">= lo" / "> lo".
-struct Interval {
-  double lo;
-  bool lo_open;
-  double hi = std::numeric_limits<double>::infinity();
-  bool hi_open = true;
-  bool contains(double v) const {
-    return std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
-  }
-  std::string text() const {
-    if (std::isinf(lo) && std::isinf(hi)) return "a finite number";
-    if (std::isinf(hi)) return "a finite number " + std::string(lo_open ? "> " : ">= ") + fmt_number(lo);
-    return "a number in " + std::string(lo_open ? "(" : "[") + fmt_number(lo) + ", " + fmt_number(hi) +
-           (hi_open ? ")" : "]");
-  }
-};
-
-/// Typed access to a JSON document that throws SuiteError naming the file and the field.
-class Reader {
- public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-    throw SuiteError(file_, field, problem);
-  }
-
-  long long integer(const json& j, const std::string& path, long long lo, long long hi) const {
-    const std::string want = "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got ";
-    if (!j.is_number_integer()) fail(path, want + describe(j));
-    if (j.is_number_unsigned() && j.get<std::uint64_t>() > static_cast<std::uint64_t>(hi)) fail(path, want + j.dump());
-    const long long v = j.get<long long>();
-    if (v < lo || v > hi) fail(path, want + j.dump());
-    return v;
-  }
-  std::uint64_t unsigned_integer(const json& j, const std::string& path) const {
-    if (!j.is_number_integer() || (!j.is_number_unsigned() && j.get<long long>() < 0)) {
-      fail(path, "must be a non-negative integer, got " + describe(j));
-    }
-    return j.get<std::uint64_t>();
-  }
-  double number(const json& j, const std::string& path, const Interval& range) const {
-    if (!j.is_number()) fail(path, "must be " + range.text() + ", got " + describe(j));
-    const double v = j.get<double>();
-    if (!range.contains(v)) fail(path, "must be " + range.text() + ", got " + j.dump());
-    return v;
-  }
-  bool boolean(const json& j, const std::string& path) const {
-    if (!j.is_boolean()) fail(path, "must be true or false, got " + describe(j));
-    return j.get<bool>();
-  }
-  std::string string(const json& j, const std::string& path) const {
-    if (!j.is_string()) fail(path, "must be a string, got " + describe(j));
-    return j.get<std::string>();
-  }
-  const json& array(const json& j, const std::string& path, bool allow_empty = false) const {
-    if (!j.is_array()) fail(path, "must be an array, got " + describe(j));
-    if (!allow_empty && j.empty()) fail(path, "must not be empty");
-    return j;
-  }
-  /// An array of exactly `n` numbers in `range`.
-  template <std::size_t n>
-  std::array<double, n> numbers(const json& j, const std::string& path, const Interval& range) const {
-    if (!j.is_array() || j.size() != n) {
-      fail(path, "must be an array of " + std::to_string(n) + " numbers, got " + describe(j));
-    }
-    std::array<double, n> out{};
-    for (std::size_t i = 0; i < n; ++i) out[i] = number(j[i], index_path(path, i), range);
-    return out;
-  }
-  /// One of `options` (an enum spelled as a string).
-  template <class E>
-  E choice(const json& j, const std::string& path,
-           std::initializer_list<std::pair<std::string_view, E>> options) const {
-    if (j.is_string()) {
-      for (const auto& [name, value] : options) {
-        if (j.get<std::string>() == name) return value;
-      }
-    }
-    std::string list;
-    for (const auto& option : options) list += (list.empty() ? "\"" : ", \"") + std::string(option.first) + "\"";
-    fail(path, "must be one of " + list + ", got " + describe(j));
-  }
-
- private:
-  std::string file_;
-};
-
-/// One JSON object at `path`: rejects keys outside `allowed`, then reads members, building their paths for errors.
-/// The read() overloads leave `out` alone when an optional key is absent, so the struct's default stands.
-class Object {
- public:
-  Object(const Reader& r, const json& j, std::string path, std::initializer_list<std::string_view> allowed)
-      : r_(r), j_(j), path_(std::move(path)) {
-    if (!j.is_object()) r.fail(path_, "must be an object, got " + describe(j));
-    for (const auto& item : j.items()) {
-      if (std::find(allowed.begin(), allowed.end(), item.key()) != allowed.end()) continue;
-      std::string list;
-      for (const std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-      r.fail(at(item.key()), "unknown key (expected one of: " + list + ")");
-    }
-  }
-  std::string at(std::string_view key) const { return key_path(path_, key); }
-  /// The member `key`, or nullptr; with `required`, a missing key is an error.
-  const json* find(const char* key, bool required = false) const {
-    const auto it = j_.find(key);
-    if (it != j_.end()) return &*it;
-    if (required) r_.fail(at(key), "required key is missing");
-    return nullptr;
-  }
-  const json& need(const char* key) const { return *find(key, true); }
-
-  void read(const char* key, int& out, long long lo, long long hi, bool required = false) const {
-    if (const json* v = find(key, required)) out = static_cast<int>(r_.integer(*v, at(key), lo, hi));
-  }
-  void read(const char* key, double& out, const Interval& range, bool required = false) const {
-    if (const json* v = find(key, required)) out = r_.number(*v, at(key), range);
-  }
-  void read(const char* key, bool& out) const {
-    if (const json* v = find(key)) out = r_.boolean(*v, at(key));
-  }
-  template <class E>
-  void read(const char* key, E& out, std::initializer_list<std::pair<std::string_view, E>> options) const {
-    if (const json* v = find(key)) out = r_.choice(*v, at(key), options);
-  }
-
- private:
-  const Reader& r_;
-  const json& j_;
-  std::string path_;
-};
-
-/// Parses text, rejecting malformed JSON (with the parser's position) and duplicate keys (which nlohmann would
-/// silently resolve to the last one — a suite stating "steps" twice is a mistake, not a choice).
-json parse_json(const std::string& text, const Reader& r) {
-  struct Frame {
-    bool is_array = false;
-    std::size_t index = 0;
-    std::string key;
-    std::set<std::string> seen;
-  };
-  std::vector<Frame> stack;
-  auto path = [&stack] {
-    std::string p;
-    for (const Frame& f : stack) p = f.is_array ? index_path(p, f.index) : key_path(p, f.key);
-    return p;
-  };
-  // A value just ended in the innermost container: in an array, the next element gets the next index.
-  auto value_done = [&stack] {
-    if (!stack.empty() && stack.back().is_array) ++stack.back().index;
-  };
-  const json::parser_callback_t callback = [&](int, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start: stack.push_back(Frame{}); break;
-      case json::parse_event_t::array_start: stack.push_back(Frame{true, 0, {}, {}}); break;
-      case json::parse_event_t::key: {
-        Frame& f = stack.back();
-        f.key = parsed.get<std::string>();
-        if (!f.seen.insert(f.key).second) r.fail(path(), "duplicate key (each key may appear once)");
-        break;
-      }
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        stack.pop_back();
-        value_done();
-        break;
-      case json::parse_event_t::value: value_done(); break;
-    }
-    return true;
-  };
-  try {
-    return json::parse(text, callback);
-  } catch (const json::exception& e) {
-    std::string message = e.what();
-    if (const auto close = message.find("] "); message.rfind("[json.exception", 0) == 0 && close != std::string::npos) {
-      message.erase(0, close + 2);
-    }
-    std::replace(message.begin(), message.end(), '\n', ' ');
-    r.fail("", "malformed JSON: " + message);
-  }
-}
+using namespace suite_fields;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr Interval kPositive{0.0, true}, kNonNegative{0.0, false}, kAnyFinite{-kInf, true};
@@ -328,96 +117,16 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
   }
 }
 
-std::optional<std::uint64_t> mem_available_bytes() {
-  std::ifstream in("/proc/meminfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    unsigned long long kib = 0;
-    if (std::sscanf(line.c_str(), "MemAvailable: %llu kB", &kib) == 1) return static_cast<std::uint64_t>(kib) * 1024;
-  }
-  return std::nullopt;
-}
-
-std::string fmt_bytes(double bytes) {
-  char buf[48];
-  if (bytes >= 1024.0 * 1024 * 1024) std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / (1024.0 * 1024 * 1024));
-  else std::snprintf(buf, sizeof buf, "%.1f MiB", bytes / (1024.0 * 1024));
-  return buf;
-}
-
-// Per-element memory, deliberately on the high side (sizes measured with sizeof on Bullet 3.24, single precision):
-//  - a Bullet node: btSoftBody::Node 256 B + its DBVT leaf and share of inner nodes ~ 2 x 64 B (btDbvtNode is 56 B,
-//    rounded up for the allocator);
-//  - a Bullet link: btSoftBody::Link 72 B;
-//  - a Bullet face (CreatePatch makes 2 per cell, bullet_patch only): btSoftBody::Face 144 B + ~ 2 x 64 B of tree;
-//  - our Net: ~ 48 B per node (rest position, mass, pin flag, padding) + 12 B per link (NetLink);
-//  - the LOD tree: ~ 4/3 N tree nodes x 112 B;
-//  - a TC-SB body: Bullet nodes reserved for all 4/3 N tree nodes, ~ 200 B of bookkeeping per tree node (cut
-//    membership, incidence lists, feedback state), and Bullet links for up to 3 L;
-//  - the recorder: ~ 32 B per step sample, for every step (warm-up included) of every run of the suite.
-constexpr double kBulletNodeBytes = 256 + 2 * 64;
-constexpr double kBulletLinkBytes = 72;
-constexpr double kBulletFaceBytes = 144 + 2 * 64;
-constexpr double kNetNodeBytes = 48, kNetLinkBytes = 12;
-constexpr double kTreeNodeBytes = 112, kTreeNodesPerLeaf = 4.0 / 3.0;
-constexpr double kTcBookkeepingBytes = 200, kTcLinkFactor = 3;
-constexpr double kSampleBytes = 32;
-
-/// Peak bytes while cases of net `spec` run: the shared net, one body per method; or, in the fidelity pass, which
-/// runs afterwards, the reference and every subject at once (each counted as a TC-SB body, the largest kind).
-double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
-  const double n = static_cast<double>(spec.node_count());
-  const double l = static_cast<double>(expected_link_count(spec));
-  const double tree = kTreeNodesPerLeaf * n;
-  const double plain = n * kBulletNodeBytes + l * kBulletLinkBytes;
-  const double tcsb_body = tree * (kBulletNodeBytes + kTcBookkeepingBytes) + kTcLinkFactor * l * kBulletLinkBytes;
-  const double shared = n * kNetNodeBytes + l * kNetLinkBytes + tree * kTreeNodeBytes;
-  double bytes = shared;
-  bool has_tcsb = false;
-  for (const Method m : suite.methods) {
-    switch (m) {
-      case Method::kPlain: bytes += plain; break;
-      case Method::kBulletPatch:
-        bytes += plain + 2.0 * (spec.width - 1) * (spec.height - 1) * kBulletFaceBytes;
-        break;
-      case Method::kTcsb:
-        has_tcsb = true;
-        bytes += tcsb_body;
-        break;
-    }
-  }
-  const double subjects = has_tcsb ? static_cast<double>(fidelity_plan(suite).size()) : 0.0;
-  const double fidelity = shared + plain + subjects * tcsb_body;
-  return subjects > 0 ? std::max(bytes, fidelity) : bytes;
-}
-
-double recorder_bytes(const Suite& suite) {
-  const double runs = static_cast<double>(expand_cases(suite).size()) * suite.repetitions;
-  return runs * (static_cast<double>(suite.steps) + suite.warmup_steps) * kSampleBytes;
-}
-
-std::size_t peak_net_index(const Suite& suite) {
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < suite.nets.size(); ++i) {
-    if (net_peak_bytes(suite, suite.nets[i]) > net_peak_bytes(suite, suite.nets[best])) best = i;
-  }
-  return best;
-}
-
 void check_memory(const Suite& suite, const Reader& r) {
-  const std::optional<std::uint64_t> available = mem_available_bytes();
-  if (!available || suite.nets.empty()) return;
-  const double needed = static_cast<double>(estimate_peak_bytes(suite));
-  const double usable = 0.8 * static_cast<double>(*available);
-  if (needed <= usable) return;
-  const std::size_t i = peak_net_index(suite);
-  const NetSpec& net = suite.nets[i];
+  const std::optional<MemoryShortfall> shortfall = memory_shortfall(suite);
+  if (!shortfall) return;
+  const NetSpec& net = suite.nets[shortfall->net];
   const std::string size = std::to_string(net.width) + " x " + std::to_string(net.height) + " = " +
                            std::to_string(net.node_count()) + " nodes";
-  r.fail(index_path("nets", i), "net \"" + net.name + "\" (" + size + ") needs about " + fmt_bytes(needed) +
-                                    " with all methods' bodies alive, but only " + fmt_bytes(usable) +
-                                    " may be used (80% of MemAvailable " + fmt_bytes(static_cast<double>(*available)) +
-                                    ")");
+  r.fail(index_path("nets", shortfall->net),
+         "net \"" + net.name + "\" (" + size + ") needs about " + format_bytes(shortfall->needed) +
+             " with all methods' bodies alive, but only " + format_bytes(shortfall->usable) +
+             " may be used (80% of MemAvailable " + format_bytes(shortfall->available) + ")");
 }
 
 }  // namespace
@@ -429,14 +138,6 @@ const char* method_name(Method method) {
     case Method::kTcsb: return "tcsb";
   }
   return "unknown";
-}
-
-std::uint64_t estimate_peak_bytes(const Suite& suite) {
-  double peak = 0;
-  for (const NetSpec& net : suite.nets) peak = std::max(peak, net_peak_bytes(suite, net));
-  const double bytes = std::ceil(peak + recorder_bytes(suite));
-  constexpr double kMax = 1.8e19;  // just under 2^64: saturate rather than overflow
-  return bytes >= kMax ? std::numeric_limits<std::uint64_t>::max() : static_cast<std::uint64_t>(bytes);
 }
 
 Suite parse_suite_text(const std::string& text, const std::string& file) {

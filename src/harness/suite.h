@@ -68,15 +68,11 @@ class SuiteError : public std::runtime_error {
 };
 
 /// Reads and validates a suite file. Throws SuiteError (unknown keys, wrong types, out-of-range values, nets too
-/// large for this machine's memory, unreadable file) before anything runs.
+/// large for this machine's memory (harness/suite_memory.h), unreadable file) before anything runs.
 Suite parse_suite(const std::filesystem::path& path);
 
 /// Validates a suite given as JSON text; `file` names it in errors. The same checks as parse_suite.
 Suite parse_suite_text(const std::string& text, const std::string& file);
-
-/// Bytes a run of this suite needs at most for its largest net (all methods' bodies alive at once), an estimate
-/// used to reject suites that would not fit.
-std::uint64_t estimate_peak_bytes(const Suite& suite);
 
 /// Name used in JSON for a method ("plain", "bullet_patch", "tcsb").
 const char* method_name(Method method);

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "harness/sha256.h"
+#include "harness/suite_memory.h"
 
 namespace tcsb {
 namespace {
@@ -387,27 +388,6 @@ TEST(SuiteReject, TcsbNeedsStructuralOnlyNets) {
 TEST(SuiteReject, DuplicateKeyInText) {
   const std::string text = std::string(kMinimal).replace(1, 0, "\"steps\": 5,");
   rejected([&] { parse_suite_text(text, "dup.json"); }, "dup.json", "steps");
-}
-
-// ---- memory estimate ------------------------------------------------------------------------------------------
-
-TEST(SuiteMemory, EstimateGrowsWithNetsAndMethods) {
-  Suite s;
-  s.methods = {Method::kPlain};
-  NetSpec small;
-  small.width = small.height = 33;
-  NetSpec big = small;
-  big.width = big.height = 257;
-  s.nets = {small};
-  const std::uint64_t plain_small = estimate_peak_bytes(s);
-  s.nets = {small, big};
-  const std::uint64_t plain_big = estimate_peak_bytes(s);
-  EXPECT_GT(plain_big, 50 * plain_small);  // ~ 60x the nodes
-  s.methods = {Method::kPlain, Method::kTcsb};
-  s.compression = {1.0};
-  EXPECT_GT(estimate_peak_bytes(s), 2 * plain_big);  // TC-SB reserves the whole hierarchy
-  // Node bytes alone are a floor: 257^2 Bullet nodes of 256 B.
-  EXPECT_GT(plain_big, 257ull * 257ull * 256ull);
 }
 
 }  // namespace
