@@ -77,7 +77,7 @@ def main(frames_path, outdir):
             if col == 0:
                 ax.text2D(-0.05, 0.5, rows[row], transform=ax.transAxes, rotation=90, va="center", fontsize=9)
     source = (f"{doc['suite']['name']} suite, net {net['name']} ({w} x {h}), TC-SB at "
-              f"{round(100 * doc['compression'])}% of the nodes, tcsb {doc['tool']['git_commit']}")
+              f"{round(100 * doc['compression'])}% of the nodes, tcsb {doc['context']['git_commit']}")
     fig.suptitle("Figure 6: Bullet SoftBody and TC-SB at the same steps", fontsize=11)
     fig.text(0.01, 0.005, source, fontsize=7)
     fig.tight_layout()

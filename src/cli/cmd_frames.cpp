@@ -7,6 +7,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/run_support.h"
+#include "harness/context.h"
 #include "harness/figure_frames.h"
 #include "report/frames_json.h"
 #include "report/json_report.h"
@@ -65,13 +66,15 @@ int frames_command(const FramesArgs& args) {
   const Suite suite = parse_suite(resolve_suite(args.suite));
   const std::size_t net = net_index(suite, args.net);
   const double compression = compression_of(suite, args.compression);
+  // Recorded in the file; not printed, since nothing here is timed (the warnings are about timing).
+  const Context context = gather_context();
   const FigureFrames frames = record_figure_frames(suite, net, compression, args.steps);
   if (frames.diverged_step) {
     print_warning("net " + frames.net + " diverged after step " + std::to_string(*frames.diverged_step) + " (" +
                   frames.diverged_reason + "); the frames after it are missing");
   }
   // On one line: about 200 000 numbers for an 81 x 81 net, which indented would be as many lines.
-  return write_report(json_text(frames_json(suite, frames), -1), args.out);
+  return write_report(json_text(frames_json(suite, context, frames), -1), args.out);
 }
 
 }  // namespace tcsb::cli

@@ -29,6 +29,11 @@ LoadedResult load_result_file(const std::string& path) {
   if (!doc.is_object() || !doc.contains("tool") || doc["tool"] != "tcsb") {
     throw UsageError(path + ": not a tcsb result (no \"tool\": \"tcsb\")");
   }
+  if (const auto kind = doc.find("kind"); kind != doc.end()) {
+    // Only `tcsb frames` writes a kind so far; a run result has none.
+    throw UsageError(path + ": kind: " + kind->dump() + ": not a run result (a `tcsb frames` file, say); give the " +
+                     "output of `tcsb run` or `tcsb reproduce`");
+  }
   const auto version = doc.find("schema_version");
   if (version == doc.end() || !version->is_number_integer() || *version != kNativeJsonSchemaVersion) {
     throw UsageError(path + ": schema_version: " + (version == doc.end() ? std::string("missing") : version->dump()) +

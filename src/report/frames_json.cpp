@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "build_info.h"
 #include "report/json_report.h"
 
 namespace tcsb {
@@ -22,9 +21,12 @@ nlohmann::ordered_json points_json(const std::vector<Eigen::Vector3d>& points) {
 
 }  // namespace
 
-nlohmann::ordered_json frames_json(const Suite& suite, const FigureFrames& f) {
+nlohmann::ordered_json frames_json(const Suite& suite, const Context& context, const FigureFrames& f) {
   nlohmann::ordered_json doc;
-  doc["tool"] = {{"name", "tcsb"}, {"version", build_info::kVersion}, {"git_commit", build_info::kGitCommit}};
+  doc["schema_version"] = kFramesSchemaVersion;
+  doc["tool"] = "tcsb";
+  doc["kind"] = "frames";
+  doc["context"] = context_json(context, suite);
   doc["suite"] = suite_json(suite);
   doc["net"] = {{"name", f.net}, {"width", f.width}, {"height", f.height}};
   doc["compression"] = f.compression;

@@ -4,15 +4,20 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/context.h"
 #include "harness/figure_frames.h"
 #include "harness/suite.h"
 
 namespace tcsb {
 
-/// {"tool", "suite" (suite_json), "net": {name, width, height}, "compression", "dt", "status", "diverged_step",
-/// "diverged_reason", "frames": [{step, interpolations, plain, tcsb_surface, tcsb_nodes, tcsb_links}]}. Points are
-/// [x, y, z] in metres rounded to 10 um (y up); plain and tcsb_surface hold one point per grid node, row-major;
-/// tcsb_links are [a, b, role] with a and b indices into tcsb_nodes and role a link_role_name().
-nlohmann::ordered_json frames_json(const Suite& suite, const FigureFrames& frames);
+/// Version of the frames layout (scripts/plot_figure6.py reads it). 1: the first, with a context block.
+inline constexpr int kFramesSchemaVersion = 1;
+
+/// {"schema_version", "tool": "tcsb", "kind": "frames", "context" (context_json), "suite" (suite_json), "net": {name,
+/// width, height}, "compression", "dt", "status", "diverged_step", "diverged_reason", "frames": [{step,
+/// interpolations, plain, tcsb_surface, tcsb_nodes, tcsb_links}]}. Points are [x, y, z] in metres rounded to 10 um
+/// (y up); plain and tcsb_surface hold one point per grid node, row-major; tcsb_links are [a, b, role] with a and b
+/// indices into tcsb_nodes and role a link_role_name(). "kind" tells it from a run result, which has none.
+nlohmann::ordered_json frames_json(const Suite& suite, const Context& context, const FigureFrames& frames);
 
 }  // namespace tcsb

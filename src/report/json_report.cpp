@@ -12,16 +12,16 @@ using ojson = nlohmann::ordered_json;
 
 const char* placement_name(Placement p) { return p == Placement::kRigid ? "rigid" : "affine"; }
 
-ojson context_json(const RunResult& r) {
-  // to_json(Context) sorts its keys; copying them in that order into an ordered object keeps the order stable.
-  ojson context = ojson(to_json(r.context));
-  context["suite_path"] = r.suite.path.string();
-  context["suite_sha256"] = r.suite.sha256;
-  context["seed"] = r.suite.seed;
-  return context;
-}
-
 }  // namespace
+
+ojson context_json(const Context& context, const Suite& suite) {
+  // to_json(Context) sorts its keys; copying them in that order into an ordered object keeps the order stable.
+  ojson out = ojson(to_json(context));
+  out["suite_path"] = suite.path.string();
+  out["suite_sha256"] = suite.sha256;
+  out["seed"] = suite.seed;
+  return out;
+}
 
 ojson suite_json(const Suite& s) {
   ojson nets = ojson::array();
@@ -209,7 +209,7 @@ ojson native_json(const RunResult& result) {
   ojson doc;
   doc["schema_version"] = kNativeJsonSchemaVersion;
   doc["tool"] = "tcsb";
-  doc["context"] = context_json(result);
+  doc["context"] = context_json(result.context, result.suite);
   doc["suite"] = suite_json(result.suite);
   doc["cases"] = std::move(cases);
   doc["table1"] = table1_json(result);

@@ -31,6 +31,10 @@ nlohmann::ordered_json json_integer(const std::optional<int>& value);
 /// recorded strings (a host name, say) is replaced, not thrown on.
 std::string json_text(const nlohmann::ordered_json& doc, int indent = 2);
 
+/// The `context` block of every document tcsb writes: the machine and build (harness/context.h), and the suite's
+/// path, SHA-256 and seed.
+nlohmann::ordered_json context_json(const Context& context, const Suite& suite);
+
 /// The suite as run (after any command-line overrides): the `suite` block of every document tcsb writes.
 nlohmann::ordered_json suite_json(const Suite& suite);
 

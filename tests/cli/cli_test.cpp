@@ -207,6 +207,12 @@ TEST_F(Cli, FramesRecordsBothBodiesAtTheRequestedSteps) {
   const Outcome o = tcsb("frames --suite tiny.json --net n9 --compression 0.5 --steps 0,5,10 --out frames.json");
   ASSERT_EQ(o.exit_code, 0) << o.err;
   const nlohmann::json j = nlohmann::json::parse(read_file(dir_ / "frames.json"));
+  // Like every file tcsb writes: a schema version, the tool, and the context it was recorded in.
+  EXPECT_EQ(j["schema_version"], 1);
+  EXPECT_EQ(j["tool"], "tcsb");
+  EXPECT_EQ(j["kind"], "frames");
+  EXPECT_TRUE(j["context"]["git_commit"].is_string());
+  EXPECT_EQ(j["context"]["suite_path"], "tiny.json");
   EXPECT_EQ(j["status"], "ok");
   EXPECT_EQ(j["net"]["width"], 9);
   ASSERT_EQ(j["frames"].size(), 3u);

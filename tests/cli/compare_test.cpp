@@ -149,6 +149,7 @@ TEST_F(Compare, UnusableInputIsOneLineNamingTheFile) {
   ojson bad = base_;
   bad["cases"][1]["status"] = "fine";
   write_file(dir_ / "bad.json", bad.dump());
+  write_file(dir_ / "frames.json", R"({"schema_version": 1, "tool": "tcsb", "kind": "frames", "frames": []})");
   const struct {
     const char* args;
     const char* expected;
@@ -157,6 +158,7 @@ TEST_F(Compare, UnusableInputIsOneLineNamingTheFile) {
       {"compare broken.json base.json", "tcsb: error: broken.json: not valid JSON: "},
       {"compare base.json gbench.json", "tcsb: error: gbench.json: not a tcsb result"},
       {"compare old.json base.json", "tcsb: error: old.json: schema_version: 1, but this tcsb reads version 2"},
+      {"compare base.json frames.json", "tcsb: error: frames.json: kind: \"frames\": not a run result"},
       {"compare base.json bad.json", "tcsb: error: bad.json: not a valid tcsb result: cases[1].status: must be one of"},
       {"compare base.json base.json --alpha 1.5", "tcsb: error: --alpha: must be in (0, 1)"},
       {"compare base.json base.json --threshold -1", "tcsb: error: --threshold: must be a finite number >= 0"},
