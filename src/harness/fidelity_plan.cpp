@@ -12,6 +12,7 @@ const char* fidelity_method_name(FidelityMethod method) {
     case FidelityMethod::kSwitch: return "switch_body";
     case FidelityMethod::kTcsbRandom: return "tcsb_random";
     case FidelityMethod::kTcsbRigid: return "tcsb_rigid";
+    case FidelityMethod::kTcsbSwitchSurface: return "tcsb_no_geomorph";
   }
   return "unknown";
 }
@@ -27,7 +28,8 @@ std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
   for (const double c : targets) plan.push_back({FidelityMethod::kTcsb, c});
   if (!suite.fidelity.ablations) return plan;
   for (const FidelityMethod m :
-       {FidelityMethod::kUniform, FidelityMethod::kSwitch, FidelityMethod::kTcsbRandom, FidelityMethod::kTcsbRigid})
+       {FidelityMethod::kUniform, FidelityMethod::kSwitch, FidelityMethod::kTcsbRandom, FidelityMethod::kTcsbRigid,
+        FidelityMethod::kTcsbSwitchSurface})
     for (const double c : suite.compression)
       if (c < 1.0) plan.push_back({m, c});
   return plan;

@@ -1,6 +1,7 @@
 // Fidelity plan: which bodies the fidelity pass runs beside the full-resolution reference, per net. TC-SB at each of
 // the suite's compression targets and Pareto targets, and — when the suite asks for ablations — four other ways to
-// spend the same node budget, each at the budget of the TC-SB case it is compared with.
+// spend the same node budget, and TC-SB with its surface switched instead of geomorphed, each at the budget of the
+// TC-SB case it is compared with.
 #pragma once
 
 #include <string>
@@ -18,9 +19,11 @@ enum class FidelityMethod {
                 ///< paper's stated alternative: "a new SoftBody has to be created", §6) (ablation)
   kTcsbRandom,  ///< TC-SB driven by seeded random operations instead of saliency (ablation)
   kTcsbRigid,   ///< TC-SB with the paper's rigid-offset child placement instead of the affine fit (ablation)
+  kTcsbSwitchSurface,  ///< TC-SB, the same body, its surface switched at once instead of geomorphed (ablation;
+                       ///< harness/reconstruction.h)
 };
 
-/// Name used in reports: "tcsb", "uniform_grid", "switch_body", "tcsb_random", "tcsb_rigid".
+/// Name used in reports: "tcsb", "uniform_grid", "switch_body", "tcsb_random", "tcsb_rigid", "tcsb_no_geomorph".
 const char* fidelity_method_name(FidelityMethod method);
 
 /// One body of the fidelity pass on every net.
@@ -30,7 +33,7 @@ struct FidelitySubjectSpec {
 };
 
 /// The subjects, in report order: TC-SB at every target of compression and fidelity.pareto_targets (ascending,
-/// each once), then, with fidelity.ablations, the four ablations at every suite compression target below 1 (at 1
+/// each once), then, with fidelity.ablations, the five ablations at every suite compression target below 1 (at 1
 /// they would all be the full-resolution body). Empty unless fidelity.enabled and the suite runs TC-SB.
 std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite);
 

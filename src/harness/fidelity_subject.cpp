@@ -40,16 +40,19 @@ class OpCounter final : public OpSink {
 /// TC-SB with its controller (none at compression 1: the body then never changes its cut).
 class TreeCutSubject final : public FidelitySubject {
  public:
-  TreeCutSubject(std::unique_ptr<TcSoftBody> body, std::unique_ptr<Controller> controller, int budget)
-      : body_(std::move(body)), controller_(std::move(controller)), budget_(budget) {
+  TreeCutSubject(std::unique_ptr<TcSoftBody> body, std::unique_ptr<Controller> controller, int budget,
+                 SurfaceBlend blend)
+      : body_(std::move(body)), controller_(std::move(controller)), budget_(budget), blend_(blend) {
     body_->set_op_sink(&ops_);
   }
   ~TreeCutSubject() override { body_->set_op_sink(nullptr); }
   void boundary(int step) override {
     const std::int64_t before = ops_.count;
+    // A geomorphed surface also moves at a boundary where blends only advance: each is a step of its morph.
+    const bool morphing = blend_ == SurfaceBlend::kGeomorph && body_->interpolations() > 0;
     body_->advance_blends();
     if (controller_) controller_->before_step(*body_);
-    changed_ = ops_.count != before;
+    changed_ = morphing || ops_.count != before;
     if (controller_ && !converged_ && body_->node_count() <= budget_) converged_ = step;
   }
   std::optional<int> converged_step() const override { return converged_; }
@@ -64,7 +67,7 @@ class TreeCutSubject final : public FidelitySubject {
     body_->simulate_step(dt);
     if (controller_) controller_->after_step(*body_);
   }
-  void reconstruct(std::vector<Eigen::Vector3d>& leaves) override { reconstruct_leaves(*body_, leaves); }
+  void reconstruct(std::vector<Eigen::Vector3d>& leaves) override { reconstruct_leaves(*body_, leaves, blend_); }
   double energy(double gravity) override {
     copy_positions(*body_, x_);
     copy_velocities(*body_, v_);
@@ -79,6 +82,7 @@ class TreeCutSubject final : public FidelitySubject {
   std::unique_ptr<TcSoftBody> body_;
   std::unique_ptr<Controller> controller_;
   int budget_;
+  SurfaceBlend blend_;
   std::optional<int> converged_;
   OpCounter ops_;
   bool changed_ = false;
@@ -210,7 +214,8 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
       return std::make_unique<SwitchSubject>(world, suite, std::move(net), budget, pace, fallback_switch_step);
     case FidelityMethod::kTcsb:
     case FidelityMethod::kTcsbRandom:
-    case FidelityMethod::kTcsbRigid: {
+    case FidelityMethod::kTcsbRigid:
+    case FidelityMethod::kTcsbSwitchSurface: {
       TcSettings tc = suite.tcsb;
       if (spec.method == FidelityMethod::kTcsbRigid) tc.placement = Placement::kRigid;
       FeedbackSettings feedback = suite.feedback;
@@ -219,7 +224,9 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
       auto body = std::make_unique<TcSoftBody>(world, std::move(net), suite.solver, tc);
       std::unique_ptr<Controller> controller;
       if (compressed) controller = make_controller(feedback, budget, seed);
-      return std::make_unique<TreeCutSubject>(std::move(body), std::move(controller), budget);
+      const SurfaceBlend blend =
+          spec.method == FidelityMethod::kTcsbSwitchSurface ? SurfaceBlend::kSwitch : SurfaceBlend::kGeomorph;
+      return std::make_unique<TreeCutSubject>(std::move(body), std::move(controller), budget, blend);
     }
   }
   return nullptr;

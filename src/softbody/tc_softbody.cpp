@@ -193,11 +193,19 @@ btScalar TcSoftBody::inverse_mass(TreeId id, double mass) const {
   return tree().node(id).pinned() ? btScalar(0) : static_cast<btScalar>(1.0 / mass);
 }
 
+double TcSoftBody::op_progress(const Op& op) const {
+  return static_cast<double>(op.step + 1) / (settings_.blend_steps + 1);
+}
+
 double TcSoftBody::blend_alpha(const CutLink& meta) const {
   if (meta.role != LinkRole::kFadeIn && meta.role != LinkRole::kFadeOut) return 1.0;
-  const Op& op = ops_[static_cast<std::size_t>(meta.op)];
-  const double arriving = static_cast<double>(op.step + 1) / (settings_.blend_steps + 1);
+  const double arriving = op_progress(ops_[static_cast<std::size_t>(meta.op)]);
   return meta.role == LinkRole::kFadeIn ? arriving : 1.0 - arriving;
+}
+
+double TcSoftBody::arrival_weight(TreeId id) const {
+  if (state(id) != CutState::kArriving) return 1.0;
+  return op_progress(ops_[static_cast<std::size_t>(record(id).op)]);
 }
 
 void TcSoftBody::refresh_link_constant(int link) {

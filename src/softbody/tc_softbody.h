@@ -153,6 +153,10 @@ class TcSoftBody : public btSoftBody {
   /// is the same whether children are placed rigidly or not. O(degree).
   Eigen::Matrix<double, 3, 2> local_affine_fit(TreeId id) const;
 
+  /// How far the operation an arriving node belongs to has blended: (blend steps done + 1) / (K + 1), the weight its
+  /// fading-in links carry now, rising by 1/(K + 1) per step; 1 for a node that is not arriving. O(1).
+  double arrival_weight(TreeId id) const;
+
   /// Linear momentum of the simulated nodes (pinned nodes excluded), kg m/s.
   Eigen::Vector3d linear_momentum() const;
   /// Total simulated mass (pinned nodes included through their bookkeeping mass), kg.
@@ -199,6 +203,8 @@ class TcSoftBody : public btSoftBody {
   void refresh_link_constant(int link);
   void refresh_incident_constants(TreeId id);
   double blend_alpha(const CutLink& meta) const;
+  /// (steps done + 1) / (K + 1): the weight of what an operation brings in.
+  double op_progress(const Op& op) const;
   btScalar rest_length(TreeId a, TreeId b) const;
 
   std::int32_t new_op(OpKind kind, TreeId parent);

@@ -32,7 +32,8 @@ TEST(FidelityPlan, TcsbAtEveryTargetOnceAscendingThenTheAblationsBelowOne) {
   const std::vector<std::pair<std::string, double>> want{
       {"tcsb", 0.1},          {"tcsb", 0.3},        {"tcsb", 0.5},         {"tcsb", 0.75},      {"tcsb", 1.0},
       {"uniform_grid", 0.75}, {"uniform_grid", 0.3}, {"switch_body", 0.75}, {"switch_body", 0.3}, {"tcsb_random", 0.75},
-      {"tcsb_random", 0.3},   {"tcsb_rigid", 0.75},  {"tcsb_rigid", 0.3}};
+      {"tcsb_random", 0.3},   {"tcsb_rigid", 0.75},  {"tcsb_rigid", 0.3},  {"tcsb_no_geomorph", 0.75},
+      {"tcsb_no_geomorph", 0.3}};
   EXPECT_EQ(got, want);
 }
 
