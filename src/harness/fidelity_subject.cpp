@@ -7,6 +7,7 @@
 #include "harness/case_body.h"
 #include "harness/reconstruction.h"
 #include "harness/step_clock.h"
+#include "harness/surface_morph.h"
 #include "net/grid_resample.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/plain_softbody.h"
@@ -40,16 +41,17 @@ class OpCounter final : public OpSink {
 /// TC-SB with its controller (none at compression 1: the body then never changes its cut).
 class TreeCutSubject final : public FidelitySubject {
  public:
-  TreeCutSubject(std::unique_ptr<TcSoftBody> body, std::unique_ptr<Controller> controller, int budget,
-                 SurfaceBlend blend)
-      : body_(std::move(body)), controller_(std::move(controller)), budget_(budget), blend_(blend) {
+  /// `morph`: show the geomorphed surface (SurfaceMorph); otherwise the committed cut's, which jumps.
+  TreeCutSubject(std::unique_ptr<TcSoftBody> body, std::unique_ptr<Controller> controller, int budget, bool morph)
+      : body_(std::move(body)), controller_(std::move(controller)), budget_(budget) {
+    if (morph) morph_.emplace();
     body_->set_op_sink(&ops_);
   }
   ~TreeCutSubject() override { body_->set_op_sink(nullptr); }
   void boundary(int step) override {
     const std::int64_t before = ops_.count;
     // A geomorphed surface also moves at a boundary where blends only advance: each is a step of its morph.
-    const bool morphing = blend_ == SurfaceBlend::kGeomorph && body_->interpolations() > 0;
+    const bool morphing = morph_ && body_->interpolations() > 0;
     body_->advance_blends();
     if (controller_) controller_->before_step(*body_);
     changed_ = morphing || ops_.count != before;
@@ -67,7 +69,12 @@ class TreeCutSubject final : public FidelitySubject {
     body_->simulate_step(dt);
     if (controller_) controller_->after_step(*body_);
   }
-  void reconstruct(std::vector<Eigen::Vector3d>& leaves) override { reconstruct_leaves(*body_, leaves, blend_); }
+  void reconstruct(std::vector<Eigen::Vector3d>& leaves) override {
+    if (morph_)
+      morph_->reconstruct(*body_, leaves);
+    else
+      reconstruct_leaves(*body_, leaves);
+  }
   double energy(double gravity) override {
     copy_positions(*body_, x_);
     copy_velocities(*body_, v_);
@@ -82,7 +89,7 @@ class TreeCutSubject final : public FidelitySubject {
   std::unique_ptr<TcSoftBody> body_;
   std::unique_ptr<Controller> controller_;
   int budget_;
-  SurfaceBlend blend_;
+  std::optional<SurfaceMorph> morph_;
   std::optional<int> converged_;
   OpCounter ops_;
   bool changed_ = false;
@@ -224,9 +231,8 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
       auto body = std::make_unique<TcSoftBody>(world, std::move(net), suite.solver, tc);
       std::unique_ptr<Controller> controller;
       if (compressed) controller = make_controller(feedback, budget, seed);
-      const SurfaceBlend blend =
-          spec.method == FidelityMethod::kTcsbSwitchSurface ? SurfaceBlend::kSwitch : SurfaceBlend::kGeomorph;
-      return std::make_unique<TreeCutSubject>(std::move(body), std::move(controller), budget, blend);
+      const bool morph = spec.method != FidelityMethod::kTcsbSwitchSurface;
+      return std::make_unique<TreeCutSubject>(std::move(body), std::move(controller), budget, morph);
     }
   }
   return nullptr;

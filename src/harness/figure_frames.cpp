@@ -5,17 +5,18 @@
 
 #include "harness/case_body.h"
 #include "harness/reconstruction.h"
+#include "harness/surface_morph.h"
 #include "softbody/divergence.h"
 
 namespace tcsb {
 
 namespace {
 
-FigureFrame capture(int step, const CaseBody& plain, const TcSoftBody& tc) {
+FigureFrame capture(int step, const CaseBody& plain, const TcSoftBody& tc, SurfaceMorph& morph) {
   FigureFrame f;
   f.step = step;
   copy_positions(plain.bullet(), f.plain);
-  reconstruct_leaves(tc, f.tcsb_surface);
+  morph.reconstruct(tc, f.tcsb_surface);
   copy_positions(tc, f.tcsb_nodes);
   const btSoftBody::Node* first = &tc.m_nodes[0];
   f.tcsb_links.reserve(static_cast<std::size_t>(tc.m_links.size()));
@@ -56,14 +57,20 @@ FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, dou
 
   if (steps.empty()) return out;
   const btScalar dt = static_cast<btScalar>(suite.world.dt);
+  // The surface as the fidelity pass shows it, geomorphed. The morph must see every step to see each operation
+  // while it starts; a case body steps boundary and Bullet together, so it sees them one step in (near enough for
+  // a figure: the pass itself looks between the two).
+  SurfaceMorph morph;
+  std::vector<Eigen::Vector3d> surface;
   std::size_t next = 0;
   for (int s = 0;; ++s) {
     if (steps[next] == s) {
-      out.frames.push_back(capture(s, *plain, *tc->tc()));
+      out.frames.push_back(capture(s, *plain, *tc->tc(), morph));
       if (++next == steps.size()) break;
     }
     plain->step(dt);
     tc->step(dt);
+    morph.reconstruct(*tc->tc(), surface);
     for (const CaseBody* body : {plain.get(), tc.get()}) {
       if (auto diverged = divergence_after_step(body->bullet(), net->extent(), s, steps.back())) {
         out.diverged_step = s;

@@ -25,7 +25,7 @@ struct FrameLink {
 struct FigureFrame {
   int step = 0;
   std::vector<Eigen::Vector3d> plain;         ///< plain Bullet, one point per grid node (row-major, width x height)
-  std::vector<Eigen::Vector3d> tcsb_surface;  ///< TC-SB reconstructed at every grid node (reconstruct_leaves)
+  std::vector<Eigen::Vector3d> tcsb_surface;  ///< TC-SB reconstructed at every grid node, geomorphed (SurfaceMorph)
   std::vector<Eigen::Vector3d> tcsb_nodes;    ///< TC-SB's simulated (Bullet) nodes
   std::vector<FrameLink> tcsb_links;          ///< TC-SB's Bullet links
   int interpolations = 0;                     ///< operations blending (the paper's I)

@@ -24,23 +24,29 @@ namespace tcsb {
 void fill_block(const LodTree& tree, TreeId id, const Eigen::Vector3d& x, const Eigen::Matrix<double, 3, 2>& f,
                 std::span<Eigen::Vector3d> leaves);
 
-/// How the surface passes from an operation's old nodes to its new ones.
-enum class SurfaceBlend {
-  /// A geomorph (Hoppe, "Progressive Meshes", SIGGRAPH 1996, §4.2): while an operation blends, each leaf of its
-  /// block is w x (from the new nodes) + (1 - w) x (from the old ones), w = body.arrival_weight(new node), the weight
-  /// its fading-in links carry. The surface then moves to the new cut in K + 1 steps of 1/(K + 1) each, as the
-  /// physics does, instead of jumping when the operation begins.
-  kGeomorph,
-  /// The committed cut alone: the surface takes the new nodes' shape as soon as an operation begins.
-  kSwitch,
-};
+/// Every leaf of a TC-SB body reconstructed from its committed cut (active and arriving nodes), with
+/// F = body.local_affine_fit(A) whatever the placement setting, so rigid and affine placement are measured by the
+/// same instrument. The surface takes an operation's new nodes' shape as soon as it begins; SurfaceMorph
+/// (harness/surface_morph.h) spreads that change over the blend. `leaves` is resized to the net's node count.
+/// O(N + cut size x degree).
+void reconstruct_leaves(const TcSoftBody& body, std::vector<Eigen::Vector3d>& leaves);
 
-/// Every leaf of a TC-SB body reconstructed from its cut, with F = body.local_affine_fit(A) whatever the placement
-/// setting, so rigid and affine placement are measured by the same instrument: from the committed cut (active and
-/// arriving nodes), geomorphed with the leaving nodes while operations blend unless `blend` is kSwitch. `leaves` is
-/// resized to the net's node count. O(N + cut size x degree).
-void reconstruct_leaves(const TcSoftBody& body, std::vector<Eigen::Vector3d>& leaves,
-                        SurfaceBlend blend = SurfaceBlend::kGeomorph);
+/// The leaves of an arriving node's block as the operation's leaving nodes reconstruct them: a refine's parent, or a
+/// coarse's children. Writes only the block's leaves. O(block leaves + degree).
+void reconstruct_from_leaving(const TcSoftBody& body, TreeId arriving, std::span<Eigen::Vector3d> leaves);
+
+/// Calls visit(leaf) for every leaf in the block of tree node `id` (the node itself when it is a leaf), row by row.
+template <class Visit>
+void for_each_leaf(const LodTree& tree, TreeId id, Visit visit) {
+  const LodNode& node = tree.node(id);
+  if (node.is_leaf()) {
+    visit(id);
+    return;
+  }
+  const int width = tree.level_width(0);
+  for (int gy = node.leaf_y0; gy < node.leaf_y1; ++gy)
+    for (int gx = node.leaf_x0; gx < node.leaf_x1; ++gx) visit(static_cast<TreeId>(gy * width + gx));
+}
 
 /// The body's node positions as doubles (a stock body built from a net: node i is grid node i).
 void copy_positions(const btSoftBody& body, std::vector<Eigen::Vector3d>& out);
