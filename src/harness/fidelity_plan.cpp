@@ -12,7 +12,7 @@ const char* fidelity_method_name(FidelityMethod method) {
     case FidelityMethod::kSwitch: return "switch_body";
     case FidelityMethod::kTcsbRandom: return "tcsb_random";
     case FidelityMethod::kTcsbRigid: return "tcsb_rigid";
-    case FidelityMethod::kTcsbSwitchSurface: return "tcsb_no_geomorph";
+    case FidelityMethod::kTcsbNoGeomorph: return "tcsb_no_geomorph";
   }
   return "unknown";
 }
@@ -29,7 +29,7 @@ std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
   if (!suite.fidelity.ablations) return plan;
   for (const FidelityMethod m :
        {FidelityMethod::kUniform, FidelityMethod::kSwitch, FidelityMethod::kTcsbRandom, FidelityMethod::kTcsbRigid,
-        FidelityMethod::kTcsbSwitchSurface})
+        FidelityMethod::kTcsbNoGeomorph})
     for (const double c : suite.compression)
       if (c < 1.0) plan.push_back({m, c});
   return plan;

@@ -19,8 +19,8 @@ enum class FidelityMethod {
                 ///< paper's stated alternative: "a new SoftBody has to be created", §6) (ablation)
   kTcsbRandom,  ///< TC-SB driven by seeded random operations instead of saliency (ablation)
   kTcsbRigid,   ///< TC-SB with the paper's rigid-offset child placement instead of the affine fit (ablation)
-  kTcsbSwitchSurface,  ///< TC-SB, the same body, its surface switched at once instead of geomorphed (ablation;
-                       ///< harness/reconstruction.h)
+  kTcsbNoGeomorph,  ///< TC-SB, the same body, its surface switched at once instead of geomorphed (ablation;
+                    ///< harness/surface_morph.h)
 };
 
 /// Name used in reports: "tcsb", "uniform_grid", "switch_body", "tcsb_random", "tcsb_rigid", "tcsb_no_geomorph".

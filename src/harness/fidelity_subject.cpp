@@ -222,7 +222,7 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
     case FidelityMethod::kTcsb:
     case FidelityMethod::kTcsbRandom:
     case FidelityMethod::kTcsbRigid:
-    case FidelityMethod::kTcsbSwitchSurface: {
+    case FidelityMethod::kTcsbNoGeomorph: {
       TcSettings tc = suite.tcsb;
       if (spec.method == FidelityMethod::kTcsbRigid) tc.placement = Placement::kRigid;
       FeedbackSettings feedback = suite.feedback;
@@ -231,7 +231,7 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
       auto body = std::make_unique<TcSoftBody>(world, std::move(net), suite.solver, tc);
       std::unique_ptr<Controller> controller;
       if (compressed) controller = make_controller(feedback, budget, seed);
-      const bool morph = spec.method != FidelityMethod::kTcsbSwitchSurface;
+      const bool morph = spec.method != FidelityMethod::kTcsbNoGeomorph;
       return std::make_unique<TreeCutSubject>(std::move(body), std::move(controller), budget, morph);
     }
   }
