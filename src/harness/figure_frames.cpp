@@ -12,11 +12,12 @@ namespace tcsb {
 
 namespace {
 
-FigureFrame capture(int step, const CaseBody& plain, const TcSoftBody& tc, SurfaceMorph& morph) {
+FigureFrame capture(int step, const CaseBody& plain, const TcSoftBody& tc,
+                    const std::vector<Eigen::Vector3d>& surface) {
   FigureFrame f;
   f.step = step;
   copy_positions(plain.bullet(), f.plain);
-  morph.reconstruct(tc, f.tcsb_surface);
+  f.tcsb_surface = surface;
   copy_positions(tc, f.tcsb_nodes);
   const btSoftBody::Node* first = &tc.m_nodes[0];
   f.tcsb_links.reserve(static_cast<std::size_t>(tc.m_links.size()));
@@ -64,13 +65,13 @@ FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, dou
   std::vector<Eigen::Vector3d> surface;
   std::size_t next = 0;
   for (int s = 0;; ++s) {
+    morph.reconstruct(*tc->tc(), surface);
     if (steps[next] == s) {
-      out.frames.push_back(capture(s, *plain, *tc->tc(), morph));
+      out.frames.push_back(capture(s, *plain, *tc->tc(), surface));
       if (++next == steps.size()) break;
     }
     plain->step(dt);
     tc->step(dt);
-    morph.reconstruct(*tc->tc(), surface);
     for (const CaseBody* body : {plain.get(), tc.get()}) {
       if (auto diverged = divergence_after_step(body->bullet(), net->extent(), s, steps.back())) {
         out.diverged_step = s;

@@ -6,6 +6,10 @@ namespace tcsb {
 
 void SurfaceMorph::reconstruct(const TcSoftBody& body, std::vector<Eigen::Vector3d>& leaves) {
   reconstruct_leaves(body, leaves);
+  if (body.interpolations() == 0) {  // nothing blends: no jump left to spread, and no need to look for one
+    jumps_.clear();
+    return;
+  }
   const LodTree& tree = body.tree();
   // Operations that ended: their blocks show the committed cut alone now.
   for (auto it = jumps_.begin(); it != jumps_.end();)
