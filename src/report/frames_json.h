@@ -10,7 +10,7 @@
 
 namespace tcsb {
 
-/// Version of the frames layout (scripts/plot_figure6.py reads it). 1: the first, with a context block.
+/// Version of the frames layout that scripts/plot_figure6.py reads. 1: the first, with a context block.
 inline constexpr int kFramesSchemaVersion = 1;
 
 /// {"schema_version", "tool": "tcsb", "kind": "frames", "context" (context_json), "suite" (suite_json), "net": {name,
