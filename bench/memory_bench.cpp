@@ -1,10 +1,10 @@
 // Memory benchmarks: what one cache miss costs on this machine, and how many can overlap. No TC-SB code runs here.
 //
 // Why they are in this bench: beyond the L2 an operation's time is set by its cache misses, not by its work
-// (README, "Operations in constant time"). How flat an operation's cost can be in N is therefore bounded by the
-// machine: at least (dependent levels of misses) x (latency of one miss), and at least (lines touched) / (misses in
-// flight) rounds of that latency. This benchmark measures the two machine figures, so the bound can be
-// recomputed on any machine (bench/README.md, "The memory floor").
+// (docs/methodology.md, "Operations in constant time"). How flat an operation's cost can be in N is therefore
+// bounded by the machine: at least (dependent levels of misses) x (latency of one miss), and at least
+// (lines touched) / (misses in flight) rounds of that latency. This benchmark measures the two machine figures, so
+// the bound can be recomputed on any machine (docs/methodology.md, "The memory floor").
 //
 // BM_DependentLoads/MiB:m/chains:k walks k independent pointer chains through one buffer of m MiB whose 64-byte lines
 // are linked in a single random cycle (Sattolo's algorithm: every line once, no short loops), k steps per round —

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Checks that the compiler kept the software prefetches of src/softbody/tc_prefetch.cpp. GCC treats
 # __builtin_prefetch as free of effects and may delete a loop that does nothing else, silently: the code then still
-# builds and passes every test, and only the benchmarks get slower (this happened twice while experimenting; README,
-# "Operations in constant time"). So CTest counts the prefetch instructions in each function's disassembly and
-# requires at least one per prefetch call in the source, which a deleted wave or loop falls below.
+# builds and passes every test, and only the benchmarks get slower (this happened twice while experimenting;
+# docs/methodology.md, "Tried and left out"). So CTest counts the prefetch instructions in each function's
+# disassembly and requires at least one per prefetch call in the source, which a deleted wave or loop falls below.
 # Usage: check-prefetch-emitted.sh OBJDUMP OBJECTS   (the library's objects, as arguments or one ;-separated list;
 # tc_prefetch.cpp's is picked out)
 set -euo pipefail

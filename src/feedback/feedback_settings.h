@@ -11,7 +11,7 @@ enum class PolicyKind {
   kRandom,    ///< seeded random choices under the same budget (an ablation, and the driver before feedback existed)
 };
 
-/// Feedback stage parameters. Defaults are documented in README ("Feedback stage").
+/// Feedback stage parameters. Defaults are documented in docs/design.md ("The feedback loop").
 struct FeedbackSettings {
   PolicyKind policy = PolicyKind::kSaliency;
   double threshold = 0.05;            ///< hysteresis: a refine must beat the coarse it forces by this much

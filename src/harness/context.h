@@ -34,7 +34,8 @@ struct Context {
   double load_average_1m = 0;         ///< /proc/loadavg first field at gather time
   /// Transparent huge pages mode (the bracketed choice of /sys/kernel/mm/transparent_hugepage/enabled, e.g.
   /// "madvise"), "" if absent; and the GLIBC_TUNABLES environment variable, "" if unset. Operations on large nets
-  /// run 10-17 % faster with glibc.malloc.hugetlb=1 (README): numbers are only comparable with both known.
+  /// run 10-17 % faster with glibc.malloc.hugetlb=1 (docs/methodology.md, "Huge pages"): numbers are only
+  /// comparable with both known.
   std::string transparent_hugepages;
   std::string glibc_tunables;
   std::string compiler;               ///< compiler id and version, e.g. "GNU 12.2.0"

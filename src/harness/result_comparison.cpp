@@ -117,7 +117,7 @@ bool has_time_budget(const ResultView& r) {
 
 std::vector<std::string> machine_differences(const ResultView& base, const ResultView& next) {
   // What makes absolute times incomparable; the host name and date differ between any two runs and say nothing.
-  // Huge pages change large nets' step and operation times by 10-17 % (README, "Operations in constant time").
+  // Huge pages change large nets' step and operation times by 10-17 % (docs/methodology.md, "Huge pages").
   static const char* const kMachineKeys[] = {
       "cpu_model", "cores",          "compiler",         "cxx_flags",             "build_type",    "optimized",
       "sanitized", "bullet_version", "bullet_precision", "transparent_hugepages", "glibc_tunables"};

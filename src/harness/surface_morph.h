@@ -7,7 +7,7 @@
 // 1/(K+1) per step, 1 when it ends). So the surface moves by D/(K+1) per step boundary instead of D at once, while
 // following the new nodes' motion. The jump is frozen, not recomputed from the leaving nodes each step: those are
 // still simulated while their links fade, and drift from the surface (measured: mixing them in step by step popped
-// 1.2-2.0 % of the net's extent at the worst step, README "Fidelity results").
+// 1.2-2.0 % of the net's extent at the worst step, docs/methodology.md, "Tried and left out").
 #pragma once
 
 #include <Eigen/Core>

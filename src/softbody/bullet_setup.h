@@ -33,10 +33,12 @@ void apply_solver_settings(btSoftBody& body, const SolverSettings& settings);
 void init_net_nodes(btSoftBody& body, const Net& net, int capacity = 0);
 
 /// Appends the net's links in canonical order with stock appendLink(), then lets Bullet compute every link
-/// constant once, at rest (updateConstants), and clears the dirty flag so no later step redoes it (notes §4).
+/// constant once, at rest (updateConstants), and clears the dirty flag so no later step redoes it (docs/design.md,
+/// "Link constants and the m_bUpdateRtCst trap").
 void append_net_links(btSoftBody& body, const Net& net);
 
-/// One step exactly as btSoftRigidDynamicsWorld would do it for a lone body without collisions (notes §5).
+/// One step exactly as btSoftRigidDynamicsWorld would do it for a lone body without collisions (docs/design.md,
+/// "One step").
 inline void step_soft_body(btSoftBody& body, btScalar dt) {
   body.predictMotion(dt);
   body.solveConstraints();

@@ -12,7 +12,7 @@ namespace tcsb {
 struct SoftBodyWorld {
   explicit SoftBodyWorld(const WorldSettings& settings) : settings(settings) {
     info.m_gravity.setValue(0, static_cast<btScalar>(-settings.gravity), 0);
-    info.m_broadphase = nullptr;  // bodies are stepped solo, outside any collision world (notes §5)
+    info.m_broadphase = nullptr;  // bodies are stepped solo, outside any collision world (docs/design.md, "One step")
     info.m_dispatcher = nullptr;
   }
   SoftBodyWorld(const SoftBodyWorld&) = delete;

@@ -4,7 +4,8 @@
 namespace tcsb {
 
 /// Bullet soft-body solver settings (btSoftBody::Config and the default material). Bullet's own defaults are
-/// piterations = 1, which diverges at 65x65 with fixed corners (notes §9), so suites always state theirs.
+/// piterations = 1, which diverges at 65x65 with fixed corners (docs/design.md, "Solver defaults"), so suites always
+/// state theirs.
 struct SolverSettings {
   int piterations = 2;            ///< position (link) solver iterations
   int viterations = 0;            ///< velocity solver iterations

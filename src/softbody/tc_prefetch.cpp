@@ -4,15 +4,15 @@
 // cache lines scattered over arrays sized by the net (the tree, the per-tree-node arrays, Bullet's nodes and links).
 // Once those arrays outgrow the L2 cache (between 65^2 and 129^2 grid nodes) each of those reads misses, and in
 // program order the misses queue one behind the other: the operation's wall time grows with N although its work
-// does not (bench/README.md, "flatness"). Prefetching the footprint in waves — each wave's addresses come from the
-// lines the previous wave loaded — lets the misses of a wave overlap: the operation then waits for about one
-// memory latency per wave instead of one per line.
+// does not (docs/methodology.md, "Operations in constant time"). Prefetching the footprint in waves — each wave's
+// addresses come from the lines the previous wave loaded — lets the misses of a wave overlap: the operation then
+// waits for about one memory latency per wave instead of one per line.
 //
 // Measured (tcsb_bench, begin operations, builds with and without it run alternately, 3 rounds): at 513^2 refine
 // 5.0-7.0 -> 3.6-3.9 us and coarse 4.0-6.0 -> 3.4-3.6 us; at 33^2-65^2 inside the noise. The end operations do
 // not call it: their blocks were touched by the blend steps just before, and there it only cost time (in real runs
-// too: with it, end-refine's and end-coarse's cost grew no less from n45 to n81 — README, "Operations in constant
-// time").
+// too: with it, end-refine's and end-coarse's cost grew no less from n45 to n81 — docs/methodology.md, "Tried and
+// left out").
 //
 // What the end operations miss instead (callgrind on a real run, n81 at 75 %) is mostly outside their block: each
 // link they remove is swapped with the array's last link, whose two endpoints' incidence lists are re-pointed, and
@@ -31,7 +31,7 @@
 // 2 MiB simulated cache per call at 513^2 (scripts/op-instructions.sh), before -> after those changes: begin-refine
 // 64.8 -> 46.8, begin-coarse 81.2 -> 60.0, end-refine 3.2 -> 7.9, end-coarse 17.2 -> 26.8 (the bench's end
 // operation follows its begin at once, so lines a begin no longer touches show up there). In real runs every
-// operation got cheaper and flatter (README, "Operations in constant time").
+// operation got cheaper and flatter (docs/methodology.md, "Operations in constant time").
 //
 // GCC treats __builtin_prefetch as free of effects and may delete a loop that only prefetches, without a warning.
 // The CTest test softbody.prefetch_instructions_emitted counts the instructions left in this file's object

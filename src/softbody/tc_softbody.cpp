@@ -38,7 +38,7 @@ TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, con
   const std::size_t leaves = lod.leaf_count();
 
   // Bullet's node array is reserved once for every node of the tree, so no operation ever reallocates it and the
-  // raw Node* held by links and DBVT leaves stay valid (notes §3).
+  // raw Node* held by links and DBVT leaves stay valid (docs/design.md, "The node array and raw pointers").
   init_net_nodes(*this, *net_, static_cast<int>(tree_size));
   apply_solver_settings(*this, solver);
   // Room for every link the body can hold at once: the finest cut's links plus what blending operations add. The
@@ -216,7 +216,7 @@ void TcSoftBody::refresh_link_constant(int link) {
   // nodes), the stiffness from the body's one material, which every link uses (validate() checks both), so that
   // only the line holding m_c0 is touched, not the link's first line too (a 72-byte link usually spans two). A
   // blend divides it by alpha, which scales the solver's correction by alpha without touching the rest length
-  // (notes §6a).
+  // (docs/design.md, "Blending through m_c0").
   l.m_c0 = (record(meta.a).inv_mass + record(meta.b).inv_mass) / m_materials[0]->m_kLST;
   const double alpha = blend_alpha(meta);
   if (alpha != 1.0) l.m_c0 = static_cast<btScalar>(l.m_c0 / alpha);

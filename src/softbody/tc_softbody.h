@@ -1,7 +1,7 @@
 // TcSoftBody: the TreeCut soft body — a btSoftBody whose simulated nodes are a cut through the net's LOD tree,
 // refined and coarsened at run time in constant time, with link blending between the old and the new state.
 //
-// How it stays inside Bullet's rules (see ../shared/notes/bullet-softbody.md):
+// How it stays inside Bullet's rules (docs/design.md, "The cut inside btSoftBody" and "Bullet internals that matter"):
 //  * Bullet's node array is reserved once for every node of the tree, so no operation ever reallocates it and the
 //    raw Node* held by links and DBVT leaves stay valid; our own references are indices.
 //  * Nodes and links are removed by swap-with-last; the one node or link that moves is re-pointed through the

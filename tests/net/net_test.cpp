@@ -94,7 +94,7 @@ TEST(Net, KnownSmallLinkCounts) {
   EXPECT_EQ(Net(spec_of(3, 7, true)).links().size(), 56u);
   EXPECT_EQ(Net(spec_of(3, 7, false, true)).links().size(), 54u);
   EXPECT_EQ(Net(spec_of(3, 7, true, true)).links().size(), 78u);
-  EXPECT_EQ(Net(spec_of(65, 65)).links().size(), 8320u);  // notes §9: gendiags=false at 65^2
+  EXPECT_EQ(Net(spec_of(65, 65)).links().size(), 8320u);  // W(H-1) + H(W-1) structural links
 }
 
 TEST(Net, LinksJoinTheRightGridNeighboursOnceEach) {
