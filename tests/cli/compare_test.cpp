@@ -291,6 +291,16 @@ TEST_F(Compare, NegativeTimesAreBadInputNotFaster) {
                                        "step takes time), got -0.5");
 }
 
+TEST_F(Compare, AnInfiniteTimeIsBadInput) {
+  // JSON has no infinity, but a number too large for a double reads as one.
+  ojson next = base_;
+  next["cases"][2]["repetitions"][4]["mean_step_ms"] = "INFINITE";
+  std::string text = next.dump(2);
+  text.replace(text.find("\"INFINITE\""), 10, "1e400");
+  write_file(dir_ / "new.json", text);
+  expect_bad_input(tcsb("compare base.json new.json"), "tcsb: error: new.json: not valid JSON: number overflow");
+}
+
 TEST_F(Compare, NegativeNodeCountsAreBadInput) {
   ojson next = base_;
   next["cases"][1]["repetitions"][2]["mean_nodes"] = -81.0;
