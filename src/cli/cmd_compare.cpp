@@ -2,7 +2,10 @@
 // exits 1 when behaviour changed — a deterministic quantity (N, L, I, operations, status, final-state hash)
 // differs — or a timing metric regressed: significantly (one-sided U test, Holm over the gated metrics) AND by more
 // than the threshold. By default only same-run ratios gate, because they survive a noisy shared machine; absolute
-// step times gate only with --absolute. Runs of different suites or settings are refused (exit 2).
+// step times gate only with --absolute. It fails closed: every case (by label) and repetition (by number) must be
+// matched one to one, impossible values (a time <= 0, an ok repetition without one) are refused while reading, and
+// with no reliable timing metric it cannot pass. Runs of different suites or settings are refused (exit 2), and so
+// are runs the gate cannot decide on.
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <iostream>
@@ -40,7 +43,7 @@ void warn_about_contexts(const LoadedResult& base, const LoadedResult& next, con
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
   CLI::App* cmd = app.add_subcommand(
       "compare", "Regression gate: compare two results of the same suite (exit 0 pass, 1 regression or changed "
-                 "behaviour, 2 bad input or different suites)");
+                 "behaviour, 2 bad input, different suites or no timing metric to decide on)");
   cmd->add_option("base", args.base, "Baseline result (a `tcsb run` JSON file)")->required();
   cmd->add_option("new", args.next, "New result of the same suite")->required();
   cmd->add_option("--alpha", args.alpha, "Family-wise significance level of the U tests (Holm), in (0, 1)")
@@ -68,12 +71,20 @@ int compare_command(const CompareArgs& args) {
   } catch (const SuiteMismatch& e) {
     throw UsageError(e.what());
   }
-  warn_about_contexts(base, next, comparison);
-
   GateSettings settings;
   settings.alpha = args.alpha;
   settings.threshold = args.threshold;
   const GateOutcome outcome = decide_gate(std::move(comparison), settings, args.absolute);
+  // No reliable gated metric: the gate measured nothing, so it must not pass (kExitOk). Nor has it failed
+  // (kExitFailed means a gate decided that something failed): that would report a regression nobody measured. The
+  // files cannot answer the question (too few repetitions, no TC-SB case with a plain partner): bad input,
+  // kExitUsage, one line and no summary, as for any unusable input. Changed behaviour is decided without timings,
+  // so it still fails (kExitFailed) below, with its summary.
+  if (!outcome.timings_decided() && !outcome.behaviour_changed()) {
+    throw UsageError(base.view.file + " and " + next.view.file + ": the gate cannot decide: " +
+                     undecided_reason(outcome));
+  }
+  warn_about_contexts(base, next, outcome.comparison);
   const std::string summary = comparison_summary_markdown(outcome, base.view, next.view);
   if (args.summary.empty()) {
     std::cerr << summary << '\n';

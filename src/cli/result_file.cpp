@@ -19,8 +19,10 @@ LoadedResult load_result_file(const std::string& path) {
   LoadedResult result;
   try {
     result.document = nlohmann::ordered_json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    // e.what() starts with "[json.exception.parse_error.101] ": the reader wants where and what, not the id.
+  } catch (const nlohmann::json::exception& e) {
+    // A syntax error (parse_error) or a number too large for a double, such as a time of 1e400 (out_of_range.406):
+    // both are bad input, never an internal error. e.what() starts with "[json.exception.parse_error.101] ": the
+    // reader wants where and what, not the id.
     const std::string what = e.what();
     const std::size_t cut = what.find("] ");
     throw UsageError(path + ": not valid JSON: " + (cut == std::string::npos ? what : what.substr(cut + 2)));

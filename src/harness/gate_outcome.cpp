@@ -22,6 +22,12 @@ std::size_t reliable(const std::vector<TimingDecision>& decisions) {
 
 }  // namespace
 
+std::size_t GateOutcome::unreliable_metrics() const {
+  std::size_t n = count(ratio_decisions, TimingVerdict::kUnreliable);
+  if (absolute_gated) n += count(step_decisions, TimingVerdict::kUnreliable);
+  return n;
+}
+
 GateOutcome decide_gate(ResultComparison comparison, const GateSettings& settings, bool absolute_gated) {
   GateOutcome out;
   out.settings = settings;

@@ -22,10 +22,16 @@ struct GateOutcome {
   std::size_t regressions = 0;                 ///< gated metrics that regressed
   std::size_t warnings = 0;                    ///< step times that would have regressed had they been gated
 
-  /// Behaviour changed: a deterministic quantity differs.
+  /// Behaviour changed: a deterministic quantity differs, or a case or repetition is not matched one to one.
   bool behaviour_changed() const { return !comparison.changes.empty(); }
-  /// The gate passes: no regression and no changed behaviour.
-  bool pass() const { return regressions == 0 && !behaviour_changed(); }
+  /// The timings were decided: at least one gated metric is reliable. With none (too few repetitions, no TC-SB
+  /// case with a plain case on its net) the gate has not measured anything, and a gate that fails closed cannot
+  /// call that a pass.
+  bool timings_decided() const { return gated_metrics > 0; }
+  /// Gated metrics that are unreliable (too few samples on a side): reported, never decided.
+  std::size_t unreliable_metrics() const;
+  /// The gate passes: the timings were decided, with no regression, and no behaviour changed.
+  bool pass() const { return timings_decided() && regressions == 0 && !behaviour_changed(); }
 };
 
 /// Decides the timings of `comparison`. Throws std::invalid_argument on bad settings (see decide_timings).

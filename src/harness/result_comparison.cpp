@@ -1,7 +1,8 @@
 #include "harness/result_comparison.h"
 
 #include <charconv>
-#include <map>
+
+#include "harness/one_to_one_match.h"
 
 namespace tcsb {
 namespace {
@@ -73,25 +74,48 @@ std::string status_text(const RepetitionView& r) {
 class ChangeList {
  public:
   explicit ChangeList(std::vector<BehaviourChange>& out) : out_(out) {}
+  /// Records a change when the two values differ.
   void check(const std::string& label, const char* metric, std::optional<int> rep, const std::string& a,
              const std::string& b) {
-    if (a != b) out_.push_back({label, metric, rep, a, b});
+    if (a != b) add(label, metric, rep, a, b);
+  }
+  /// Records a change whatever the values say ("2 entries" on both sides still cannot be matched).
+  void add(const std::string& label, const char* metric, std::optional<int> rep, const std::string& a,
+           const std::string& b) {
+    out_.push_back({label, metric, rep, a, b});
   }
 
  private:
   std::vector<BehaviourChange>& out_;
 };
 
-void compare_repetitions(const CaseView& a, const CaseView& b, ChangeList& changes, std::size_t& compared) {
-  std::map<int, const RepetitionView*> next;
-  for (const RepetitionView& r : b.repetitions) next[r.repetition] = &r;
-  changes.check(a.label, "repetitions", std::nullopt, std::to_string(a.repetitions.size()),
-                std::to_string(b.repetitions.size()));
-  for (const RepetitionView& ra : a.repetitions) {
-    const auto it = next.find(ra.repetition);
-    if (it == next.end()) continue;  // already reported through the count
-    const RepetitionView& rb = *it->second;
-    ++compared;
+/// A key's occurrences in one run, for a change row: a one-to-one match needs "present" on both sides.
+std::string occurrence(std::size_t count) {
+  if (count == 0) return "absent";
+  if (count == 1) return "present";
+  return std::to_string(count) + " entries";
+}
+
+/// Matches the repetitions of one case by number (never by position) and counts the matched ones in `compared`.
+/// A missing, extra or duplicated number is changed behaviour in any run: which repetitions ran does not depend on
+/// the machine. The values of a matched pair are compared only when the run is deterministic.
+void compare_repetitions(const CaseView& a, const CaseView& b, bool deterministic, ChangeList& changes,
+                         std::size_t& compared) {
+  const auto numbers = [](const CaseView& c) {
+    std::vector<int> out;
+    for (const RepetitionView& r : c.repetitions) out.push_back(r.repetition);
+    return out;
+  };
+  const std::vector<int> numbers_a = numbers(a), numbers_b = numbers(b);
+  const OneToOneMatch<int> match = match_one_to_one<int>(numbers_a, numbers_b);
+  for (const KeyOccurrences<int>& u : match.unmatched) {
+    changes.add(a.label, kPresenceMetric, u.key, occurrence(u.base), occurrence(u.next));
+  }
+  compared += match.pairs.size();
+  if (!deterministic) return;
+  for (const auto& [i, j] : match.pairs) {
+    const RepetitionView& ra = a.repetitions[i];
+    const RepetitionView& rb = b.repetitions[j];
     const int rep = ra.repetition;
     changes.check(a.label, "status", rep, status_text(ra), status_text(rb));
     changes.check(a.label, "N", rep, text(ra.mean_nodes), text(rb.mean_nodes));
@@ -102,10 +126,10 @@ void compare_repetitions(const CaseView& a, const CaseView& b, ChangeList& chang
   }
 }
 
-std::string joined_labels(const ResultView& r) {
-  std::string out;
-  for (const CaseView& c : r.cases) out += (out.empty() ? "" : ",") + c.label;
-  return shorten(out);
+std::vector<std::string> labels(const ResultView& r) {
+  std::vector<std::string> out;
+  for (const CaseView& c : r.cases) out.push_back(c.label);
+  return out;
 }
 
 bool has_time_budget(const ResultView& r) {
@@ -142,16 +166,17 @@ ResultComparison compare_results(const ResultView& base, const ResultView& next)
   out.deterministic = !has_time_budget(base);
   out.machine_differences = machine_differences(base, next);
 
-  std::map<std::string, std::size_t> next_index;
-  for (std::size_t i = 0; i < next.cases.size(); ++i) next_index.emplace(next.cases[i].label, i);
+  // Cases pair by label, one to one: a case missing from either run, added, or listed twice is changed
+  // behaviour (its row names the label), and is left out of the timings, which would otherwise pair the wrong data.
   ChangeList changes(out.changes);
-  changes.check("", "cases", std::nullopt, joined_labels(base), joined_labels(next));
+  const std::vector<std::string> labels_a = labels(base), labels_b = labels(next);
+  const OneToOneMatch<std::string> match = match_one_to_one<std::string>(labels_a, labels_b);
+  for (const KeyOccurrences<std::string>& u : match.unmatched) {
+    changes.add(u.key, kPresenceMetric, std::nullopt, occurrence(u.base), occurrence(u.next));
+  }
 
-  for (std::size_t i = 0; i < base.cases.size(); ++i) {
+  for (const auto& [i, j] : match.pairs) {
     const CaseView& a = base.cases[i];
-    const auto it = next_index.find(a.label);
-    if (it == next_index.end()) continue;
-    const std::size_t j = it->second;
     const CaseView& b = next.cases[j];
     ++out.cases;
     if (out.deterministic) {
@@ -159,10 +184,8 @@ ResultComparison compare_results(const ResultView& base, const ResultView& next)
       changes.check(a.label, "N", std::nullopt, text(a.mean_nodes), text(b.mean_nodes));
       changes.check(a.label, "L", std::nullopt, text(a.mean_links), text(b.mean_links));
       changes.check(a.label, "I", std::nullopt, text(a.mean_interpolations), text(b.mean_interpolations));
-      compare_repetitions(a, b, changes, out.repetitions);
-    } else {
-      out.repetitions += std::min(a.repetitions.size(), b.repetitions.size());
     }
+    compare_repetitions(a, b, out.deterministic, changes, out.repetitions);
 
     out.step_ms.push_back({a.label, kStepMsMetric, {ok_step_times(a), ok_step_times(b)}});
     if (a.method != "tcsb") continue;

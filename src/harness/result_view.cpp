@@ -48,6 +48,12 @@ class Fields {
     if (!std::isfinite(v)) fail(join(path, key), "must be finite");
     return v;
   }
+  /// number_or_null that is also >= 0: a count or a mean of counts (N, L, I), or a spread, is never negative.
+  std::optional<double> non_negative_or_null(const ojson& parent, const std::string& path, const char* key) const {
+    const std::optional<double> v = number_or_null(parent, path, key);
+    if (v && *v < 0.0) fail(join(path, key), "must be >= 0, got " + ojson(*v).dump());
+    return v;
+  }
   std::int64_t integer(const ojson& parent, const std::string& path, const char* key, std::int64_t lo,
                        std::int64_t hi) const {
     const ojson& j = member(parent, path, key);
@@ -81,15 +87,25 @@ class Fields {
   const std::string& file_;
 };
 
+/// A repetition's mean step time: a step takes time, so a recorded one is > 0, and an ok repetition timed every
+/// step, so it has one. Anything else cannot come from a run, and the gate must not read it as faster or slower.
+std::optional<double> read_step_time(const Fields& f, const ojson& j, const std::string& path, bool ok) {
+  const std::optional<double> ms = f.number_or_null(j, path, "mean_step_ms");
+  const std::string field = Fields::join(path, "mean_step_ms");
+  if (!ms && ok) f.fail(field, "null, but the repetition's status is \"ok\" (an ok repetition has a step time)");
+  if (ms && !(*ms > 0.0)) f.fail(field, "must be > 0 (a step takes time), got " + ojson(*ms).dump());
+  return ms;
+}
+
 RepetitionView read_repetition(const Fields& f, const ojson& j, const std::string& path) {
   RepetitionView r;
   r.repetition = static_cast<int>(f.integer(j, path, "repetition", 0, std::numeric_limits<int>::max()));
   r.status = f.string(j, path, "status");
   r.diverged_step = f.integer_or_null(j, path, "diverged_step");
-  r.mean_step_ms = f.number_or_null(j, path, "mean_step_ms");
-  r.mean_nodes = f.number_or_null(j, path, "mean_nodes");
-  r.mean_links = f.number_or_null(j, path, "mean_links");
-  r.mean_interpolations = f.number_or_null(j, path, "mean_interpolations");
+  r.mean_step_ms = read_step_time(f, j, path, r.status == "ok");
+  r.mean_nodes = f.non_negative_or_null(j, path, "mean_nodes");
+  r.mean_links = f.non_negative_or_null(j, path, "mean_links");
+  r.mean_interpolations = f.non_negative_or_null(j, path, "mean_interpolations");
   r.operations = f.integer(j, path, "operations", 0, std::numeric_limits<std::int64_t>::max());
   r.final_state_hash = f.string(j, path, "final_state_hash");
   return r;
@@ -103,14 +119,14 @@ CaseView read_case(const Fields& f, const ojson& j, const std::string& path) {
   c.method = f.string(j, path, "method");
   c.compression = f.number_or_null(j, path, "compression");
   c.status = f.string(j, path, "status");
-  c.mean_nodes = f.number_or_null(j, path, "mean_nodes");
-  c.mean_links = f.number_or_null(j, path, "mean_links");
-  c.mean_interpolations = f.number_or_null(j, path, "mean_interpolations");
+  c.mean_nodes = f.non_negative_or_null(j, path, "mean_nodes");
+  c.mean_links = f.non_negative_or_null(j, path, "mean_links");
+  c.mean_interpolations = f.non_negative_or_null(j, path, "mean_interpolations");
   const std::string step_path = Fields::join(path, "step_ms");
   const ojson& step_ms = f.object(j, path, "step_ms");
-  c.median_step_ms = f.number_or_null(step_ms, step_path, "median");
-  c.stddev_step_ms = f.number_or_null(step_ms, step_path, "stddev");
-  c.cv_step_ms = f.number_or_null(step_ms, step_path, "cv");
+  c.median_step_ms = f.non_negative_or_null(step_ms, step_path, "median");
+  c.stddev_step_ms = f.non_negative_or_null(step_ms, step_path, "stddev");
+  c.cv_step_ms = f.non_negative_or_null(step_ms, step_path, "cv");
   const ojson& reps = f.array(j, path, "repetitions");
   const std::string reps_path = Fields::join(path, "repetitions");
   for (std::size_t i = 0; i < reps.size(); ++i) {

@@ -26,7 +26,7 @@ struct RepetitionView {
   int repetition = 0;
   std::string status;                        ///< "ok" or "diverged"
   std::optional<int> diverged_step;
-  std::optional<double> mean_step_ms;        ///< null in the file (diverged) -> nullopt
+  std::optional<double> mean_step_ms;        ///< > 0; null in the file (diverged) -> nullopt, never when "ok"
   std::optional<double> mean_nodes, mean_links, mean_interpolations;
   std::int64_t operations = 0;
   std::string final_state_hash;
@@ -56,7 +56,9 @@ struct ResultView {
 };
 
 /// Reads a parsed native result document. Throws ResultFileError (naming `file` and the field) when it is not a
-/// tcsb result ("tool" is not "tcsb") or a field the readers use is missing or of the wrong type.
+/// tcsb result ("tool" is not "tcsb"), a field the readers use is missing or of the wrong type, or a value no run
+/// can produce: a repetition's mean_step_ms <= 0, or null where its status is "ok"; a negative N, L or I (mean
+/// nodes, links, interpolations) or step_ms median, stddev or cv.
 ResultView read_result(const nlohmann::ordered_json& doc, const std::string& file);
 
 /// The plain case of the same net as cases[index], or nullopt.

@@ -1,5 +1,6 @@
 #include "report/comparison_summary.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -76,7 +77,7 @@ void change_rows(std::ostream& out, const std::vector<BehaviourChange>& changes)
     } catch (const std::exception&) {
       // Not numbers (a hash, a status): no percentage.
     }
-    out << "| " << cell(c.case_label.empty() ? "(all)" : c.case_label) << " | " << cell(metric) << " | "
+    out << "| " << cell(c.case_label) << " | " << cell(metric) << " | "
         << cell(c.base) << " | " << cell(c.next) << " | " << change << " | – | **changed behaviour** |\n";
   }
   if (changes.size() > shown) {
@@ -94,9 +95,37 @@ std::string comparison_verdict_line(const GateOutcome& o) {
           plural(c.changes.size(), "behaviour change", "behaviour changes");
   line += " (" + plural(o.gated_metrics, "timing metric", "timing metrics") + " gated at alpha " +
           formatted("%g", o.settings.alpha) + ", threshold " + formatted("%g", 100.0 * o.settings.threshold) + " %";
+  if (const std::size_t unreliable = o.unreliable_metrics(); unreliable > 0) {
+    line += "; " + std::to_string(unreliable) + " unreliable, not gated";
+  }
   if (o.warnings > 0) line += "; " + plural(o.warnings, "absolute step time slower", "absolute step times slower") +
                               ", not gated";
+  if (!o.timings_decided()) line += "; timings undecided: " + undecided_reason(o);
   return line + ")";
+}
+
+std::string undecided_reason(const GateOutcome& o) {
+  std::size_t family = o.ratio_decisions.size();
+  std::size_t most = 0;  // the most samples any gated metric has on its smaller side
+  const auto scan = [&](const std::vector<TimingDecision>& decisions) {
+    for (const TimingDecision& d : decisions) most = std::max(most, std::min(d.base_count, d.next_count));
+  };
+  scan(o.ratio_decisions);
+  if (o.absolute_gated) {
+    family += o.step_decisions.size();
+    scan(o.step_decisions);
+  }
+  if (family == 0) {
+    return std::string("no timing metric to gate: no TC-SB case has a plain case on its net for `") + kRatioMetric +
+           "`" + (o.absolute_gated ? "" : " (--absolute gates the step times too)");
+  }
+  std::string reason = "none of the " + plural(family, "gated timing metric", "gated timing metrics") +
+                       " is reliable (each needs " + std::to_string(o.settings.min_samples) +
+                       " ok repetitions on both sides; the most any has is " + std::to_string(most) + ")";
+  if (most < o.settings.min_samples) {
+    reason += ": rerun with suite.repetitions >= " + std::to_string(o.settings.min_samples);
+  }
+  return reason;
 }
 
 std::string comparison_summary_markdown(const GateOutcome& o, const ResultView& base, const ResultView& next) {
@@ -113,13 +142,15 @@ std::string comparison_summary_markdown(const GateOutcome& o, const ResultView& 
   if (o.warnings > 0) out << ", " << plural(o.warnings, "warning", "warnings");
   out << ".**\n\n";
 
-  out << "How: deterministic metrics (N, L, I, operations, status, final-state hash, per case and repetition) must "
-         "match exactly. Timing: a metric regresses when the one-sided Mann–Whitney U test over repetitions is "
-         "significant at family-wise α = "
+  out << "How: every case (by label) and repetition (by number) must be present once in each run, and their "
+         "deterministic metrics (N, L, I, operations, status, final-state hash) must match exactly. Timing: a "
+         "metric regresses when the one-sided Mann–Whitney U test over repetitions is significant at family-wise "
+         "α = "
       << formatted("%g", o.settings.alpha) << " (Holm over the " << o.gated_metrics
       << " gated metrics; p-values below are Holm-adjusted) and its median grows by more than "
       << formatted("%g", 100.0 * o.settings.threshold) << " %; with fewer than " << o.settings.min_samples
-      << " repetitions on a side a metric is unreliable and never fails. Gated: `" << kRatioMetric
+      << " repetitions on a side a metric is unreliable and never fails, and with no reliable gated metric the gate "
+         "cannot pass. Gated: `" << kRatioMetric
       << "` (TC-SB step time / plain step time of the same net, per repetition, same run)"
       << (o.absolute_gated ? " and absolute `" + std::string(kStepMsMetric) + "`."
                            : "; absolute `" + std::string(kStepMsMetric) + "` is only reported (`--absolute` gates "

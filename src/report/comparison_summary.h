@@ -19,4 +19,8 @@ std::string comparison_summary_markdown(const GateOutcome& outcome, const Result
 /// One line for stderr: "PASS: ..." or "FAIL: N regressions, M behaviour changes ...".
 std::string comparison_verdict_line(const GateOutcome& outcome);
 
+/// Why the timings were not decided (outcome.timings_decided() is false), as one line without a period: no metric
+/// in the gated family, or none with enough samples.
+std::string undecided_reason(const GateOutcome& outcome);
+
 }  // namespace tcsb

@@ -21,7 +21,7 @@ class Compare : public Cli {
  protected:
   void SetUp() override {
     Cli::SetUp();
-    write_file(dir_ / "gate.json", kGateSuite);
+    write_file(dir_ / "gate.json", suite_);
     const Outcome o = tcsb("run gate.json --quiet --out base.json");
     ASSERT_EQ(o.exit_code, 0) << o.err;
     base_ = ojson::parse(read_file(dir_ / "base.json"));
@@ -49,7 +49,32 @@ class Compare : public Cli {
     for (ojson& r : doc["cases"][index]["repetitions"]) r["mean_step_ms"] = r["mean_step_ms"].get<double>() * factor;
   }
 
+  /// Sets the mean step time of every repetition of every case to `value` (a number or null).
+  static void set_all_times(ojson& doc, const ojson& value) {
+    for (ojson& c : doc["cases"]) {
+      for (ojson& r : c["repetitions"]) r["mean_step_ms"] = value;
+    }
+  }
+
+  /// Expects bad input: exit 2 and one line on stderr that starts with `expected`.
+  static void expect_bad_input(const Outcome& o, const std::string& expected) {
+    EXPECT_EQ(o.exit_code, 2) << o.err;
+    EXPECT_EQ(count_lines(o.err), 1) << o.err;
+    EXPECT_EQ(o.err.rfind(expected, 0), 0u) << o.err;
+  }
+
+  std::string suite_ = kGateSuite;  ///< the suite SetUp runs
   ojson base_;
+};
+
+/// A net name long enough that the labels of the three cases make a list of over 100 characters, as the ci suite's
+/// twenty cases do: the gate once compared the label lists cut to 60 characters, so a case missing or added after
+/// the cut went unseen.
+const std::string kLongNet = "a_net_of_nine_by_nine_nodes";
+
+class CompareLongLabels : public Compare {
+ protected:
+  CompareLongLabels() { suite_.replace(suite_.find("\"name\": \"n9\""), 12, "\"name\": \"" + kLongNet + "\""); }
 };
 
 TEST_F(Compare, TheSameResultPasses) {
@@ -187,6 +212,129 @@ TEST_F(Compare, SummaryFileIsWrittenAtomicallyAndStderrKeepsTheVerdict) {
   const Outcome bad = tcsb("compare base.json base.json --summary no_such_dir/summary.md");
   EXPECT_EQ(bad.exit_code, 2) << bad.err;
   EXPECT_EQ(bad.err.rfind("tcsb: error: --summary no_such_dir/summary.md: directory", 0), 0u) << bad.err;
+}
+
+TEST_F(CompareLongLabels, AMissingLaterCaseIsChangedBehaviour) {
+  for (const std::size_t gone : {std::size_t{1}, std::size_t{2}}) {
+    ojson next = base_;
+    const std::string label = next["cases"][gone]["label"];
+    next["cases"].erase(gone);
+    const Outcome o = compare_with(next);
+    EXPECT_EQ(o.exit_code, 1) << label << "\n" << o.err;
+    EXPECT_NE(o.err.find("| " + label + " | presence | present | absent |"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("FAIL: 0 regressions, 1 behaviour change"), std::string::npos) << o.err;
+  }
+}
+
+TEST_F(CompareLongLabels, AnExtraCaseIsChangedBehaviour) {
+  ojson next = base_;
+  ojson extra = next["cases"][2];
+  extra["label"] = kLongNet + "/tcsb@0.25";
+  next["cases"].push_back(extra);
+  const Outcome o = compare_with(next);
+  EXPECT_EQ(o.exit_code, 1) << o.err;
+  EXPECT_NE(o.err.find("| " + kLongNet + "/tcsb@0.25 | presence | absent | present |"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("FAIL: 0 regressions, 1 behaviour change"), std::string::npos) << o.err;
+}
+
+TEST_F(CompareLongLabels, ADuplicatedLabelIsChangedBehaviour) {
+  ojson next = base_;
+  next["cases"].push_back(next["cases"][2]);  // an exact copy: no value differs, only the matching can tell
+  const Outcome o = compare_with(next);
+  EXPECT_EQ(o.exit_code, 1) << o.err;
+  EXPECT_NE(o.err.find("| " + kLongNet + "/tcsb@0.5 | presence | present | 2 entries |"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("FAIL: 0 regressions, 1 behaviour change"), std::string::npos) << o.err;
+}
+
+TEST_F(Compare, RenumberedRepetitionsWithChangedHashesAreChangedBehaviour) {
+  ojson next = base_;
+  for (ojson& r : next["cases"][2]["repetitions"]) {
+    r["repetition"] = r["repetition"].get<int>() + 9;
+    r["final_state_hash"] = "0000000000000000";
+  }
+  const Outcome o = compare_with(next);
+  EXPECT_EQ(o.exit_code, 1) << o.err;
+  EXPECT_NE(o.err.find("| n9/tcsb@0.5 | presence (rep 0) | present | absent |"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("| n9/tcsb@0.5 | presence (rep 17) | absent | present |"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("FAIL: 0 regressions, 18 behaviour changes"), std::string::npos) << o.err;
+}
+
+TEST_F(Compare, ARepetitionDuplicatedInPlaceOfAnotherIsChangedBehaviour) {
+  ojson next = base_;
+  next["cases"][0]["repetitions"][7] = next["cases"][0]["repetitions"][8];
+  const Outcome o = compare_with(next);
+  EXPECT_EQ(o.exit_code, 1) << o.err;
+  EXPECT_NE(o.err.find("| n9/plain | presence (rep 7) | present | absent |"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("| n9/plain | presence (rep 8) | present | 2 entries |"), std::string::npos) << o.err;
+}
+
+TEST_F(Compare, AllZeroTimingsAreBadInput) {
+  ojson zero = base_;
+  set_all_times(zero, 0.0);
+  expect_bad_input(compare_with(zero),
+                   "tcsb: error: new.json: cases[0].repetitions[0].mean_step_ms: must be > 0 (a step takes time)");
+  write_file(dir_ / "zero.json", zero.dump(2));
+  expect_bad_input(tcsb("compare zero.json zero.json"), "tcsb: error: zero.json: cases[0].repetitions[0].mean_step_ms");
+}
+
+TEST_F(Compare, NullTimingsOfOkRepetitionsAreBadInput) {
+  ojson next = base_;
+  set_all_times(next, nullptr);
+  expect_bad_input(compare_with(next), "tcsb: error: new.json: cases[0].repetitions[0].mean_step_ms: null, but the "
+                                       "repetition's status is \"ok\"");
+}
+
+TEST_F(Compare, NegativeTimesAreBadInputNotFaster) {
+  ojson next = base_;
+  scale(next, 2, -1.0);
+  expect_bad_input(compare_with(next), "tcsb: error: new.json: cases[2].repetitions[0].mean_step_ms: must be > 0 (a "
+                                       "step takes time), got -0.5");
+}
+
+TEST_F(Compare, AnInfiniteTimeIsBadInput) {
+  // JSON has no infinity, but a number too large for a double reads as one.
+  ojson next = base_;
+  next["cases"][2]["repetitions"][4]["mean_step_ms"] = "INFINITE";
+  std::string text = next.dump(2);
+  text.replace(text.find("\"INFINITE\""), 10, "1e400");
+  write_file(dir_ / "new.json", text);
+  expect_bad_input(tcsb("compare base.json new.json"), "tcsb: error: new.json: not valid JSON: number overflow");
+}
+
+TEST_F(Compare, NegativeNodeCountsAreBadInput) {
+  ojson next = base_;
+  next["cases"][1]["repetitions"][2]["mean_nodes"] = -81.0;
+  expect_bad_input(compare_with(next), "tcsb: error: new.json: cases[1].repetitions[2].mean_nodes: must be >= 0");
+}
+
+TEST_F(Compare, TooFewRepetitionsCannotPass) {
+  write_file(dir_ / "five.json", nine_by_nine_suite("gate", 5));
+  ASSERT_EQ(tcsb("run five.json --quiet --out few.json").exit_code, 0);
+  expect_bad_input(tcsb("compare few.json few.json"),
+                   "tcsb: error: few.json and few.json: the gate cannot decide: none of the 2 gated timing metrics is "
+                   "reliable (each needs 9 ok repetitions on both sides; the most any has is 5): rerun with "
+                   "suite.repetitions >= 9");
+  // Changed behaviour needs no timings: still a decided failure, with its summary.
+  ojson changed = ojson::parse(read_file(dir_ / "few.json"));
+  changed["cases"][0]["repetitions"][1]["final_state_hash"] = "0000000000000000";
+  write_file(dir_ / "changed.json", changed.dump(2));
+  const Outcome o = tcsb("compare few.json changed.json");
+  EXPECT_EQ(o.exit_code, 1) << o.err;
+  EXPECT_NE(o.err.find("| n9/plain | final_state_hash (rep 1) |"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("FAIL: 0 regressions, 1 behaviour change"), std::string::npos) << o.err;
+}
+
+TEST_F(Compare, NoRatioMetricCannotPassWithoutAbsolute) {
+  ojson plain_only = base_;
+  plain_only["cases"].erase(2);
+  plain_only["cases"].erase(1);
+  write_file(dir_ / "plain.json", plain_only.dump(2));
+  expect_bad_input(tcsb("compare plain.json plain.json"),
+                   "tcsb: error: plain.json and plain.json: the gate cannot decide: no timing metric to gate");
+  const Outcome absolute = tcsb("compare plain.json plain.json --absolute");
+  EXPECT_EQ(absolute.exit_code, 0) << absolute.err;
+  EXPECT_NE(absolute.err.find("PASS: 0 regressions, 0 behaviour changes (1 timing metric gated"), std::string::npos)
+      << absolute.err;
 }
 
 }  // namespace

@@ -58,13 +58,47 @@ TEST(GateOutcome, ChangedBehaviourFailsEvenWithIdenticalTimes) {
   EXPECT_FALSE(o.pass());
 }
 
-TEST(GateOutcome, TooFewRepetitionsNeverFail) {
+TEST(GateOutcome, TooFewRepetitionsNeverRegressButCannotPass) {
   ojson base = result_doc(5), next = result_doc(5);
   scale_case(next, 1, 3.0);
   const GateOutcome o = gate(base, next);
-  EXPECT_TRUE(o.pass());
   EXPECT_EQ(o.ratio_decisions[0].verdict, TimingVerdict::kUnreliable);
+  EXPECT_EQ(o.regressions, 0u);
   EXPECT_EQ(o.gated_metrics, 0u);
+  EXPECT_EQ(o.unreliable_metrics(), 2u);
+  EXPECT_FALSE(o.timings_decided());
+  EXPECT_FALSE(o.pass()) << "nothing was measured: a gate that fails closed does not pass";
+  EXPECT_FALSE(gate(base, base).pass()) << "not even the same file";
+}
+
+TEST(GateOutcome, NoRatioMetricCannotPass) {
+  // Plain cases only: nothing for the default family; --absolute gates the step times instead.
+  ojson plain_only = result_doc();
+  plain_only["cases"].erase(3);
+  plain_only["cases"].erase(1);
+  const GateOutcome o = gate(plain_only, plain_only);
+  EXPECT_TRUE(o.ratio_decisions.empty());
+  EXPECT_FALSE(o.timings_decided());
+  EXPECT_FALSE(o.pass());
+  const GateOutcome absolute = gate(plain_only, plain_only, true);
+  EXPECT_EQ(absolute.gated_metrics, 2u);
+  EXPECT_TRUE(absolute.pass());
+}
+
+TEST(GateOutcome, SomeUnreliableMetricsAreCountedNotHidden) {
+  ojson base = result_doc(), next = result_doc();
+  for (ojson* doc : {&base, &next}) {
+    auto& reps = (*doc)["cases"][3]["repetitions"];  // n17/tcsb@0.5: only five repetitions ok
+    for (int r = 0; r < 4; ++r) {
+      reps[r]["status"] = "diverged";
+      reps[r]["diverged_step"] = 3;
+      reps[r]["mean_step_ms"] = nullptr;
+    }
+  }
+  const GateOutcome o = gate(base, next);
+  EXPECT_EQ(o.gated_metrics, 1u);
+  EXPECT_EQ(o.unreliable_metrics(), 1u);
+  EXPECT_TRUE(o.pass()) << "the other ratio decides";
 }
 
 }  // namespace

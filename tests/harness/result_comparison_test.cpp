@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "result_documents.h"
 
 namespace tcsb {
@@ -100,17 +102,148 @@ TEST(ResultComparison, EveryDeterministicDifferenceIsListed) {
   EXPECT_TRUE(has("n9/plain", "status", 1, "ok", "diverged at step 12"));
 }
 
-TEST(ResultComparison, MissingCasesAndRepetitionsAreChanges) {
+/// The change of `metric` in case `label` (repetition `rep`, or the case itself), or nullptr.
+const BehaviourChange* find_change(const ResultComparison& c, const std::string& label, const std::string& metric,
+                                   std::optional<int> rep = std::nullopt) {
+  for (const BehaviourChange& b : c.changes) {
+    if (b.case_label == label && b.metric == metric && b.repetition == rep) return &b;
+  }
+  return nullptr;
+}
+
+/// Expects exactly one presence change for `label` (and `rep`), with these occurrences.
+void expect_presence(const ResultComparison& c, const std::string& label, std::optional<int> rep,
+                     const std::string& base, const std::string& next) {
+  const BehaviourChange* b = find_change(c, label, kPresenceMetric, rep);
+  ASSERT_NE(b, nullptr) << label << (rep ? " rep " + std::to_string(*rep) : std::string());
+  EXPECT_EQ(b->base, base) << label;
+  EXPECT_EQ(b->next, next) << label;
+}
+
+// One to one by label: a missing case is named wherever it was, the first or a later one.
+TEST(ResultComparison, EveryMissingCaseIsNamed) {
+  for (std::size_t gone = 0; gone < 4; ++gone) {
+    ojson next = result_doc();
+    const std::string label = next["cases"][gone]["label"];
+    next["cases"].erase(gone);
+    const ResultComparison c = compare(result_doc(), next);
+    ASSERT_EQ(c.changes.size(), 1u) << label;
+    expect_presence(c, label, std::nullopt, "present", "absent");
+    EXPECT_EQ(c.cases, 3u);
+    EXPECT_EQ(c.repetitions, 27u);
+    // The other way round: the case is extra in the new run.
+    const ResultComparison reverse = compare(next, result_doc());
+    ASSERT_EQ(reverse.changes.size(), 1u) << label;
+    expect_presence(reverse, label, std::nullopt, "absent", "present");
+  }
+}
+
+TEST(ResultComparison, AnExtraCaseIsNamed) {
   ojson next = result_doc();
+  next["cases"].push_back(testing::case_doc("n25", "plain", 625, testing::around(3.0)));
+  const ResultComparison c = compare(result_doc(), next);
+  ASSERT_EQ(c.changes.size(), 1u);
+  expect_presence(c, "n25/plain", std::nullopt, "absent", "present");
+  EXPECT_EQ(c.cases, 4u);
+  EXPECT_EQ(c.step_ms.size(), 4u) << "an unmatched case has no timings";
+}
+
+TEST(ResultComparison, ADuplicatedLabelCannotBeMatched) {
+  // An exact copy of a case, so no value differs: only the matching can tell.
+  ojson next = result_doc();
+  next["cases"].push_back(next["cases"][1]);
+  ResultComparison c = compare(result_doc(), next);
+  ASSERT_EQ(c.changes.size(), 1u);
+  expect_presence(c, "n9/tcsb@0.5", std::nullopt, "present", "2 entries");
+  EXPECT_EQ(c.cases, 3u) << "neither copy is compared";
+  EXPECT_EQ(c.ratios.size(), 1u) << "nor timed";
+
+  // Duplicated on both sides is no better: two entries cannot be paired one to one either.
+  c = compare(next, next);
+  ASSERT_EQ(c.changes.size(), 1u);
+  expect_presence(c, "n9/tcsb@0.5", std::nullopt, "2 entries", "2 entries");
+
+  // A case renamed to another's label: one label gone, one doubled.
+  next = result_doc();
+  next["cases"][2]["label"] = "n9/plain";
+  c = compare(result_doc(), next);
+  ASSERT_EQ(c.changes.size(), 2u);
+  expect_presence(c, "n9/plain", std::nullopt, "present", "2 entries");
+  expect_presence(c, "n17/plain", std::nullopt, "present", "absent");
+}
+
+TEST(ResultComparison, CasesAndRepetitionsMatchByKeyNotByPosition) {
+  ojson next = result_doc();
+  std::reverse(next["cases"].begin(), next["cases"].end());
+  ojson& reps = next["cases"][3]["repetitions"];  // n9/plain, now last
+  std::reverse(reps.begin(), reps.end());
+  ResultComparison c = compare(result_doc(), next);
+  EXPECT_TRUE(c.changes.empty());
+  EXPECT_EQ(c.cases, 4u);
+  EXPECT_EQ(c.repetitions, 36u);
+  ASSERT_EQ(c.ratios.size(), 2u);
+  EXPECT_EQ(c.ratios[0].case_label, "n9/tcsb@0.5");
+  EXPECT_EQ(c.ratios[0].samples.next.size(), 9u);
+
+  // A change in a reordered repetition is found on that repetition.
+  reps[6]["final_state_hash"] = "other";  // repetition 2
+  c = compare(result_doc(), next);
+  ASSERT_EQ(c.changes.size(), 1u);
+  EXPECT_NE(find_change(c, "n9/plain", "final_state_hash", 2), nullptr);
+}
+
+TEST(ResultComparison, EveryUnmatchedRepetitionIsNamed) {
+  // One missing: named by its number, not only counted.
+  ojson next = result_doc();
+  next["cases"][0]["repetitions"].erase(3);
+  ResultComparison c = compare(result_doc(), next);
+  ASSERT_EQ(c.changes.size(), 1u);
+  expect_presence(c, "n9/plain", 3, "present", "absent");
+  EXPECT_EQ(c.repetitions, 35u);
+
+  // Renumbered with every hash changed: the same count, and not one pair to compare.
+  next = result_doc();
+  for (ojson& r : next["cases"][1]["repetitions"]) {
+    r["repetition"] = r["repetition"].get<int>() + 9;
+    r["final_state_hash"] = "changed";
+  }
+  c = compare(result_doc(), next);
+  ASSERT_EQ(c.changes.size(), 18u);
+  for (int r = 0; r < 9; ++r) {
+    expect_presence(c, "n9/tcsb@0.5", r, "present", "absent");
+    expect_presence(c, "n9/tcsb@0.5", r + 9, "absent", "present");
+  }
+  EXPECT_EQ(c.repetitions, 27u);
+
+  // A copy of repetition 8 in place of repetition 7: the count and every value still agree.
+  next = result_doc();
+  next["cases"][2]["repetitions"][7] = next["cases"][2]["repetitions"][8];
+  c = compare(result_doc(), next);
+  ASSERT_EQ(c.changes.size(), 2u);
+  expect_presence(c, "n17/plain", 7, "present", "absent");
+  expect_presence(c, "n17/plain", 8, "present", "2 entries");
+  EXPECT_EQ(c.repetitions, 34u);
+
+  // An extra repetition.
+  next = result_doc();
+  next["cases"][3]["repetitions"].push_back(testing::repetition_doc(9, 0.5, 40));
+  c = compare(result_doc(), next);
+  ASSERT_EQ(c.changes.size(), 1u);
+  expect_presence(c, "n17/tcsb@0.5", 9, "absent", "present");
+}
+
+TEST(ResultComparison, MatchingDoesNotDependOnDeterminism) {
+  // With a time budget the values may differ, but which cases and repetitions ran may not.
+  ojson base = result_doc();
+  base["suite"]["feedback"]["max_step_ms"] = 0.5;
+  ojson next = base;
   next["cases"].erase(3);
   next["cases"][0]["repetitions"].erase(8);
-  const ResultComparison c = compare(result_doc(), next);
-  ASSERT_GE(c.changes.size(), 2u);
-  EXPECT_EQ(c.changes[0].metric, "cases");
-  EXPECT_EQ(c.changes[1].metric, "repetitions");
-  EXPECT_EQ(c.changes[1].base, "9");
-  EXPECT_EQ(c.changes[1].next, "8");
-  EXPECT_EQ(c.cases, 3u);
+  const ResultComparison c = compare(base, next);
+  ASSERT_EQ(c.changes.size(), 2u);
+  expect_presence(c, "n17/tcsb@0.5", std::nullopt, "present", "absent");
+  expect_presence(c, "n9/plain", 8, "present", "absent");
+  EXPECT_EQ(c.repetitions, 26u);
 }
 
 TEST(ResultComparison, RatiosFollowTheSameRunNotTheMachine) {

@@ -78,6 +78,51 @@ TEST(ResultView, BadFieldsAreNamedWithTheFile) {
   EXPECT_NE(error_of(ojson::array()).find("not a tcsb result"), std::string::npos);
 }
 
+TEST(ResultView, ImpossibleStepTimesAreBadInput) {
+  // An ok repetition timed every step, and a step takes time: zero, negative or missing cannot come from a run.
+  const struct {
+    ojson value;
+    const char* expected;
+  } cases[] = {
+      {0.0, "r.json: cases[1].repetitions[3].mean_step_ms: must be > 0 (a step takes time), got 0.0"},
+      {-0.5, "r.json: cases[1].repetitions[3].mean_step_ms: must be > 0 (a step takes time), got -0.5"},
+      {nullptr, "r.json: cases[1].repetitions[3].mean_step_ms: null, but the repetition's status is \"ok\""},
+  };
+  for (const auto& c : cases) {
+    ojson doc = result_doc();
+    doc["cases"][1]["repetitions"][3]["mean_step_ms"] = c.value;
+    EXPECT_EQ(error_of(doc).rfind(c.expected, 0), 0u) << error_of(doc);
+  }
+  // A diverged repetition may have no time, but never a negative one.
+  ojson doc = result_doc();
+  doc["cases"][1]["repetitions"][3]["status"] = "diverged";
+  doc["cases"][1]["repetitions"][3]["mean_step_ms"] = nullptr;
+  EXPECT_EQ(error_of(doc), "");
+  doc["cases"][1]["repetitions"][3]["mean_step_ms"] = -1.0;
+  EXPECT_NE(error_of(doc).find("cases[1].repetitions[3].mean_step_ms: must be > 0"), std::string::npos);
+}
+
+TEST(ResultView, NegativeCountsAndSpreadsAreBadInput) {
+  for (const char* field : {"mean_nodes", "mean_links", "mean_interpolations"}) {
+    ojson doc = result_doc();
+    doc["cases"][2]["repetitions"][0][field] = -1.0;
+    EXPECT_EQ(error_of(doc), std::string("r.json: cases[2].repetitions[0].") + field + ": must be >= 0, got -1.0");
+    doc = result_doc();
+    doc["cases"][2][field] = -3.0;
+    EXPECT_EQ(error_of(doc), std::string("r.json: cases[2].") + field + ": must be >= 0, got -3.0");
+  }
+  for (const char* field : {"median", "stddev", "cv"}) {
+    ojson doc = result_doc();
+    doc["cases"][0]["step_ms"][field] = -0.25;
+    EXPECT_EQ(error_of(doc), std::string("r.json: cases[0].step_ms.") + field + ": must be >= 0, got -0.25");
+  }
+  // Zero is a real count: a plain net interpolates nothing.
+  ojson doc = result_doc();
+  doc["cases"][0]["mean_interpolations"] = 0.0;
+  doc["cases"][0]["repetitions"][0]["mean_interpolations"] = 0.0;
+  EXPECT_EQ(error_of(doc), "");
+}
+
 TEST(ResultView, IntegralFloatsAreIntegers) {
   ojson doc = result_doc();
   doc["cases"][0]["repetitions"][0]["operations"] = 3.0;

@@ -76,6 +76,40 @@ TEST(ComparisonSummary, UnreliableMetricsAndMachineDifferencesAreExplained) {
   EXPECT_NE(s.find("- cpu_model: \"Test CPU\" vs \"Other CPU\""), std::string::npos) << s;
 }
 
+TEST(ComparisonSummary, UnmatchedCasesAndRepetitionsAreRowsWithTheirLabel) {
+  ojson next = result_doc();
+  next["cases"].erase(3);
+  next["cases"][0]["repetitions"].erase(3);
+  const Compared c = compare(result_doc(), next);
+  const std::string s = summary(c);
+  EXPECT_TRUE(s.starts_with("## tcsb compare: FAIL\n")) << s;
+  EXPECT_NE(s.find("| n17/tcsb@0.5 | presence | present | absent | – | – | **changed behaviour** |"),
+            std::string::npos) << s;
+  EXPECT_NE(s.find("| n9/plain | presence (rep 3) | present | absent | – | – | **changed behaviour** |"),
+            std::string::npos) << s;
+  EXPECT_NE(s.find("3 cases, 26 repetitions compared"), std::string::npos) << s;
+  EXPECT_EQ(comparison_verdict_line(c.outcome).rfind("FAIL: 0 regressions, 2 behaviour changes", 0), 0u)
+      << comparison_verdict_line(c.outcome);
+}
+
+TEST(ComparisonSummary, UndecidedTimingsAreSaidWithTheReason) {
+  const Compared few = compare(result_doc(5), result_doc(5));
+  EXPECT_EQ(undecided_reason(few.outcome),
+            "none of the 2 gated timing metrics is reliable (each needs 9 ok repetitions on both sides; the most any "
+            "has is 5): rerun with suite.repetitions >= 9");
+  const std::string line = comparison_verdict_line(few.outcome);
+  EXPECT_EQ(line.rfind("FAIL: 0 regressions, 0 behaviour changes (0 timing metrics gated", 0), 0u) << line;
+  EXPECT_NE(line.find("; 2 unreliable, not gated; timings undecided: none of the 2"), std::string::npos) << line;
+  EXPECT_TRUE(summary(few).starts_with("## tcsb compare: FAIL\n"));
+
+  ojson plain_only = result_doc();
+  plain_only["cases"].erase(3);
+  plain_only["cases"].erase(1);
+  EXPECT_EQ(undecided_reason(compare(plain_only, plain_only).outcome),
+            "no timing metric to gate: no TC-SB case has a plain case on its net for `ratio vs plain` (--absolute "
+            "gates the step times too)");
+}
+
 TEST(ComparisonSummary, LongChangeListsAreCut) {
   ojson next = result_doc();
   for (std::size_t i = 0; i < 4; ++i) {
