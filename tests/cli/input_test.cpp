@@ -5,6 +5,7 @@
 // exhausting the machine.
 #include <sys/stat.h>
 
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
 #include <vector>
@@ -58,6 +59,20 @@ TEST_F(Input, DeepNestingIsRefusedNotAStackOverflow) {
   expect_refused_everywhere("deep.json", "nested deeper than 64 levels");
   write_file(dir_ / "deep_open.json", std::string(100000, '['));
   expect_refused_everywhere("deep_open.json", "nested deeper than 64 levels");
+  // Deep inside a member the result schema leaves open ("fidelity"), the old reader accepted the file, and
+  // rendering it recursed without bound (export --format json never finished).
+  nlohmann::ordered_json result = nlohmann::ordered_json::parse(read_file(dir_ / "result.json"));
+  result["fidelity"] = "PLACEHOLDER";
+  std::string text = result.dump();
+  text.replace(text.find("\"PLACEHOLDER\""), 13, std::string(100000, '[') + std::string(100000, ']'));
+  write_file(dir_ / "deep_member.json", text);
+  for (const std::string args : {"export deep_member.json --format json", "compare result.json deep_member.json"}) {
+    const Outcome o = bounded(args);
+    EXPECT_EQ(o.exit_code, 2) << args << "\n" << o.err;
+    EXPECT_EQ(o.err, "tcsb: error: deep_member.json: not valid JSON: arrays and objects nested deeper than 64 levels, "
+                     "the most tcsb reads\n")
+        << args;
+  }
 }
 
 TEST_F(Input, ANulByteAndGarbageAfterTheDocumentAreRefused) {
