@@ -7,6 +7,7 @@
 
 #include "harness/context.h"
 #include "harness/suite.h"
+#include "report/report_writer.h"
 
 namespace tcsb::cli {
 
@@ -62,6 +63,10 @@ int guarded(const std::function<int()>& command) {
   } catch (const UsageError& e) {
     print_error(e.what());
     return kExitUsage;
+  } catch (const WriteError& e) {
+    // Not a bug: the machine refused the output (a full disk, a closed pipe). Said plainly, without "internal".
+    print_error(e.what());
+    return kExitInternal;
   } catch (const std::exception& e) {
     std::cerr << "tcsb: internal error: " << one_line(e.what()) << std::endl;
     return kExitInternal;

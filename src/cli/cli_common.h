@@ -50,7 +50,8 @@ void print_error(std::string_view message);
 void print_warning(std::string_view message);
 
 /// Runs a command, turning exceptions into one stderr line and an exit code: SuiteError and UsageError ->
-/// kExitUsage, any other std::exception -> "tcsb: internal error: ..." and kExitInternal.
+/// kExitUsage; WriteError (report/report_writer.h: an output the machine refused) -> kExitInternal; any other
+/// std::exception -> "tcsb: internal error: ..." and kExitInternal.
 int guarded(const std::function<int()>& command);
 
 /// Exit code for a command-line parse failure: --help prints help (0); anything else prints one error line (2).

@@ -63,6 +63,8 @@ int compare_command(const CompareArgs& args) {
     throw UsageError("--threshold: must be a finite number >= 0, got " + std::to_string(args.threshold));
   }
   check_out_path(args.summary, "--summary");
+  check_out_is_not_input(args.summary, args.base, "--summary");
+  check_out_is_not_input(args.summary, args.next, "--summary");
   const LoadedResult base = load_result_file(args.base);
   const LoadedResult next = load_result_file(args.next);
   ResultComparison comparison;

@@ -20,6 +20,7 @@ CLI::App* add_export_command(CLI::App& app, ExportArgs& args) {
 int export_command(const ExportArgs& args) {
   const std::unique_ptr<ReportFormat> format = checked_format(args.format);
   check_out_path(args.out);
+  check_out_is_not_input(args.out, args.result);
   const LoadedResult result = load_result_file(args.result);
   return write_report(format->render_native(result.document), args.out);
 }

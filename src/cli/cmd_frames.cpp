@@ -63,7 +63,9 @@ CLI::App* add_frames_command(CLI::App& app, FramesArgs& args) {
 int frames_command(const FramesArgs& args) {
   check_out_path(args.out);
   check_steps(args.steps);
-  const Suite suite = parse_suite(resolve_suite(args.suite));
+  const std::filesystem::path suite_file = resolve_suite(args.suite);
+  check_out_is_not_input(args.out, suite_file);
+  const Suite suite = parse_suite(suite_file);
   const std::size_t net = net_index(suite, args.net);
   const double compression = compression_of(suite, args.compression);
   // Recorded in the file; not printed, since nothing here is timed (the warnings are about timing).

@@ -1,12 +1,13 @@
 // `tcsb list`: the bundled suites at a glance. Read leniently (not through parse_suite) so a suite too large for
 // this machine, or a broken one, is still listed instead of hiding the others.
 #include <CLI/CLI.hpp>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "harness/json_file.h"
+#include "harness/suite.h"
 #include "report/text_table.h"
 
 namespace tcsb::cli {
@@ -23,9 +24,12 @@ std::string first_line(const std::string& text) {
 
 std::vector<std::string> describe(const std::string& name) {
   const std::filesystem::path path = suites_dir() / (name + ".json");
-  std::ifstream in(path);
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.is_object()) return {name, "?", "?", "(not valid JSON: run `tcsb validate " + name + "`)"};
+  nlohmann::json j;
+  try {
+    j = read_json_file<nlohmann::json>(path, kSuiteJsonLimits);  // bounded: a huge or hostile file cannot stall it
+  } catch (const SuiteError&) {
+  }
+  if (!j.is_object()) return {name, "?", "?", "(not a valid suite: run `tcsb validate " + name + "`)"};
   const auto nets = j.find("nets");
   std::string methods;
   if (const auto m = j.find("methods"); m != j.end() && m->is_array()) {

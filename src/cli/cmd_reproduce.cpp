@@ -24,8 +24,12 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceArgs& args) {
 
 int reproduce_command(const ReproduceArgs& args) {
   check_out_path(args.out);
-  const PaperReference paper = load_paper_reference(resolve_data_file(args.paper));
-  Suite suite = parse_suite(resolve_suite(args.suite));
+  const std::filesystem::path paper_file = resolve_data_file(args.paper);
+  const std::filesystem::path suite_file = resolve_suite(args.suite);
+  check_out_is_not_input(args.out, paper_file);
+  check_out_is_not_input(args.out, suite_file);
+  const PaperReference paper = load_paper_reference(paper_file);
+  Suite suite = parse_suite(suite_file);
   apply_repetitions(args.repetitions, suite);
   const RunResult result = run_on_console(suite, args.quiet);
   const Reproduction reproduction = check_reproduction(result, paper);

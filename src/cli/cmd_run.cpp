@@ -52,7 +52,9 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
 int run_command(const RunArgs& args) {
   checked_format(args.format);
   check_out_path(args.out);
-  Suite suite = parse_suite(resolve_suite(args.suite));
+  const std::filesystem::path suite_file = resolve_suite(args.suite);
+  check_out_is_not_input(args.out, suite_file);
+  Suite suite = parse_suite(suite_file);
   apply_budget_overrides(args, suite);
   apply_repetitions(args.repetitions, suite);
   return run_and_report(suite, args);

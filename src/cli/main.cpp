@@ -5,9 +5,13 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/standard_streams.h"
 
-int main(int argc, char** argv) {
-  using namespace tcsb::cli;
+namespace {
+
+using namespace tcsb::cli;
+
+int dispatch(int argc, char** argv) {
   CLI::App app{"tcsb: plain Bullet soft bodies vs the TreeCut soft body (TC-SB). Without a subcommand, runs the "
                "default reproduction.",
                "tcsb"};
@@ -48,4 +52,12 @@ int main(int argc, char** argv) {
     // `reproduce`, or no subcommand at all: the default job.
     return reproduce_command(reproduce_args);
   });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  prepare_standard_streams();
+  // Every command's output, --help and --version included, is checked here: a full disk or a closed pipe is exit 3.
+  return finish_stdout(dispatch(argc, argv));
 }

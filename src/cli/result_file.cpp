@@ -1,31 +1,19 @@
 #include "cli/result_file.h"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <iterator>
-
 #include "cli/cli_common.h"
+#include "harness/json_file.h"
+#include "harness/suite.h"
 #include "report/json_report.h"
 #include "report/result_schema.h"
 
 namespace tcsb::cli {
 
 LoadedResult load_result_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(path + ": cannot read the file (" + std::strerror(errno) + ")");
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-
   LoadedResult result;
   try {
-    result.document = nlohmann::ordered_json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    // A syntax error (parse_error) or a number too large for a double, such as a time of 1e400 (out_of_range.406):
-    // both are bad input, never an internal error. e.what() starts with "[json.exception.parse_error.101] ": the
-    // reader wants where and what, not the id.
-    const std::string what = e.what();
-    const std::size_t cut = what.find("] ");
-    throw UsageError(path + ": not valid JSON: " + (cut == std::string::npos ? what : what.substr(cut + 2)));
+    result.document = read_json_file<nlohmann::ordered_json>(path, kResultJsonLimits);
+  } catch (const SuiteError& e) {
+    throw UsageError(e.what());
   }
   const nlohmann::ordered_json& doc = result.document;
   if (!doc.is_object() || !doc.contains("tool") || doc["tool"] != "tcsb") {

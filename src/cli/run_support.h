@@ -17,9 +17,15 @@ class App;
 
 namespace tcsb::cli {
 
-/// Fails now (UsageError), not after the run, if --out could not be written: its directory must exist and accept
-/// a new file. Empty `out` means stdout: nothing to check. `option` names the flag in the message.
+/// Fails now (UsageError), not after the run, if --out could not be written (report/report_writer.h's
+/// output_problem: a missing directory, a directory, a name too long, no file can be created there). Empty `out`
+/// means stdout: nothing to check. `option` names the flag in the message.
 void check_out_path(const std::string& out, const std::string& option = "--out");
+
+/// Fails now (UsageError) if `out` is the file `input` the command reads: compared by device and inode when both
+/// exist (so a symlink, "./x" or a hard link is caught), else by canonical path. Empty `out` or `input`: nothing.
+void check_out_is_not_input(const std::string& out, const std::filesystem::path& input,
+                            const std::string& option = "--out");
 
 /// The names of the output formats, comma-separated ("json, gbench, ..."), for --format's help and errors.
 std::string known_formats();
@@ -41,8 +47,9 @@ void apply_repetitions(const std::optional<int>& repetitions, Suite& suite);
 /// (harness/stall.h).
 RunResult run_on_console(const Suite& suite, bool quiet);
 
-/// Writes the report to stdout, or atomically to `out`. If the write fails after a long run, the report goes to
-/// stdout instead and the result is kExitInternal; otherwise kExitOk.
+/// Writes the report to stdout, or atomically to `out`. If the file cannot be written after a long run, the report
+/// goes to stdout instead and the result is kExitInternal; otherwise kExitOk. Whether stdout took the report is
+/// checked once for every command at exit (cli/standard_streams.h's finish_stdout).
 int write_report(const std::string& text, const std::string& out);
 
 /// A data file argument (such as results/paper.json): as given if it exists, else relative to the source tree.

@@ -1,8 +1,8 @@
 #include "harness/paper_reference.h"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "harness/json_file.h"
 #include "harness/suite.h"
 
 namespace tcsb {
@@ -17,8 +17,15 @@ double number(const nlohmann::json& row, const char* key, const std::string& fil
 
 std::string text(const nlohmann::json& row, const char* key, const std::string& file, const std::string& where) {
   const auto it = row.find(key);
-  if (it == row.end() || !it->is_string()) throw SuiteError(file, where + "." + key, "must be a string");
+  if (it == row.end() || !it->is_string()) {
+    throw SuiteError(file, where.empty() ? std::string(key) : where + "." + key, "must be a string");
+  }
   return it->get<std::string>();
+}
+
+/// A string member that may be absent ("").
+std::string optional_text(const nlohmann::json& root, const char* key, const std::string& file) {
+  return root.contains(key) ? text(root, key, file, "") : std::string();
 }
 
 const nlohmann::json& rows(const nlohmann::json& root, const char* table, const std::string& file) {
@@ -41,17 +48,11 @@ double PaperReference::time_ratio(const std::string& compression) const {
 
 PaperReference load_paper_reference(const std::filesystem::path& path) {
   const std::string file = path.string();
-  std::ifstream in(path);
-  if (!in) throw SuiteError(file, "", "cannot read the paper's reference numbers");
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw SuiteError(file, "", std::string("malformed JSON: ") + e.what());
-  }
+  const nlohmann::json root = read_json_file<nlohmann::json>(path, kSuiteJsonLimits);
+  if (!root.is_object()) throw SuiteError(file, "", "must be a JSON object");
   PaperReference ref;
-  ref.source = root.value("source", "");
-  ref.hardware = root.value("hardware", "");
+  ref.source = optional_text(root, "source", file);
+  ref.hardware = optional_text(root, "hardware", file);
   const nlohmann::json& t1 = rows(root, "table1", file);
   for (std::size_t i = 0; i < t1.size(); ++i) {
     const std::string where = "table1.rows[" + std::to_string(i) + "]";

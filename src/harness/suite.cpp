@@ -5,11 +5,10 @@
 #include <algorithm>
 #include <array>
 #include <climits>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "harness/json_file.h"
 #include "harness/sha256.h"
 #include "harness/suite_fields.h"
 #include "harness/suite_memory.h"
@@ -142,7 +141,7 @@ const char* method_name(Method method) {
 
 Suite parse_suite_text(const std::string& text, const std::string& file) {
   const Reader r(file);
-  const json doc = parse_json(text, r);
+  const json doc = parse_json_text<json>(text, file);
   if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
   const Object root(r, doc, "", {"name", "description", "nets", "methods", "compression", "dt", "gravity", "steps",
                                  "warmup_steps", "repetitions", "seed", "solver", "tcsb", "feedback", "fidelity"});
@@ -216,17 +215,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file) {
 }
 
 Suite parse_suite(const std::filesystem::path& path) {
-  const std::string file = path.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw SuiteError(file, "", std::filesystem::exists(path, ec) ? "cannot read: not a regular file"
-                                                                 : "cannot read: no such file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in.is_open()) throw SuiteError(file, "", "cannot read: cannot open (permissions?)");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw SuiteError(file, "", "cannot read: I/O error");
-  Suite suite = parse_suite_text(text, file);
+  Suite suite = parse_suite_text(read_input_file(path, kSuiteJsonLimits.max_bytes), path.string());
   suite.path = path;
   return suite;
 }

@@ -165,8 +165,4 @@ class Object {
   std::string path_;
 };
 
-/// Parses text, rejecting malformed JSON (with the parser's position) and duplicate keys (which nlohmann would
-/// silently resolve to the last one — a suite stating "steps" twice is a mistake, not a choice).
-json parse_json(const std::string& text, const Reader& r);
-
 }  // namespace tcsb::suite_fields

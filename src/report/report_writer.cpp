@@ -1,63 +1,155 @@
 #include "report/report_writer.h"
 
-#include <cstdio>
-#include <fstream>
-#include <stdexcept>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <climits>
+#include <cstring>
 
 namespace tcsb {
 
 namespace {
 
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const fs::path& path, const std::string& what, int error) {
+  throw WriteError("cannot write " + path.string() + ": " + what + std::strerror(error));
+}
+
+/// Writes all of `text` to `fd`; false (errno set) on failure.
+bool write_all(int fd, const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n == 0) errno = EIO;
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+/// The permission bits open(..., 0666) would give a new file: what the umask leaves of rw-rw-rw-. (mkstemp makes
+/// 0600, which would hide a report from the group that reads it.) Reading the umask means setting it: nothing else
+/// creates files at the same moment, so the brief change is harmless.
+mode_t new_file_mode() {
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  return 0666 & ~mask;
+}
+
+/// A temporary file made by mkstemp in `dir`: removed again unless it was renamed into place.
+class TempFile {
+ public:
+  explicit TempFile(const fs::path& dir) : name_((dir / ".tcsb-out-XXXXXX").string()) {
+    fd_ = ::mkostemp(name_.data(), O_CLOEXEC);
+    error_ = fd_ < 0 ? errno : 0;
+  }
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+  ~TempFile() {
+    if (fd_ >= 0) ::close(fd_);
+    if (created() && !renamed_) ::unlink(name_.c_str());
+  }
+  bool created() const { return error_ == 0; }
+  int error() const { return error_; }
+  int fd() const { return fd_; }
+  /// Closes the file; false (errno set) when the close reports a failed write (NFS reports them only here).
+  bool close() {
+    const int fd = fd_;
+    fd_ = -1;
+    return ::close(fd) == 0;
+  }
+  /// Renames the (closed) file to `target`; false (errno set) on failure.
+  bool rename_to(const fs::path& target) {
+    renamed_ = ::rename(name_.c_str(), target.c_str()) == 0;
+    return renamed_;
+  }
+
+ private:
+  std::string name_;
+  int fd_ = -1;
+  int error_ = 0;
+  bool renamed_ = false;
+};
+
+/// The directory a temporary file for `path` goes in.
+fs::path directory_of(const fs::path& path) { return path.has_parent_path() ? path.parent_path() : fs::path("."); }
+
+/// What a rename must replace: a symlink's target (so the link survives), else `given` itself (also a dangling link).
+fs::path replaced_file(const fs::path& given) {
+  std::error_code ec;
+  if (!fs::is_symlink(fs::symlink_status(given, ec))) return given;
+  const fs::path resolved = fs::canonical(given, ec);
+  return ec ? given : resolved;
+}
+
+/// True if `path` exists and is neither a regular file nor a directory (a device, a FIFO, a socket): written into.
+bool is_special(const fs::path& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+}
+
 /// Writes straight into an existing device or pipe (/dev/null, /dev/stdout, a FIFO): nothing there can be replaced
-/// atomically, and renaming a file over it would destroy it (replace /dev/null with a regular file).
-void write_into(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.flush();
-  if (!out) throw std::runtime_error(path.string() + ": write failed");
+/// atomically, and renaming a file over it would destroy it (replace /dev/null with a regular file). Opened without
+/// O_CREAT and O_TRUNC, and checked after opening: should the name have become a regular file meanwhile, false is
+/// returned and nothing was written.
+bool write_into_special(const fs::path& path, const std::string& text) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) fail(path, "", errno);
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || S_ISREG(st.st_mode)) {
+    ::close(fd);
+    return false;
+  }
+  if (!write_all(fd, text)) {
+    const int error = errno;
+    ::close(fd);
+    fail(path, "", error);
+  }
+  if (::close(fd) != 0) fail(path, "", errno);
+  return true;
+}
+
+/// The longest file name the file system holding `dir` accepts.
+long name_max(const fs::path& dir) {
+  const long n = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+  return n > 0 ? n : NAME_MAX;
 }
 
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& given, const std::string& text) {
+void write_file_atomically(const fs::path& given, const std::string& text) {
+  if (is_special(given) && write_into_special(given, text)) return;
+  const fs::path path = replaced_file(given);
+  const fs::path dir = directory_of(path);
+  TempFile tmp(dir);
+  if (!tmp.created()) fail(path, "cannot create a temporary file in " + dir.string() + ": ", tmp.error());
+  if (::fchmod(tmp.fd(), new_file_mode()) != 0) fail(path, "", errno);
+  if (!write_all(tmp.fd(), text)) fail(path, "", errno);
+  if (!tmp.close()) fail(path, "", errno);
+  if (!tmp.rename_to(path)) fail(path, "cannot rename the temporary file into place: ", errno);
+}
+
+std::string output_problem(const fs::path& given) {
   std::error_code ec;
-  const std::filesystem::file_status target = std::filesystem::status(given, ec);  // follows symlinks
-  if (!ec && std::filesystem::exists(target) && !std::filesystem::is_regular_file(target) &&
-      !std::filesystem::is_directory(target)) {
-    write_into(given, text);
-    return;
+  const fs::path path = replaced_file(given);
+  const fs::path dir = directory_of(path);
+  if (!fs::is_directory(dir, ec)) return "directory " + dir.string() + " does not exist";
+  if (fs::is_directory(path, ec)) return "is a directory";
+  if (is_special(path)) return "";  // written into, nothing is created beside it
+  if (const long max = name_max(dir); static_cast<long>(path.filename().string().size()) > max) {
+    return "the file name is longer than " + std::to_string(max) + " bytes, the most the file system allows";
   }
-  // A symlink stays a symlink: its target is what gets replaced (a dangling one is replaced itself).
-  std::filesystem::path path = given;
-  if (std::filesystem::is_symlink(std::filesystem::symlink_status(given, ec))) {
-    const std::filesystem::path resolved = std::filesystem::canonical(given, ec);
-    if (!ec) path = resolved;
+  TempFile probe(dir);  // removed again at once
+  if (!probe.created()) {
+    return "cannot create files in directory " + dir.string() + " (" + std::strerror(probe.error()) + ")";
   }
-  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  // Appended piecewise: GCC 12 misreports `"literal" + std::string` chains as overlapping memcpy (-Wrestrict).
-  std::string name = ".";
-  name += path.filename().string();
-  name += ".";
-  name += std::to_string(::getpid());
-  name += ".tmp";
-  const std::filesystem::path tmp = dir / name;
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(path.string() + ": cannot create a temporary file in " + dir.string());
-    out << text;
-    out.flush();
-    if (!out) {
-      out.close();
-      std::filesystem::remove(tmp);
-      throw std::runtime_error(path.string() + ": write failed");
-    }
-  }
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp);
-    throw std::runtime_error(path.string() + ": cannot rename the temporary file into place: " + ec.message());
-  }
+  return "";
 }
 
 }  // namespace tcsb

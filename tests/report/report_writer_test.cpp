@@ -74,5 +74,56 @@ TEST_F(ReportWriter, FailureNamesTheFileAndTouchesNothing) {
   EXPECT_FALSE(fs::exists(dir_ / "no_such_dir"));
 }
 
+// The old code wrote its temporary file at ".NAME.PID.tmp", following symlinks: anyone who could write the directory
+// could make tcsb overwrite any file it may write. The temporary file is now created exclusively.
+TEST_F(ReportWriter, APlantedSymlinkAtTheOldTemporaryNameIsNotFollowed) {
+  std::ofstream(dir_ / "victim") << "precious";
+  const fs::path planted = dir_ / (".out.json." + std::to_string(::getpid()) + ".tmp");
+  fs::create_symlink(dir_ / "victim", planted);
+  write_file_atomically(dir_ / "out.json", "report");
+  EXPECT_EQ(read_all(dir_ / "victim"), "precious");
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir_ / "out.json")));
+  EXPECT_EQ(read_all(dir_ / "out.json"), "report");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(planted)));  // left as it was
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 3);
+}
+
+// mkstemp creates 0600; the report must get what any new file gets (0666 less the umask).
+TEST_F(ReportWriter, TheFileGetsTheModeOfAnOrdinaryNewFile) {
+  for (const mode_t mask : {mode_t{022}, mode_t{077}, mode_t{002}}) {
+    const mode_t old = ::umask(mask);
+    write_file_atomically(dir_ / "out.json", "x");
+    ::umask(old);
+    struct stat st {};
+    ASSERT_EQ(::stat((dir_ / "out.json").c_str(), &st), 0);
+    EXPECT_EQ(st.st_mode & 0777, 0666 & ~mask) << std::oct << mask;
+  }
+}
+
+TEST_F(ReportWriter, WritingIntoAFullDeviceIsAWriteErrorNamingIt) {
+  try {
+    write_file_atomically("/dev/full", "x");
+    FAIL() << "expected a WriteError";
+  } catch (const WriteError& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot write /dev/full: No space left on device");
+  }
+}
+
+TEST_F(ReportWriter, OutputProblemsAreFoundBeforeWritingAndTheCheckLeavesNoFile) {
+  EXPECT_EQ(output_problem(dir_ / "out.json"), "");
+  EXPECT_EQ(output_problem("/dev/null"), "");
+  EXPECT_NE(output_problem(dir_ / "missing" / "out.json").find("does not exist"), std::string::npos);
+  EXPECT_EQ(output_problem(dir_), "is a directory");
+  EXPECT_NE(output_problem(dir_ / std::string(256, 'x')).find("longer than 255 bytes"), std::string::npos);
+  EXPECT_EQ(output_problem(dir_ / std::string(255, 'x')), "");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 0);
+  if (::geteuid() != 0) {  // root may create files in a read-only directory
+    fs::create_directories(dir_ / "ro");
+    fs::permissions(dir_ / "ro", fs::perms::owner_read | fs::perms::owner_exec);
+    EXPECT_NE(output_problem(dir_ / "ro" / "out.json").find("cannot create files"), std::string::npos);
+    fs::permissions(dir_ / "ro", fs::perms::owner_all);
+  }
+}
+
 }  // namespace
 }  // namespace tcsb
