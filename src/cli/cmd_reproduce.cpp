@@ -25,8 +25,9 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceArgs& args) {
 int reproduce_command(const ReproduceArgs& args) {
   check_out_path(args.out);
   const PaperReference paper = load_paper_reference(resolve_data_file(args.paper));
-  Suite suite = parse_suite(resolve_suite(args.suite));
-  apply_repetitions(args.repetitions, suite);
+  // --repetitions is applied before parse_suite's memory check (see run_command).
+  const Suite suite =
+      parse_suite(resolve_suite(args.suite), [&args](Suite& s) { apply_repetitions(args.repetitions, s); });
   const RunResult result = run_on_console(suite, args.quiet);
   const Reproduction reproduction = check_reproduction(result, paper);
   print_reproduction(result, reproduction, std::cerr);

@@ -5,9 +5,12 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/flag_values.h"
+#include "softbody/bullet_allocator.h"
 
 int main(int argc, char** argv) {
   using namespace tcsb::cli;
+  tcsb::install_throwing_bullet_allocator();  // before any Bullet object: a failed allocation must not be a SIGSEGV
   CLI::App app{"tcsb: plain Bullet soft bodies vs the TreeCut soft body (TC-SB). Without a subcommand, runs the "
                "default reproduction.",
                "tcsb"};
@@ -27,6 +30,7 @@ int main(int argc, char** argv) {
   CLI::App* compare = add_compare_command(app, compare_args);
   CLI::App* export_ = add_export_command(app, export_args);
   CLI::App* frames = add_frames_command(app, frames_args);
+  reject_empty_values(app);  // after every option exists: "--out ''" must not mean stdout, nor '' mean 0
 
   try {
     app.parse(argc, argv);

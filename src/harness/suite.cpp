@@ -10,6 +10,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "harness/case_plan.h"
 #include "harness/sha256.h"
 #include "harness/suite_fields.h"
 #include "harness/suite_memory.h"
@@ -120,13 +121,21 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
 void check_memory(const Suite& suite, const Reader& r) {
   const std::optional<MemoryShortfall> shortfall = memory_shortfall(suite);
   if (!shortfall) return;
+  const std::string budget = " needs about " + format_bytes(shortfall->needed) + ", but only " +
+                             format_bytes(shortfall->usable) + " may be used (80% of the headroom under " +
+                             shortfall->headroom.source + ", " +
+                             format_bytes(static_cast<double>(shortfall->headroom.bytes)) + ")";
+  if (shortfall->recorder) {
+    // Blame the field that makes it large: a huge "steps" is not the net's fault.
+    r.fail("steps", "recording " + std::to_string(suite.steps) + " steps (+ " + std::to_string(suite.warmup_steps) +
+                        " warm-up) x " + std::to_string(expand_cases(suite).size()) + " cases x " +
+                        std::to_string(suite.repetitions) + " repetitions" + budget);
+  }
   const NetSpec& net = suite.nets[shortfall->net];
   const std::string size = std::to_string(net.width) + " x " + std::to_string(net.height) + " = " +
                            std::to_string(net.node_count()) + " nodes";
   r.fail(index_path("nets", shortfall->net),
-         "net \"" + net.name + "\" (" + size + ") needs about " + format_bytes(shortfall->needed) +
-             " with all methods' bodies alive, but only " + format_bytes(shortfall->usable) +
-             " may be used (80% of MemAvailable " + format_bytes(shortfall->available) + ")");
+         "net \"" + net.name + "\" (" + size + ") with all methods' bodies alive" + budget);
 }
 
 }  // namespace
@@ -140,7 +149,7 @@ const char* method_name(Method method) {
   return "unknown";
 }
 
-Suite parse_suite_text(const std::string& text, const std::string& file) {
+Suite parse_suite_text(const std::string& text, const std::string& file, const SuiteAdjustment& adjust) {
   const Reader r(file);
   const json doc = parse_json(text, r);
   if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
@@ -211,22 +220,27 @@ Suite parse_suite_text(const std::string& text, const std::string& file) {
   // The fidelity pass compares TC-SB (and the ablations at TC-SB's targets) with the reference: without TC-SB there
   // is nothing to measure, and silently measuring nothing would look like a pass.
   if (s.fidelity.enabled && !has_tcsb) r.fail("fidelity.enabled", "requires methods to contain \"tcsb\"");
+  if (adjust) adjust(s);  // before the memory check: it must see the suite that will run
   check_memory(s, r);
   return s;
 }
 
-Suite parse_suite(const std::filesystem::path& path) {
+Suite parse_suite(const std::filesystem::path& path, const SuiteAdjustment& adjust) {
   const std::string file = path.string();
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw SuiteError(file, "", std::filesystem::exists(path, ec) ? "cannot read: not a regular file"
-                                                                 : "cannot read: no such file");
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  // The system's own reason (a symlink loop, a permission on a directory above), not a guessed "no such file".
+  if (ec && status.type() != std::filesystem::file_type::not_found)
+    throw SuiteError(file, "", "cannot read: " + ec.message());
+  if (!std::filesystem::is_regular_file(status)) {
+    throw SuiteError(file, "", std::filesystem::exists(status) ? "cannot read: not a regular file"
+                                                               : "cannot read: no such file");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in.is_open()) throw SuiteError(file, "", "cannot read: cannot open (permissions?)");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw SuiteError(file, "", "cannot read: I/O error");
-  Suite suite = parse_suite_text(text, file);
+  Suite suite = parse_suite_text(text, file, adjust);
   suite.path = path;
   return suite;
 }
