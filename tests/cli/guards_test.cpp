@@ -97,6 +97,13 @@ TEST_F(Cli, ControlCharactersInSuiteTextAreEscaped) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.err.find("n9\\x1b]0;pwned\\x07"), std::string::npos) << run.err;
   EXPECT_EQ(run.err.find('\x1b'), std::string::npos) << run.err;
+
+  // validate echoes the SUITE argument on stdout.
+  write_file(dir_ / "e\x1b[31m.json", kTinySuite);
+  const Outcome ok = tcsb("validate 'e\x1b[31m.json'");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("e\\x1b[31m.json: ok"), std::string::npos) << ok.out;
+  EXPECT_EQ(ok.out.find('\x1b'), std::string::npos) << ok.out;
 }
 
 // A megabyte key made a megabyte error line.
