@@ -62,6 +62,23 @@ TEST_F(Cli, AllocationFailureIsExit2NamingSuiteAndNet) {
   EXPECT_FALSE(fs::exists(dir_ / "out.json"));
 }
 
+// Feedback worker threads that cannot start under the limit (their stacks alone exceed it) threw from a constructor
+// with a started thread still joinable: std::terminate, SIGABRT. Now it is the same exit 2 as any allocation.
+TEST_F(Cli, ThreadsThatCannotStartAreExit2) {
+  write_file(dir_ / "par.json",
+             replaced(kTinySuite, "\"solver\"", "\"feedback\": {\"parallel\": true, \"threads\": 8}, \"solver\""));
+  const Outcome o = shell("sh -c 'ulimit -v 40000; exec \"" + std::string(TCSB_BINARY) +
+                          "\" run par.json --quiet --out out.json'");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  // The run has started, so the machine's warnings (a loaded machine) may precede the one error line.
+  const std::size_t error = o.err.find("tcsb: error: ");
+  ASSERT_NE(error, std::string::npos) << o.err;
+  EXPECT_EQ(count_lines(o.err.substr(error)), 1) << o.err;
+  EXPECT_NE(o.err.find("out of memory", error), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("net n9", error), std::string::npos) << o.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.json"));
+}
+
 // --repetitions was applied after the memory check: a suite validate refuses ran when the same total came from
 // the flag. Steps make the total here (the step recorder), so the refusal names "steps".
 TEST_F(Cli, RepetitionsFlagCannotBypassTheMemoryCheck) {
