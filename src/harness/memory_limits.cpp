@@ -65,8 +65,16 @@ std::optional<std::string> cgroup_path(std::string_view text, F&& wanted) {
   return found;
 }
 
-/// The smallest limit - usage over the cgroup directory `mount`/`path` and its ancestors down from `mount`: a limit
-/// set on a parent (a container's) binds its children too. Levels without the files (not visible here) are skipped.
+/// RLIMIT_AS / RLIMIT_DATA against what this process already has of it (VmSize / VmData).
+std::optional<std::uint64_t> rlimit_headroom(int resource, std::string_view status, std::string_view used_key) {
+  rlimit limit{};
+  if (::getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return std::nullopt;
+  const std::optional<std::uint64_t> used = parse_status_bytes(status, used_key);
+  return headroom(static_cast<std::uint64_t>(limit.rlim_cur), used.value_or(0));
+}
+
+}  // namespace
+
 std::optional<std::uint64_t> cgroup_headroom(const std::filesystem::path& mount, std::string_view path,
                                              const char* limit_file, const char* usage_file) {
   std::optional<std::uint64_t> smallest;
@@ -85,16 +93,6 @@ std::optional<std::uint64_t> cgroup_headroom(const std::filesystem::path& mount,
   }
   return smallest;
 }
-
-/// RLIMIT_AS / RLIMIT_DATA against what this process already has of it (VmSize / VmData).
-std::optional<std::uint64_t> rlimit_headroom(int resource, std::string_view status, std::string_view used_key) {
-  rlimit limit{};
-  if (::getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return std::nullopt;
-  const std::optional<std::uint64_t> used = parse_status_bytes(status, used_key);
-  return headroom(static_cast<std::uint64_t>(limit.rlim_cur), used.value_or(0));
-}
-
-}  // namespace
 
 std::optional<std::uint64_t> parse_mem_available(std::string_view meminfo) { return kib_field(meminfo, "MemAvailable"); }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,6 +36,12 @@ std::optional<std::string> cgroup_v1_memory_path(std::string_view proc_self_cgro
 /// A limit file's value (memory.max, memory.limit_in_bytes): nothing for "max" or a v1 "no limit" (at least 2^62,
 /// v1 writes PAGE_COUNTER_MAX pages as 9223372036854771712), or text that is not a number.
 std::optional<std::uint64_t> parse_cgroup_limit(std::string_view text);
+
+/// The smallest limit - usage over the cgroup directory `mount`/`path` and each level above it up to `mount`: a
+/// limit set on a parent (a container's) binds its children too. Levels without both files (not visible from here,
+/// or no limit: "max") are skipped; nothing when no level has a limit.
+std::optional<std::uint64_t> cgroup_headroom(const std::filesystem::path& mount, std::string_view path,
+                                             const char* limit_file, const char* usage_file);
 
 /// limit - used, 0 when used is at or over the limit.
 std::uint64_t headroom(std::uint64_t limit, std::uint64_t used);

@@ -2,6 +2,9 @@
 #include "harness/memory_limits.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
 
 namespace tcsb {
 namespace {
@@ -43,6 +46,28 @@ TEST(MemoryLimits, CgroupLimit) {
   EXPECT_FALSE(parse_cgroup_limit("max\n"));                  // v2: no limit
   EXPECT_FALSE(parse_cgroup_limit("9223372036854771712\n"));  // v1: no limit
   EXPECT_FALSE(parse_cgroup_limit(""));                       // file missing
+}
+
+// A fake cgroup tree: the container's level (a) has the tight limit, our own level (a/b) a loose one, the root none.
+TEST(MemoryLimits, CgroupHeadroomIsTheTightestLevel) {
+  const std::filesystem::path root =
+      std::filesystem::temp_directory_path() / ("tcsb_cgroup_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(root);
+  std::filesystem::create_directories(root / "a" / "b");
+  const auto put = [](const std::filesystem::path& p, const char* text) { std::ofstream(p) << text; };
+  put(root / "memory.max", "max\n");
+  put(root / "memory.current", "999999\n");
+  put(root / "a" / "memory.max", "1000\n");
+  put(root / "a" / "memory.current", "400\n");
+  put(root / "a" / "b" / "memory.max", "5000\n");
+  put(root / "a" / "b" / "memory.current", "100\n");
+  EXPECT_EQ(cgroup_headroom(root, "/a/b", "memory.max", "memory.current"), 600u);
+  EXPECT_EQ(cgroup_headroom(root, "/a/b/", "memory.max", "memory.current"), 600u);
+  EXPECT_EQ(cgroup_headroom(root, "/", "memory.max", "memory.current"), std::nullopt);  // "max": no limit
+  // A path not visible under the mount (another namespace's): only the levels that exist count.
+  EXPECT_EQ(cgroup_headroom(root, "/a/elsewhere", "memory.max", "memory.current"), 600u);
+  EXPECT_EQ(cgroup_headroom(root, "/../a", "memory.max", "memory.current"), std::nullopt);  // never climbs out
+  std::filesystem::remove_all(root);
 }
 
 TEST(MemoryLimits, SmallestHeadroomWins) {
