@@ -21,7 +21,8 @@ int validate_command(const ValidateArgs& args) {
   const Suite suite = parse_suite(resolve_suite(args.suite));
   char mib[32];
   std::snprintf(mib, sizeof mib, "%.1f", static_cast<double>(estimate_peak_bytes(suite)) / (1024.0 * 1024.0));
-  std::cout << terminal_safe(args.suite) << ": ok (" << suite.nets.size() << " nets, " << expand_cases(suite).size() << " cases, "
+  std::cout << terminal_safe(args.suite) << ": ok (" << suite.nets.size() << " nets, " << expand_cases(suite).size()
+            << " cases, "
             << suite.repetitions << " repetitions, estimated peak memory " << mib << " MiB)" << std::endl;
   return kExitOk;
 }

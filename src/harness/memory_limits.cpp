@@ -29,7 +29,8 @@ void for_each_line(std::string_view text, F&& f) {
 
 std::string_view trimmed(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\n' || s.back() == '\r')) s.remove_suffix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\n' || s.back() == '\r'))
+    s.remove_suffix(1);
   return s;
 }
 
@@ -94,7 +95,9 @@ std::optional<std::uint64_t> cgroup_headroom(const std::filesystem::path& mount,
   return smallest;
 }
 
-std::optional<std::uint64_t> parse_mem_available(std::string_view meminfo) { return kib_field(meminfo, "MemAvailable"); }
+std::optional<std::uint64_t> parse_mem_available(std::string_view meminfo) {
+  return kib_field(meminfo, "MemAvailable");
+}
 
 std::optional<std::uint64_t> parse_status_bytes(std::string_view status, std::string_view key) {
   return kib_field(status, key);
@@ -144,8 +147,8 @@ std::vector<MemoryHeadroom> memory_headrooms() {
       limits.push_back({"cgroup memory.max", *h});
   }
   if (const auto path = cgroup_v1_memory_path(cgroups)) {
-    if (const auto h = cgroup_headroom("/sys/fs/cgroup/memory", *path, "memory.limit_in_bytes", "memory.usage_in_bytes"))
-      limits.push_back({"cgroup memory.limit_in_bytes", *h});
+    const auto h = cgroup_headroom("/sys/fs/cgroup/memory", *path, "memory.limit_in_bytes", "memory.usage_in_bytes");
+    if (h) limits.push_back({"cgroup memory.limit_in_bytes", *h});
   }
   const std::string status = read_text("/proc/self/status");
   if (const auto h = rlimit_headroom(RLIMIT_AS, status, "VmSize")) limits.push_back({"ulimit -v (RLIMIT_AS)", *h});

@@ -75,7 +75,8 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
   // Every series reserved to its final size: no reallocation inside the timed loop, and the recorder takes the
   // bytes suite_memory.cpp counts (doubling growth would leave up to twice that allocated).
   const std::size_t timed_steps = static_cast<std::size_t>(suite.steps);
-  for (std::vector<double>* v : {&series.step_ms, &series.feedback_ms, &series.feedback_total_ms}) v->reserve(timed_steps);
+  for (std::vector<double>* v : {&series.step_ms, &series.feedback_ms, &series.feedback_total_ms})
+    v->reserve(timed_steps);
   for (std::vector<std::int32_t>* v : {&series.nodes, &series.links, &series.interpolations}) v->reserve(timed_steps);
   const std::size_t ops_before = op_samples.size();
 

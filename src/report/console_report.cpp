@@ -91,7 +91,8 @@ void print_fits(const RunResult& r, std::ostream& out) {
 }  // namespace
 
 void print_console_report(const RunResult& result, std::ostream& out) {
-  out << "Suite " << terminal_safe(result.suite.name) << " (" << terminal_safe(result.suite.path.string()) << "), " << result.cases.size()
+  out << "Suite " << terminal_safe(result.suite.name) << " (" << terminal_safe(result.suite.path.string()) << "), "
+      << result.cases.size()
       << " cases, " << result.suite.repetitions << " repetitions x " << result.suite.steps << " steps, wall "
       << fixed(result.wall_s, 2) << " s\n\n";
   print_cases(result, out);

@@ -36,7 +36,8 @@ void expect_one_line_exit_2(const Outcome& o, const std::string& needle, const s
 TEST_F(Cli, SuiteBeyondUlimitIsRefusedNotCrashed) {
   // 1025 x 1025 plain nodes need about 0.7 GiB; the limit leaves the process far less.
   std::string suite = replaced(kTinySuite, "\"width\": 9, \"height\": 9", "\"width\": 1025, \"height\": 1025");
-  suite = replaced(suite, "\"methods\": [\"plain\", \"tcsb\"], \"compression\": [1.0, 0.5]", "\"methods\": [\"plain\"]");
+  suite = replaced(suite, "\"methods\": [\"plain\", \"tcsb\"], \"compression\": [1.0, 0.5]",
+                   "\"methods\": [\"plain\"]");
   write_file(dir_ / "big.json", suite);
   const Outcome o = shell("sh -c 'ulimit -v 150000; exec \"" + std::string(TCSB_BINARY) +
                           "\" run big.json --quiet --out out.json'");

@@ -281,7 +281,8 @@ TEST(SuiteReject, AdjustmentIsAppliedBeforeTheMemoryCheck) {
 
 // Issue 23: a symlink loop was reported as "no such file".
 TEST(SuiteReject, SymlinkLoopIsNotNoSuchFile) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("tcsb_loop_" + std::to_string(::getpid()));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("tcsb_loop_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::filesystem::path loop = dir / "loop.json";
   std::filesystem::remove(loop);
