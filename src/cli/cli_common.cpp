@@ -6,8 +6,10 @@
 #include <iostream>
 
 #include "harness/context.h"
+#include "harness/out_of_memory.h"
 #include "harness/suite.h"
 #include "report/report_writer.h"
+#include "report/terminal_text.h"
 
 namespace tcsb::cli {
 
@@ -30,7 +32,8 @@ std::filesystem::path resolve_suite(const std::string& argument) {
   if (argument.empty()) throw UsageError("SUITE must not be empty");
   const std::filesystem::path path(argument);
   std::error_code ec;
-  if (std::filesystem::exists(path, ec)) return path;
+  // Exists, or cannot be looked at for a reason other than absence (a symlink loop): parse_suite says which.
+  if (std::filesystem::status(path, ec).type() != std::filesystem::file_type::not_found) return path;
   // Only a bare word is looked up among the bundled suites: "out/paper" or "paper.json" mean files.
   const bool bare_name = !path.has_parent_path() && path.extension().empty();
   if (!bare_name) return path;  // parse_suite reports the missing file by name
@@ -47,7 +50,7 @@ std::string one_line(std::string_view text) {
   std::replace(line.begin(), line.end(), '\n', ' ');
   std::replace(line.begin(), line.end(), '\r', ' ');
   while (!line.empty() && line.back() == ' ') line.pop_back();
-  return line;
+  return terminal_safe(line, kMaxMessageBytes);
 }
 
 void print_error(std::string_view message) { std::cerr << "tcsb: error: " << one_line(message) << std::endl; }
@@ -67,6 +70,12 @@ int guarded(const std::function<int()>& command) {
     // Not a bug: the machine refused the output (a full disk, a closed pipe). Said plainly, without "internal".
     print_error(e.what());
     return kExitInternal;
+  } catch (const OutOfMemoryError& e) {
+    print_error(e.what());
+    return kExitUsage;
+  } catch (const std::bad_alloc&) {  // outside a run (the runner names the case: harness/out_of_memory.h)
+    print_error(out_of_memory_message("tcsb"));
+    return kExitUsage;
   } catch (const std::exception& e) {
     std::cerr << "tcsb: internal error: " << one_line(e.what()) << std::endl;
     return kExitInternal;

@@ -40,7 +40,8 @@ std::vector<std::string> bundled_suite_names();
 /// SuiteError naming the argument when a bare name is neither a file nor a bundled suite.
 std::filesystem::path resolve_suite(const std::string& argument);
 
-/// `text` with line breaks turned into spaces, so every error is exactly one line.
+/// `text` with line breaks turned into spaces, so every error is exactly one line, made terminal_safe (control
+/// characters escaped) and cut to kMaxMessageBytes (report/terminal_text.h).
 std::string one_line(std::string_view text);
 
 /// Writes "tcsb: error: <message>" as one line to stderr.
@@ -49,8 +50,9 @@ void print_error(std::string_view message);
 /// Writes "tcsb: warning: <message>" as one line to stderr.
 void print_warning(std::string_view message);
 
-/// Runs a command, turning exceptions into one stderr line and an exit code: SuiteError and UsageError ->
-/// kExitUsage; WriteError (report/report_writer.h: an output the machine refused) -> kExitInternal; any other
+/// Runs a command, turning exceptions into one stderr line and an exit code: SuiteError, UsageError and running out
+/// of memory (OutOfMemoryError, std::bad_alloc: a suite too large for this machine) -> kExitUsage; WriteError
+/// (report/report_writer.h: an output the machine refused) -> kExitInternal; any other
 /// std::exception -> "tcsb: internal error: ..." and kExitInternal.
 int guarded(const std::function<int()>& command);
 

@@ -6,9 +6,11 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/flag_values.h"
 #include "cli/run_support.h"
 #include "harness/context.h"
 #include "harness/figure_frames.h"
+#include "harness/out_of_memory.h"
 #include "report/frames_json.h"
 #include "report/json_report.h"
 
@@ -53,9 +55,10 @@ CLI::App* add_frames_command(CLI::App& app, FramesArgs& args) {
   cmd->add_option("--net", args.net, "Net of the suite (default: its last)");
   cmd->add_option("--compression", args.compression,
                   "TC-SB node budget as a fraction of the net's nodes (default: the suite's smallest target)");
-  cmd->add_option("--steps", args.steps, "Steps after which both bodies are recorded, increasing")
-      ->delimiter(',')
-      ->capture_default_str();
+  std::string defaults;
+  for (const int step : args.steps) defaults += (defaults.empty() ? "" : ",") + std::to_string(step);
+  add_list_option(*cmd, "--steps", args.steps, "Steps after which both bodies are recorded, increasing")
+      ->default_str(defaults);
   cmd->add_option("--out", args.out, "Write to FILE (atomically) instead of stdout");
   return cmd;
 }
@@ -70,7 +73,9 @@ int frames_command(const FramesArgs& args) {
   const double compression = compression_of(suite, args.compression);
   // Recorded in the file; not printed, since nothing here is timed (the warnings are about timing).
   const Context context = gather_context();
-  const FigureFrames frames = record_figure_frames(suite, net, compression, args.steps);
+  const FigureFrames frames =
+      naming_out_of_memory("suite " + suite.name + ", frames of net " + suite.nets[net].name,
+                           [&] { return record_figure_frames(suite, net, compression, args.steps); });
   if (frames.diverged_step) {
     print_warning("net " + frames.net + " diverged after step " + std::to_string(*frames.diverged_step) + " (" +
                   frames.diverged_reason + "); the frames after it are missing");

@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "harness/json_file.h"
 #include "harness/suite.h"
+#include "report/terminal_text.h"
 #include "report/text_table.h"
 
 namespace tcsb::cli {
@@ -53,7 +54,7 @@ int list_command() {
                    {"description", TextTable::Align::kLeft}});
   for (const std::string& name : names) table.add_row(describe(name));
   table.print(std::cout, 0);
-  std::cout << "Suites directory: " << suites_dir().string() << '\n';
+  std::cout << "Suites directory: " << terminal_safe(suites_dir().string()) << '\n';
   return kExitOk;
 }
 

@@ -29,8 +29,8 @@ int reproduce_command(const ReproduceArgs& args) {
   check_out_is_not_input(args.out, paper_file);
   check_out_is_not_input(args.out, suite_file);
   const PaperReference paper = load_paper_reference(paper_file);
-  Suite suite = parse_suite(suite_file);
-  apply_repetitions(args.repetitions, suite);
+  // --repetitions is applied before parse_suite's memory check (see run_command).
+  const Suite suite = parse_suite(suite_file, [&args](Suite& s) { apply_repetitions(args.repetitions, s); });
   const RunResult result = run_on_console(suite, args.quiet);
   const Reproduction reproduction = check_reproduction(result, paper);
   print_reproduction(result, reproduction, std::cerr);

@@ -6,6 +6,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/flag_values.h"
 #include "cli/run_support.h"
 #include "report/report_format.h"
 
@@ -40,9 +41,8 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
   run->add_option("--out", args.out, "Write the report to FILE (atomically) instead of stdout");
   run->add_option("--format", args.format, "Output format: " + known_formats())->capture_default_str();
   run->add_flag("--quiet", args.quiet, "No console report on stderr (warnings still appear)");
-  run->add_option("--compression", args.compression,
-                  "TC-SB node budgets as fractions of the initial node count, e.g. 0.75,0.3 (overrides the suite)")
-      ->delimiter(',');
+  add_list_option(*run, "--compression", args.compression,
+                  "TC-SB node budgets as fractions of the initial node count, e.g. 0.75,0.3 (overrides the suite)");
   run->add_option("--max-step-ms", args.max_step_ms,
                   "TC-SB time budget per step in ms, 0 to disable (overrides the suite)");
   add_repetitions_option(*run, args.repetitions);
@@ -54,9 +54,12 @@ int run_command(const RunArgs& args) {
   check_out_path(args.out);
   const std::filesystem::path suite_file = resolve_suite(args.suite);
   check_out_is_not_input(args.out, suite_file);
-  Suite suite = parse_suite(suite_file);
-  apply_budget_overrides(args, suite);
-  apply_repetitions(args.repetitions, suite);
+  // The flags are applied inside parse_suite, before its memory check: a suite too large for this machine is
+  // refused whether its size comes from the file or from --repetitions / --compression.
+  const Suite suite = parse_suite(suite_file, [&args](Suite& s) {
+    apply_budget_overrides(args, s);
+    apply_repetitions(args.repetitions, s);
+  });
   return run_and_report(suite, args);
 }
 

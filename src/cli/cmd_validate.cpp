@@ -7,6 +7,7 @@
 #include "cli/commands.h"
 #include "harness/case_plan.h"
 #include "harness/suite_memory.h"
+#include "report/terminal_text.h"
 
 namespace tcsb::cli {
 
@@ -20,7 +21,8 @@ int validate_command(const ValidateArgs& args) {
   const Suite suite = parse_suite(resolve_suite(args.suite));
   char mib[32];
   std::snprintf(mib, sizeof mib, "%.1f", static_cast<double>(estimate_peak_bytes(suite)) / (1024.0 * 1024.0));
-  std::cout << args.suite << ": ok (" << suite.nets.size() << " nets, " << expand_cases(suite).size() << " cases, "
+  std::cout << terminal_safe(args.suite) << ": ok (" << suite.nets.size() << " nets, " << expand_cases(suite).size()
+            << " cases, "
             << suite.repetitions << " repetitions, estimated peak memory " << mib << " MiB)" << std::endl;
   return kExitOk;
 }

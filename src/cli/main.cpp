@@ -5,7 +5,9 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/flag_values.h"
 #include "cli/standard_streams.h"
+#include "softbody/bullet_allocator.h"
 
 namespace {
 
@@ -31,6 +33,7 @@ int dispatch(int argc, char** argv) {
   CLI::App* compare = add_compare_command(app, compare_args);
   CLI::App* export_ = add_export_command(app, export_args);
   CLI::App* frames = add_frames_command(app, frames_args);
+  reject_empty_values(app);  // after every option exists: "--out ''" must not mean stdout, nor '' mean 0
 
   try {
     app.parse(argc, argv);
@@ -57,6 +60,7 @@ int dispatch(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  tcsb::install_throwing_bullet_allocator();  // before any Bullet object: a failed allocation must not be a SIGSEGV
   prepare_standard_streams();
   // Every command's output, --help and --version included, is checked here: a full disk or a closed pipe is exit 3.
   return finish_stdout(dispatch(argc, argv));

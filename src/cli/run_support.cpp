@@ -12,6 +12,7 @@
 #include "harness/stall.h"
 #include "report/console_report.h"
 #include "report/report_writer.h"
+#include "report/terminal_text.h"
 #include "report/text_table.h"
 
 namespace tcsb::cli {
@@ -88,7 +89,7 @@ class ProgressLine {
     text += "/";
     text += std::to_string(total);
     text += "] ";
-    text += label;
+    text += terminal_safe(label, kMaxMessageBytes);  // case labels carry net names from the suite file
     const std::size_t shown = text.size();
     if (text.size() < width_) text.append(width_ - text.size(), ' ');
     width_ = shown;

@@ -21,18 +21,27 @@ bool FeedbackWorkers::spin_until(Ready ready) {
 }
 
 FeedbackWorkers::FeedbackWorkers(int threads) {
-  coordinator_ = std::thread([this] { coordinator_loop(); });
-  for (int i = 1; i < threads; ++i) helpers_.emplace_back([this] { helper_loop(); });
+  try {
+    coordinator_ = std::thread([this] { coordinator_loop(); });
+    for (int i = 1; i < threads; ++i) helpers_.emplace_back([this] { helper_loop(); });
+  } catch (...) {
+    // A thread that could not start (std::system_error, EAGAIN: a memory or process limit) must not leave the
+    // started ones joinable: their destructors would std::terminate the process instead of reporting the error.
+    stop_and_join();
+    throw;
+  }
 }
 
-FeedbackWorkers::~FeedbackWorkers() {
+FeedbackWorkers::~FeedbackWorkers() { stop_and_join(); }
+
+void FeedbackWorkers::stop_and_join() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stop_ = true;
     stopping_.store(true, std::memory_order_release);
   }
   wake_.notify_all();
-  coordinator_.join();
+  if (coordinator_.joinable()) coordinator_.join();
   for (std::thread& t : helpers_) t.join();
 }
 

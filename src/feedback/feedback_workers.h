@@ -43,6 +43,8 @@ class FeedbackWorkers {
  private:
   void coordinator_loop();
   void helper_loop();
+  /// Tells every started thread to stop and joins it (the destructor, and a constructor that failed half-way).
+  void stop_and_join();
   void run_chunks();
   /// Spins (pausing the core) until `ready()` or kSpin has passed; returns ready().
   template <class Ready>

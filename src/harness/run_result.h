@@ -30,7 +30,7 @@ struct StepSeries {
 struct RepetitionResult {
   int repetition = 0;
   std::string status = "ok";            ///< "ok" or "diverged"
-  std::optional<int> diverged_step;     ///< step (counting warm-up) at which divergence was detected
+  std::optional<int> diverged_step;     ///< first step (counting warm-up) after which the body failed a check
   std::string diverged_reason;
   StepSeries series;
   double mean_step_ms = 0, median_step_ms = 0;

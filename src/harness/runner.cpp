@@ -7,6 +7,7 @@
 #include "harness/case_body.h"
 #include "harness/case_summary.h"
 #include "harness/fidelity_runner.h"
+#include "harness/out_of_memory.h"
 #include "harness/state_hash.h"
 #include "harness/step_clock.h"
 #include "softbody/divergence.h"
@@ -28,6 +29,34 @@ class OpRecorder final : public OpSink {
   std::vector<OpSample>& out_;
 };
 
+/// Where a repetition diverged: the step after which a check failed, why, and the body's state hash then.
+struct Divergence {
+  int step = 0;
+  std::string reason;
+  std::string state_hash;
+};
+
+/// The first step after which the repetition's body fails a divergence check. The timed loop checks fully only
+/// every kFullCheckEvery steps (a full check reads every node and link: outside the timed region, but it would
+/// leave them in the cache for the next timed step), so what it found at `found` may have begun after `clean`, the
+/// last step that passed the full check. A repetition is deterministic (same seed, same steps: its final state
+/// hash is gated), so replaying it up to `found` and checking fully after every step past `clean` finds the step
+/// at which it began, whatever the run's length. If the replay does not diverge by then (a time budget,
+/// feedback.max_step_ms, makes runs differ), what the run found stands.
+Divergence first_divergence(const Suite& suite, const CaseKey& key, const std::shared_ptr<const Net>& net,
+                            std::uint64_t seed, int clean, Divergence found) {
+  SoftBodyWorld world(suite.world);
+  std::unique_ptr<CaseBody> body = make_case_body(suite, key, world, net, seed);
+  const btScalar dt = static_cast<btScalar>(suite.world.dt);
+  for (int s = 0; s < found.step; ++s) {
+    body->step(dt);
+    if (s <= clean) continue;
+    if (std::optional<std::string> reason = divergence_now(body->bullet(), net->extent()))
+      return {s, *reason, state_hash(body->bullet())};
+  }
+  return found;
+}
+
 RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repetition,
                                 const std::shared_ptr<const Net>& net, std::uint64_t seed,
                                 std::vector<OpSample>& op_samples) {
@@ -43,7 +72,12 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
   const btScalar dt = static_cast<btScalar>(suite.world.dt);
   const int total = suite.warmup_steps + suite.steps;
   StepSeries& series = rep.series;
-  series.step_ms.reserve(static_cast<std::size_t>(suite.steps));
+  // Every series reserved to its final size: no reallocation inside the timed loop, and the recorder takes the
+  // bytes suite_memory.cpp counts (doubling growth would leave up to twice that allocated).
+  const std::size_t timed_steps = static_cast<std::size_t>(suite.steps);
+  for (std::vector<double>* v : {&series.step_ms, &series.feedback_ms, &series.feedback_total_ms})
+    v->reserve(timed_steps);
+  for (std::vector<std::int32_t>* v : {&series.nodes, &series.links, &series.interpolations}) v->reserve(timed_steps);
   const std::size_t ops_before = op_samples.size();
 
   for (int s = 0; s < total; ++s) {
@@ -64,15 +98,18 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
     }
     const std::optional<std::string> diverged = divergence_after_step(b, net->extent(), s, total);  // untimed
     if (diverged) {
+      const Divergence first = first_divergence(suite, key, net, seed, last_full_check_before(s),
+                                                {s, *diverged, state_hash(b)});
       rep.status = "diverged";
-      rep.diverged_step = s;
-      rep.diverged_reason = *diverged;
+      rep.diverged_step = first.step;
+      rep.diverged_reason = first.reason;
+      rep.final_state_hash = first.state_hash;
       break;
     }
   }
   if (TcSoftBody* tc = body->tc()) tc->set_op_sink(nullptr);
   rep.operations = static_cast<std::int64_t>(op_samples.size() - ops_before);
-  rep.final_state_hash = state_hash(body->bullet());
+  if (rep.status == "ok") rep.final_state_hash = state_hash(body->bullet());
   if (!series.step_ms.empty()) {
     rep.mean_step_ms = mean(series.step_ms);
     rep.median_step_ms = median(series.step_ms);
@@ -97,7 +134,10 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
 
   std::vector<std::shared_ptr<const Net>> nets;
   nets.reserve(suite.nets.size());
-  for (const NetSpec& spec : suite.nets) nets.push_back(std::make_shared<const Net>(spec));
+  for (const NetSpec& spec : suite.nets) {
+    nets.push_back(naming_out_of_memory("suite " + suite.name + ", net " + spec.name,
+                                        [&spec] { return std::make_shared<const Net>(spec); }));
+  }
 
   result.cases.resize(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i) {
@@ -120,15 +160,19 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
     // One seed per case, the same for every repetition: repetitions do identical work, so their spread is the
     // machine's, and N, L, I and the final state are exact, gateable numbers.
     const std::uint64_t seed = case_seed(suite, run.case_index);
-    c.repetitions.push_back(run_repetition(suite, c.key, run.repetition, nets[c.key.net], seed, c.ops.samples));
+    c.repetitions.push_back(naming_out_of_memory(
+        "suite " + suite.name + ", case " + c.label + " (net " + c.net_name + ")",
+        [&] { return run_repetition(suite, c.key, run.repetition, nets[c.key.net], seed, c.ops.samples); }));
     ++done;
     if (options.progress) options.progress(done, total, c.label);
   }
   for (CaseResult& c : result.cases) summarize_case(c);
   if (fidelity) {
-    result.fidelity = run_fidelity(suite, nets, [&](const std::string& net) {
-      ++done;
-      if (options.progress) options.progress(done, total, net + "/fidelity");
+    result.fidelity = naming_out_of_memory("suite " + suite.name + ", fidelity pass", [&] {
+      return run_fidelity(suite, nets, [&](const std::string& net) {
+        ++done;
+        if (options.progress) options.progress(done, total, net + "/fidelity");
+      });
     });
   }
   result.wall_s = std::chrono::duration<double>(StepClock::now() - start).count();

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/json_file.h"
+#include "harness/case_plan.h"
 #include "harness/sha256.h"
 #include "harness/suite_fields.h"
 #include "harness/suite_memory.h"
@@ -119,13 +120,21 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
 void check_memory(const Suite& suite, const Reader& r) {
   const std::optional<MemoryShortfall> shortfall = memory_shortfall(suite);
   if (!shortfall) return;
+  const std::string budget = " needs about " + format_bytes(shortfall->needed) + ", but only " +
+                             format_bytes(shortfall->usable) + " may be used (80% of the headroom under " +
+                             shortfall->headroom.source + ", " +
+                             format_bytes(static_cast<double>(shortfall->headroom.bytes)) + ")";
+  if (shortfall->recorder) {
+    // Blame the field that makes it large: a huge "steps" is not the net's fault.
+    r.fail("steps", "recording " + std::to_string(suite.steps) + " steps (+ " + std::to_string(suite.warmup_steps) +
+                        " warm-up) x " + std::to_string(expand_cases(suite).size()) + " cases x " +
+                        std::to_string(suite.repetitions) + " repetitions" + budget);
+  }
   const NetSpec& net = suite.nets[shortfall->net];
   const std::string size = std::to_string(net.width) + " x " + std::to_string(net.height) + " = " +
                            std::to_string(net.node_count()) + " nodes";
   r.fail(index_path("nets", shortfall->net),
-         "net \"" + net.name + "\" (" + size + ") needs about " + format_bytes(shortfall->needed) +
-             " with all methods' bodies alive, but only " + format_bytes(shortfall->usable) +
-             " may be used (80% of MemAvailable " + format_bytes(shortfall->available) + ")");
+         "net \"" + net.name + "\" (" + size + ") with all methods' bodies alive" + budget);
 }
 
 }  // namespace
@@ -139,7 +148,7 @@ const char* method_name(Method method) {
   return "unknown";
 }
 
-Suite parse_suite_text(const std::string& text, const std::string& file) {
+Suite parse_suite_text(const std::string& text, const std::string& file, const SuiteAdjustment& adjust) {
   const Reader r(file);
   const json doc = parse_json_text<json>(text, file);
   if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
@@ -210,12 +219,13 @@ Suite parse_suite_text(const std::string& text, const std::string& file) {
   // The fidelity pass compares TC-SB (and the ablations at TC-SB's targets) with the reference: without TC-SB there
   // is nothing to measure, and silently measuring nothing would look like a pass.
   if (s.fidelity.enabled && !has_tcsb) r.fail("fidelity.enabled", "requires methods to contain \"tcsb\"");
+  if (adjust) adjust(s);  // before the memory check: it must see the suite that will run
   check_memory(s, r);
   return s;
 }
 
-Suite parse_suite(const std::filesystem::path& path) {
-  Suite suite = parse_suite_text(read_input_file(path, kSuiteJsonLimits.max_bytes), path.string());
+Suite parse_suite(const std::filesystem::path& path, const SuiteAdjustment& adjust) {
+  Suite suite = parse_suite_text(read_input_file(path, kSuiteJsonLimits.max_bytes), path.string(), adjust);
   suite.path = path;
   return suite;
 }

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -67,12 +68,16 @@ class SuiteError : public std::runtime_error {
   std::string file_, field_;
 };
 
-/// Reads and validates a suite file. Throws SuiteError (unknown keys, wrong types, out-of-range values, nets too
-/// large for this machine's memory (harness/suite_memory.h), unreadable file) before anything runs.
-Suite parse_suite(const std::filesystem::path& path);
+/// Changes the command line makes to a parsed suite (--repetitions, --compression, ...); throws to reject them.
+using SuiteAdjustment = std::function<void(Suite&)>;
+
+/// Reads and validates a suite file. Throws SuiteError (unknown keys, wrong types, out-of-range values, a suite too
+/// large for this process's memory limits (harness/suite_memory.h), unreadable file) before anything runs.
+/// `adjust`, when given, runs on the parsed suite before the memory check, so the check sees the suite that runs.
+Suite parse_suite(const std::filesystem::path& path, const SuiteAdjustment& adjust = {});
 
 /// Validates a suite given as JSON text; `file` names it in errors. The same checks as parse_suite.
-Suite parse_suite_text(const std::string& text, const std::string& file);
+Suite parse_suite_text(const std::string& text, const std::string& file, const SuiteAdjustment& adjust = {});
 
 /// Name used in JSON for a method ("plain", "bullet_patch", "tcsb").
 const char* method_name(Method method);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 
 #include "harness/case_plan.h"
@@ -13,33 +12,27 @@
 namespace tcsb {
 namespace {
 
-std::optional<std::uint64_t> mem_available_bytes() {
-  std::ifstream in("/proc/meminfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    unsigned long long kib = 0;
-    if (std::sscanf(line.c_str(), "MemAvailable: %llu kB", &kib) == 1) return static_cast<std::uint64_t>(kib) * 1024;
-  }
-  return std::nullopt;
-}
-
 // Per-element memory, deliberately on the high side (sizes measured with sizeof on Bullet 3.24, single precision):
-//  - a Bullet node: btSoftBody::Node 256 B + its DBVT leaf and share of inner nodes ~ 2 x 64 B (btDbvtNode is 56 B,
-//    rounded up for the allocator);
+//  - a Bullet node: btSoftBody::Node 256 B, its rest position in btSoftBody::m_X 16 B, and its DBVT leaf and share
+//    of inner nodes, 2 tree nodes of 96 B each: btDbvtNode is 56 B, but btAlignedAlloc(56, 16) asks malloc for
+//    56 + 8 (the pointer it keeps to free) + 15 (alignment slack) = 79 B, a 96 B glibc chunk with its 8 B header.
+//    (The model had 2 x 64 B and no m_X, 80 B/node too few: plain-only runs measured 11-13 % above it.)
 //  - a Bullet link: btSoftBody::Link 72 B;
-//  - a Bullet face (CreatePatch makes 2 per cell, bullet_patch only): btSoftBody::Face 144 B + ~ 2 x 64 B of tree;
+//  - a Bullet face (CreatePatch makes 2 per cell, bullet_patch only): btSoftBody::Face 144 B + 2 x 96 B of tree;
 //  - our Net: ~ 48 B per node (rest position, mass, pin flag, padding) + 12 B per link (NetLink);
 //  - the LOD tree: ~ 4/3 N tree nodes x 112 B;
 //  - a TC-SB body: Bullet nodes reserved for all 4/3 N tree nodes, ~ 200 B of bookkeeping per tree node (cut
 //    membership, incidence lists, feedback state), and Bullet links for up to 3 L;
-//  - the recorder: ~ 32 B per step sample, for every step (warm-up included) of every run of the suite.
-constexpr double kBulletNodeBytes = 256 + 2 * 64;
+//  - the recorder: 36 B per step (StepSeries in run_result.h: three doubles, three int32, reserved to size by the
+//    runner), counted for every step (warm-up included, a margin) of every run of the suite, all kept to the end.
+constexpr double kDbvtNodeBytes = 96;
+constexpr double kBulletNodeBytes = 256 + 16 + 2 * kDbvtNodeBytes;
 constexpr double kBulletLinkBytes = 72;
-constexpr double kBulletFaceBytes = 144 + 2 * 64;
+constexpr double kBulletFaceBytes = 144 + 2 * kDbvtNodeBytes;
 constexpr double kNetNodeBytes = 48, kNetLinkBytes = 12;
 constexpr double kTreeNodeBytes = 112, kTreeNodesPerLeaf = 4.0 / 3.0;
 constexpr double kTcBookkeepingBytes = 200, kTcLinkFactor = 3;
-constexpr double kSampleBytes = 32;
+constexpr double kSampleBytes = 3 * 8 + 3 * 4;
 
 /// Peak bytes while cases of net `spec` run: the shared net, one body per method; or, in the fidelity pass, which
 /// runs afterwards, the reference and every subject at once (each counted as a TC-SB body, the largest kind).
@@ -69,10 +62,14 @@ double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
   return subjects > 0 ? std::max(bytes, fidelity) : bytes;
 }
 
-double recorder_bytes(const Suite& suite) {
+}  // namespace
+
+double recorder_peak_bytes(const Suite& suite) {
   const double runs = static_cast<double>(expand_cases(suite).size()) * suite.repetitions;
   return runs * (static_cast<double>(suite.steps) + suite.warmup_steps) * kSampleBytes;
 }
+
+namespace {
 
 std::size_t peak_net_index(const Suite& suite) {
   std::size_t best = 0;
@@ -94,21 +91,26 @@ std::string format_bytes(double bytes) {
 std::uint64_t estimate_peak_bytes(const Suite& suite) {
   double peak = 0;
   for (const NetSpec& net : suite.nets) peak = std::max(peak, net_peak_bytes(suite, net));
-  const double bytes = std::ceil(peak + recorder_bytes(suite));
+  const double bytes = std::ceil(peak + recorder_peak_bytes(suite));
   constexpr double kMax = 1.8e19;  // just under 2^64: saturate rather than overflow
   return bytes >= kMax ? std::numeric_limits<std::uint64_t>::max() : static_cast<std::uint64_t>(bytes);
 }
 
-std::optional<MemoryShortfall> memory_shortfall(const Suite& suite) {
-  const std::optional<std::uint64_t> available = mem_available_bytes();
-  if (!available || suite.nets.empty()) return std::nullopt;
+std::optional<MemoryShortfall> memory_shortfall(const Suite& suite, const std::vector<MemoryHeadroom>& headrooms) {
+  const std::optional<MemoryHeadroom> smallest = smallest_headroom(headrooms);
+  if (!smallest || suite.nets.empty()) return std::nullopt;
   MemoryShortfall s;
   s.needed = static_cast<double>(estimate_peak_bytes(suite));
-  s.available = static_cast<double>(*available);
-  s.usable = 0.8 * s.available;
+  s.headroom = *smallest;
+  s.usable = 0.8 * static_cast<double>(smallest->bytes);
   if (s.needed <= s.usable) return std::nullopt;
   s.net = peak_net_index(suite);
+  s.recorder = recorder_peak_bytes(suite) > net_peak_bytes(suite, suite.nets[s.net]);
   return s;
+}
+
+std::optional<MemoryShortfall> memory_shortfall(const Suite& suite) {
+  return memory_shortfall(suite, memory_headrooms());
 }
 
 }  // namespace tcsb

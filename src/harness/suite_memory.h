@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "harness/memory_limits.h"
 #include "harness/suite.h"
 
 namespace tcsb {
@@ -15,16 +17,23 @@ namespace tcsb {
 /// used to reject suites that would not fit.
 std::uint64_t estimate_peak_bytes(const Suite& suite);
 
-/// A suite whose largest net would not fit: which net, and the figures for the error message.
+/// Bytes the step recorder needs: one sample per step (warm-up included) of every repetition of every case.
+double recorder_peak_bytes(const Suite& suite);
+
+/// A suite that would not fit: what is too large, and the figures for the error message.
 struct MemoryShortfall {
-  std::size_t net = 0;   ///< index into suite.nets of the net with the largest peak
-  double needed = 0;     ///< estimate_peak_bytes(suite)
-  double usable = 0;     ///< 80 % of available: what a run may take
-  double available = 0;  ///< MemAvailable of /proc/meminfo
+  std::size_t net = 0;        ///< index into suite.nets of the net with the largest peak
+  bool recorder = false;      ///< the step recorder (steps x cases x repetitions), not a net, needs most
+  double needed = 0;          ///< estimate_peak_bytes(suite)
+  double usable = 0;          ///< 80 % of the headroom: what a run may take
+  MemoryHeadroom headroom;    ///< the smallest of memory_headrooms() (harness/memory_limits.h)
 };
 
-/// The shortfall when the suite needs more than 80 % of this machine's available memory; nothing when it fits, or
-/// when the machine does not say what is available.
+/// The shortfall when the suite needs more than 80 % of the smallest headroom in `headrooms`; nothing when it fits,
+/// or when there is no headroom to go by.
+std::optional<MemoryShortfall> memory_shortfall(const Suite& suite, const std::vector<MemoryHeadroom>& headrooms);
+
+/// memory_shortfall against this process's limits now (memory_headrooms()).
 std::optional<MemoryShortfall> memory_shortfall(const Suite& suite);
 
 /// "12.3 MiB" or "1.5 GiB".

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "report/terminal_text.h"
 #include "report/text_table.h"
 
 namespace tcsb {
@@ -21,7 +22,7 @@ std::string plural(std::size_t n, const char* one, const char* many) {
 /// Markdown table cells must not contain a bare '|'.
 std::string cell(const std::string& text) {
   std::string out;
-  for (const char c : text) {
+  for (const char c : terminal_safe(text)) {  // labels carry net names from the suite; the summary may go to stderr
     if (c == '|') out += "\\|";
     else if (c != '\n') out += c;
   }
@@ -134,7 +135,7 @@ std::string comparison_summary_markdown(const GateOutcome& o, const ResultView& 
   out << "## tcsb compare: " << (o.pass() ? "PASS" : "FAIL") << "\n\n";
   out << "- Base: " << describe_run(base) << "\n";
   out << "- New: " << describe_run(next) << "\n";
-  out << "- Suite `" << c.suite_name << "` (sha256 `" << c.suite_sha256.substr(0, 12) << "…`): "
+  out << "- Suite `" << terminal_safe(c.suite_name) << "` (sha256 `" << c.suite_sha256.substr(0, 12) << "…`): "
       << plural(c.cases, "case", "cases") << ", " << plural(c.repetitions, "repetition", "repetitions")
       << " compared.\n\n";
   out << "**" << plural(o.regressions, "regression", "regressions") << ", "

@@ -5,6 +5,7 @@
 
 #include "harness/paper_tables.h"
 #include "report/fidelity_console.h"
+#include "report/terminal_text.h"
 #include "report/text_table.h"
 
 namespace tcsb {
@@ -90,7 +91,8 @@ void print_fits(const RunResult& r, std::ostream& out) {
 }  // namespace
 
 void print_console_report(const RunResult& result, std::ostream& out) {
-  out << "Suite " << result.suite.name << " (" << result.suite.path.string() << "), " << result.cases.size()
+  out << "Suite " << terminal_safe(result.suite.name) << " (" << terminal_safe(result.suite.path.string()) << "), "
+      << result.cases.size()
       << " cases, " << result.suite.repetitions << " repetitions x " << result.suite.steps << " steps, wall "
       << fixed(result.wall_s, 2) << " s\n\n";
   print_cases(result, out);

@@ -5,12 +5,16 @@
 #include <cstdio>
 #include <ostream>
 
+#include "report/terminal_text.h"
+
 namespace tcsb {
 
 TextTable::TextTable(std::vector<Column> columns) : columns_(std::move(columns)) {}
 
 void TextTable::add_row(std::vector<std::string> cells) {
   cells.resize(columns_.size());
+  // Cells carry suite, net and case names from suite files: escaped here, once, for every table printed.
+  for (std::string& cell : cells) cell = terminal_safe(cell);
   rows_.push_back(std::move(cells));
 }
 

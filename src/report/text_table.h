@@ -21,7 +21,8 @@ class TextTable {
 
   /// A table with these columns.
   explicit TextTable(std::vector<Column> columns);
-  /// Appends a row; missing cells are empty, extra cells are dropped.
+  /// Appends a row; missing cells are empty, extra cells are dropped; control characters are escaped
+  /// (terminal_safe).
   void add_row(std::vector<std::string> cells);
   /// True when no row has been added.
   bool empty() const { return rows_.empty(); }

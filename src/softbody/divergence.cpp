@@ -41,4 +41,10 @@ std::optional<std::string> divergence_after_step(const btSoftBody& body, double 
   return diverged;
 }
 
+std::optional<std::string> divergence_now(const btSoftBody& body, double net_extent) {
+  std::optional<std::string> diverged = quick_divergence_check(body, kMaxExtentFactor * net_extent);
+  if (!diverged) diverged = full_divergence_check(body, kMaxLinkLengthFactor * net_extent);
+  return diverged;
+}
+
 }  // namespace tcsb

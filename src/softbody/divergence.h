@@ -24,8 +24,18 @@ inline constexpr double kMaxExtentFactor = 10.0;  ///< bounds larger than 10x th
 inline constexpr double kMaxLinkLengthFactor = 2.0;  ///< a link longer than twice the net's size
 inline constexpr int kFullCheckEvery = 50;        ///< steps between O(N + L) checks
 
-/// The check a run makes after step `step` (0-based) of `total`: the quick check every step, the full check every
-/// kFullCheckEvery steps and after the last, with the bounds above scaled by the net's extent.
+/// The check a timed run makes after step `step` (0-based) of `total`: the quick check every step, the full check
+/// every kFullCheckEvery steps and after the last, with the bounds above scaled by the net's extent. A divergence
+/// found here may have begun up to kFullCheckEvery steps earlier: after last_full_check_before(step). The timed
+/// runner finds the first diverged step by replaying (harness/runner.cpp); untimed loops use divergence_now.
 std::optional<std::string> divergence_after_step(const btSoftBody& body, double net_extent, int step, int total);
+
+/// The last step before `step` after which divergence_after_step made its full check (-1: none). Every step up to
+/// it passed both checks; the first diverged step lies after it.
+constexpr int last_full_check_before(int step) { return step / kFullCheckEvery * kFullCheckEvery - 1; }
+
+/// Both checks, whatever the step: what a loop that times nothing (or only what does not share the cache with the
+/// check) runs after every step, so it reports the first diverged step.
+std::optional<std::string> divergence_now(const btSoftBody& body, double net_extent);
 
 }  // namespace tcsb

@@ -3,6 +3,7 @@
 #include "harness/suite.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -238,7 +239,58 @@ TEST(SuiteReject, NetTooLargeForMemory) {
   const std::string msg = rejected_file("too_large.json", "nets[1]");
   EXPECT_NE(msg.find("huge"), std::string::npos) << msg;
   EXPECT_NE(msg.find("needs about"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("MemAvailable"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("headroom under"), std::string::npos) << msg;
+}
+
+// Issue 23: a huge "steps" makes the step recorder, not a net, too large; the message blamed the net.
+TEST(SuiteReject, HugeStepsBlamesSteps) {
+  if (!meminfo_readable()) GTEST_SKIP() << "/proc/meminfo unreadable: the memory check is skipped by design";
+  // 2e9 steps x 1000 repetitions x 32 B: about 64 TB of samples, on any machine.
+  const std::string msg = rejected_edit([](json& j) {
+    j["steps"] = 2000000000;
+    j["repetitions"] = 1000;
+  }, "steps");
+  EXPECT_NE(msg.find("2000000000 steps"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("1000 repetitions"), std::string::npos) << msg;
+}
+
+// Issue 23: the command line's --repetitions was applied after the memory check, so a suite refused with 1000
+// repetitions in the file ran when 1000 came from the flag. parse_suite's adjustment runs before the check.
+TEST(SuiteReject, AdjustmentIsAppliedBeforeTheMemoryCheck) {
+  if (!meminfo_readable()) GTEST_SKIP() << "/proc/meminfo unreadable: the memory check is skipped by design";
+  json j = minimal();
+  j["steps"] = 10000000;  // x 32 B per sample: 320 MB per case and repetition
+  j["repetitions"] = 1;
+  const std::string text = j.dump();
+  try {
+    parse_suite_text(text, "edited.json");
+  } catch (const SuiteError&) {
+    GTEST_SKIP() << "even one repetition is too large for this machine: nothing to tell apart";
+  }
+  // 1000 repetitions (320 GB per case) from the adjustment are refused, naming the field that makes it large.
+  rejected([&] { parse_suite_text(text, "edited.json", [](Suite& s) { s.repetitions = 1000; }); }, "edited.json",
+           "steps");
+  int adjusted = 0;
+  const Suite s = parse_suite_text(minimal().dump(), "ok.json", [&adjusted](Suite& suite) {
+    ++adjusted;
+    suite.repetitions = 7;
+  });
+  EXPECT_EQ(adjusted, 1);
+  EXPECT_EQ(s.repetitions, 7);
+}
+
+// Issue 23: a symlink loop was reported as "no such file".
+TEST(SuiteReject, SymlinkLoopIsNotNoSuchFile) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("tcsb_loop_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path loop = dir / "loop.json";
+  std::filesystem::remove(loop);
+  std::filesystem::create_symlink(loop, loop);
+  const std::string msg = rejected([&] { parse_suite(loop); }, loop.string(), "");
+  EXPECT_EQ(msg.find("no such file"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("symbolic links"), std::string::npos) << msg;
+  std::filesystem::remove_all(dir);
 }
 
 TEST(SuiteReject, MissingFile) {

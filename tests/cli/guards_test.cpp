@@ -1,0 +1,177 @@
+// Issue 23, an attacker's and a careless user's review: memory limits the guard must see (ulimit -v, flags that
+// enlarge a suite), user text that must not drive the terminal, unbounded error lines, misreported file errors, and
+// empty flag values. Every failure here is exit 2 with one line on stderr and no signal.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_fixture.h"
+
+namespace {
+
+using namespace tcsb::cli_test;
+
+const std::string kTinySuite = nine_by_nine_suite("tiny", 2);
+
+/// `text` with every occurrence of `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+/// Expects exit 2, exactly one "tcsb: error:" line mentioning `needle`, and no out.json.
+void expect_one_line_exit_2(const Outcome& o, const std::string& needle, const std::string& what) {
+  EXPECT_EQ(o.exit_code, 2) << what << ": " << o.err;
+  EXPECT_EQ(count_lines(o.err), 1) << what << ": " << o.err;
+  EXPECT_EQ(o.err.rfind("tcsb: error: ", 0), 0u) << what << ": " << o.err;
+  EXPECT_NE(o.err.find(needle), std::string::npos) << what << ": " << o.err;
+}
+
+// ---- class 5: the memory guard ----------------------------------------------------------------------------------
+
+// Under `ulimit -v` the guard read only MemAvailable, passed a suite the limit could not hold, and the run died
+// with SIGSEGV inside Bullet's allocator. The guard reads RLIMIT_AS now and refuses the suite before it runs.
+TEST_F(Cli, SuiteBeyondUlimitIsRefusedNotCrashed) {
+  // 1025 x 1025 plain nodes need about 0.7 GiB; the limit leaves the process far less.
+  std::string suite = replaced(kTinySuite, "\"width\": 9, \"height\": 9", "\"width\": 1025, \"height\": 1025");
+  suite = replaced(suite, "\"methods\": [\"plain\", \"tcsb\"], \"compression\": [1.0, 0.5]",
+                   "\"methods\": [\"plain\"]");
+  write_file(dir_ / "big.json", suite);
+  const Outcome o = shell("sh -c 'ulimit -v 150000; exec \"" + std::string(TCSB_BINARY) +
+                          "\" run big.json --quiet --out out.json'");
+  expect_one_line_exit_2(o, "ulimit -v", "run under ulimit -v");
+  EXPECT_NE(o.err.find("nets[0]"), std::string::npos) << o.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.json"));
+}
+
+// When an allocation fails anyway (here: tcsb frames keeps 800 captures of a 65 x 65 net, far more than the
+// limit), the user gets exit 2 and one line naming the suite and the net, not a signal or an internal error.
+TEST_F(Cli, AllocationFailureIsExit2NamingSuiteAndNet) {
+  write_file(dir_ / "mid.json", replaced(kTinySuite, "\"width\": 9, \"height\": 9", "\"width\": 65, \"height\": 65"));
+  std::string steps;
+  for (int s = 0; s < 800; ++s) {
+    if (s > 0) steps += ',';  // appended piecewise: GCC 12 -Wrestrict false positive on "," + string
+    steps += std::to_string(s);
+  }
+  const Outcome o = shell("sh -c 'ulimit -v 150000; exec \"" + std::string(TCSB_BINARY) +
+                          "\" frames --suite mid.json --steps " + steps + " --out out.json'");
+  expect_one_line_exit_2(o, "out of memory", "frames under ulimit -v");
+  EXPECT_NE(o.err.find("suite tiny"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("net n9"), std::string::npos) << o.err;  // the net keeps its name when resized
+  EXPECT_FALSE(fs::exists(dir_ / "out.json"));
+}
+
+// Feedback worker threads that cannot start under the limit (their stacks alone exceed it) threw from a constructor
+// with a started thread still joinable: std::terminate, SIGABRT. Now it is the same exit 2 as any allocation.
+TEST_F(Cli, ThreadsThatCannotStartAreExit2) {
+  write_file(dir_ / "par.json",
+             replaced(kTinySuite, "\"solver\"", "\"feedback\": {\"parallel\": true, \"threads\": 8}, \"solver\""));
+  const Outcome o = shell("sh -c 'ulimit -v 40000; exec \"" + std::string(TCSB_BINARY) +
+                          "\" run par.json --quiet --out out.json'");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  // The run has started, so the machine's warnings (a loaded machine) may precede the one error line.
+  const std::size_t error = o.err.find("tcsb: error: ");
+  ASSERT_NE(error, std::string::npos) << o.err;
+  EXPECT_EQ(count_lines(o.err.substr(error)), 1) << o.err;
+  EXPECT_NE(o.err.find("out of memory", error), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("net n9", error), std::string::npos) << o.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.json"));
+}
+
+// --repetitions was applied after the memory check: a suite validate refuses ran when the same total came from
+// the flag. Steps make the total here (the step recorder), so the refusal names "steps".
+TEST_F(Cli, RepetitionsFlagCannotBypassTheMemoryCheck) {
+  // 1e7 steps: 1 repetition records about 1 GB, 1000 repetitions about 1 TB.
+  const std::string base = replaced(kTinySuite, "\"steps\": 20", "\"steps\": 10000000");
+  write_file(dir_ / "one.json", replaced(base, "\"repetitions\": 2", "\"repetitions\": 1"));
+  write_file(dir_ / "many.json", replaced(base, "\"repetitions\": 2", "\"repetitions\": 1000"));
+  expect_one_line_exit_2(tcsb("validate many.json"), "steps", "validate with 1000 repetitions in the file");
+  const Outcome one = tcsb("validate one.json");
+  if (one.exit_code != 0) GTEST_SKIP() << "one repetition is already too large here: " << one.err;
+  for (const char* command : {"run one.json --quiet --repetitions 1000 --out out.json",
+                              "reproduce --suite one.json --quiet --repetitions 1000 --out out.json"}) {
+    // Under `timeout`: before the fix this started a run of hours.
+    expect_one_line_exit_2(shell("timeout 60 '" + std::string(TCSB_BINARY) + "' " + command), "steps", command);
+    EXPECT_FALSE(fs::exists(dir_ / "out.json")) << command;
+  }
+}
+
+// ---- class 7: messages ------------------------------------------------------------------------------------------
+
+// A key or name with ESC [ 2 J cleared the user's screen: control characters are printed escaped.
+TEST_F(Cli, ControlCharactersInSuiteTextAreEscaped) {
+  const std::string key = "\\u001b[2Jevil\\u0007";  // JSON escapes: the file holds ESC and BEL themselves
+  write_file(dir_ / "key.json", replaced(kTinySuite, "\"seed\": 1", "\"seed\": 1, \"" + key + "\": 1"));
+  const Outcome bad = tcsb("validate key.json");
+  expect_one_line_exit_2(bad, "\\x1b[2Jevil\\x07", "unknown key with ESC");
+  EXPECT_EQ(bad.err.find('\x1b'), std::string::npos) << bad.err;
+  EXPECT_EQ(bad.err.find('\x07'), std::string::npos) << bad.err;
+
+  // The console tables print case labels, which carry the net's name.
+  write_file(dir_ / "name.json", replaced(kTinySuite, "\"name\": \"n9\"", "\"name\": \"n9\\u001b]0;pwned\\u0007\""));
+  const Outcome run = tcsb("run name.json --repetitions 1 --out out.json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("n9\\x1b]0;pwned\\x07"), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find('\x1b'), std::string::npos) << run.err;
+
+  // validate echoes the SUITE argument on stdout.
+  write_file(dir_ / "e\x1b[31m.json", kTinySuite);
+  const Outcome ok = tcsb("validate 'e\x1b[31m.json'");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("e\\x1b[31m.json: ok"), std::string::npos) << ok.out;
+  EXPECT_EQ(ok.out.find('\x1b'), std::string::npos) << ok.out;
+}
+
+// A megabyte key made a megabyte error line.
+TEST_F(Cli, ErrorLinesAreBounded) {
+  const std::string key(1 << 20, 'k');
+  write_file(dir_ / "long.json", replaced(kTinySuite, "\"seed\": 1", "\"seed\": 1, \"" + key + "\": 1"));
+  const Outcome o = tcsb("validate long.json");
+  expect_one_line_exit_2(o, "more bytes)", "a 1 MiB key");
+  EXPECT_LT(o.err.size(), 600u);
+}
+
+// A symlink loop was "no such file"; the system's reason is what the user needs.
+TEST_F(Cli, SymlinkLoopIsReportedAsSuch) {
+  fs::create_symlink("loop.json", dir_ / "loop.json");
+  for (const char* command : {"run loop.json --out out.json", "validate loop.json", "compare loop.json loop.json"}) {
+    const Outcome o = tcsb(command);
+    expect_one_line_exit_2(o, "symbolic links", command);
+    EXPECT_EQ(o.err.find("no such file"), std::string::npos) << command << ": " << o.err;
+  }
+}
+
+// Empty values were taken silently: '' as "no value" (or stdout for --out), and "0.5,,0.3" as "0.5,0.3".
+TEST_F(Cli, EmptyFlagValuesAreUsageErrors) {
+  write_file(dir_ / "tiny.json", kTinySuite);
+  const struct {
+    const char* command;
+    const char* flag;
+  } cases[] = {
+      {"run tiny.json --out out.json --repetitions ''", "--repetitions"},
+      {"run tiny.json --out out.json --compression ''", "--compression"},
+      {"run tiny.json --out out.json --compression 0.5,,0.3", "--compression"},
+      {"run tiny.json --out out.json --compression 0.5,", "--compression"},
+      {"run tiny.json --out out.json --max-step-ms ''", "--max-step-ms"},
+      {"run tiny.json --out out.json --format ''", "--format"},
+      {"run tiny.json --out ''", "--out"},
+      {"run ''", "suite"},
+      {"reproduce --suite tiny.json --out out.json --paper ''", "--paper"},
+      {"reproduce --suite tiny.json --out out.json --repetitions ''", "--repetitions"},
+      {"frames --suite tiny.json --out out.json --steps 0,,5", "--steps"},
+      {"frames --suite tiny.json --out out.json --steps ''", "--steps"},
+      {"frames --suite tiny.json --out out.json --net ''", "--net"},
+      {"frames --suite tiny.json --out out.json --compression ''", "--compression"},
+      {"compare a.json b.json --summary ''", "--summary"},
+      {"export a.json --format ''", "--format"},
+  };
+  for (const auto& c : cases) {
+    const Outcome o = tcsb(c.command);
+    expect_one_line_exit_2(o, c.flag, c.command);
+    EXPECT_FALSE(fs::exists(dir_ / "out.json")) << c.command;
+  }
+}
+
+}  // namespace
