@@ -112,12 +112,10 @@ void print_looks(const Reproduction& reproduction, std::ostream& out) {
          "ratios stay paired). Look k spends alpha/2^k of alpha = "
       << general(kSequentialAlpha, 2) << " (docs/methodology.md); a claim keeps the verdict of the look that "
       << "decided it. Counts and fidelity metrics are judged on their values.\n";
-  if (reproduction.looks.empty() || reproduction.looks.front().judged > 0) {
-    const bool any_interval = std::any_of(reproduction.claims.begin(), reproduction.claims.end(),
-                                          [](const TrackedClaim& c) { return c.claim.interval.has_value(); });
-    if (!any_interval)
-      out << "No intervals: they need at least " << kMinRepetitionsForIntervals << " repetitions per case.\n";
-  }
+  const bool any_interval = std::any_of(reproduction.claims.begin(), reproduction.claims.end(),
+                                        [](const TrackedClaim& c) { return c.claim.interval.has_value(); });
+  if (!any_interval)
+    out << "No intervals: they need at least " << kMinRepetitionsForIntervals << " repetitions per case.\n";
 }
 
 }  // namespace
@@ -290,8 +288,8 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
   print_claims("Claims of the paper (any FAIL: exit 1; else any undecided: exit 4):", reproduction.claims, out);
   print_claims("Targets of this project (reported, not gating):", reproduction.targets, out);
   print_looks(reproduction, out);
-  out << "Reproduction " << verdict_text(reproduction.verdict()) << " in " << fixed(reproduction.wall_s, 1)
-      << " s\n";
+  out << "Reproduction: " << verdict_text(reproduction.verdict()) << " (" << fixed(reproduction.wall_s, 1)
+      << " s, " << reproduction.looks.size() << " look(s))\n";
 }
 
 }  // namespace tcsb
