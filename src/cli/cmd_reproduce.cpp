@@ -42,8 +42,9 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceArgs& args) {
   cmd->add_flag("--quiet", args.quiet, "Only the side-by-side tables and claims on stderr");
   add_repetitions_option(*cmd, args.repetitions);
   cmd->add_option("--budget", args.budget,
-                  "Seconds for extra repetitions of undecided claims after the run (default: what is left of 150 s "
-                  "for the whole command; 0: none)");
+                  "Seconds for judging the claims after the run: intervals, and extra repetitions of undecided "
+                  "claims while they fit (default: what is left of 150 s for the whole command; 0: no extra "
+                  "repetitions)");
   return cmd;
 }
 

@@ -32,8 +32,8 @@ struct ReproduceArgs {
   std::string out;                            ///< output file; empty: stdout
   bool quiet = false;                         ///< only the reproduction tables on stderr
   std::optional<int> repetitions;             ///< overrides the suite's repetitions per case, when given
-  /// Wall time (s) for extra repetitions of undecided claims after the run; absent: what is left of
-  /// kReproduceWallTarget; 0: none.
+  /// Wall time (s) for judging the claims after the run — intervals, and extra repetitions of undecided claims
+  /// while they fit; absent: what is left of kReproduceWallTarget; 0: no extra repetitions.
   std::optional<double> budget;
 };
 

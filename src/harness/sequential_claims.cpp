@@ -114,6 +114,7 @@ SequentialOutcome judge_sequentially(RunResult& result, const SequentialSettings
     return n;
   };
 
+  const double start = hooks.now_s();  // the budget counts from here: the first look's intervals are part of it
   auto [first, first_bootstrap_s] = timed_judge(following, 1);
   first.undecided = undecided_claims();
   first.seconds = first_bootstrap_s;
@@ -124,7 +125,6 @@ SequentialOutcome judge_sequentially(RunResult& result, const SequentialSettings
   if (first.resamples > 0 && first.repetitions > 0)
     bootstrap_unit_s = first_bootstrap_s / (first.resamples * static_cast<double>(first.repetitions));
 
-  const double start = hooks.now_s();
   for (int look = 2;; ++look) {
     // Follow on only what is undecided; extra repetitions only for the paper's claims (targets ride along).
     std::erase_if(following, [](const TrackedClaim* t) { return verdict(t->claim) != Verdict::kUndecided; });

@@ -46,7 +46,9 @@ struct Look {
 struct SequentialSettings {
   double alpha = kSequentialAlpha;  ///< error rate over all looks, per claim
   int max_looks = 5;                ///< look 5 needs 6 400 resamples (look_resamples): the bootstrap's cost bound
-  double budget_s = 0;              ///< wall time for every look after the first; 0: the first look only
+  /// Wall time for the looks, counted from the start of the first (always taken: its intervals are part of it); a
+  /// look after it is taken only if it is predicted to end within this. 0: the first look only.
+  double budget_s = 0;
   std::uint64_t seed = 1;           ///< bootstrap seed of look 1 (look k uses seed + k - 1)
 };
 

@@ -104,7 +104,7 @@ void print_looks(const Reproduction& reproduction, std::ostream& out) {
     t.add_row({std::to_string(l.look), std::to_string(l.extra), std::to_string(l.cases), std::to_string(l.repetitions),
                fixed(100.0 * l.confidence, 2) + "%", std::to_string(l.resamples), std::to_string(l.judged),
                std::to_string(l.undecided), fixed(l.seconds, 1)});
-  out << "Looks (budget " << fixed(reproduction.budget_s, 0) << " s after the first; ended: "
+  out << "Looks (budget " << fixed(reproduction.budget_s, 0) << " s; ended: "
       << looks_ended_name(reproduction.ended) << "):\n";
   t.print(out);
   out << "A claim measured from repetitions passes when its whole interval satisfies it, fails when none of it does, "

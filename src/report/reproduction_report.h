@@ -19,7 +19,8 @@ namespace tcsb {
 
 /// How the claims are judged beyond the run's own repetitions.
 struct ReproductionOptions {
-  /// Wall time for looks after the first (extra repetitions and their intervals); 0: the run's repetitions only.
+  /// Wall time for judging the claims: the first look's intervals, then extra repetitions and their intervals while
+  /// they fit (SequentialSettings::budget_s); 0: the run's repetitions only.
   double budget_s = 0;
   /// Told after each look (progress on the console); may be empty.
   std::function<void(const Look&)> on_look;
@@ -34,7 +35,7 @@ struct Reproduction {
   std::vector<TrackedClaim> targets;  ///< this project's stricter targets (reported only)
   std::vector<Look> looks;            ///< the looks taken, the first being the run's own repetitions
   LooksEnded ended = LooksEnded::kDecided;  ///< why the looks ended
-  double budget_s = 0;                ///< the budget the looks after the first had
+  double budget_s = 0;                ///< the budget the looks had
   double bootstrap_s = 0;             ///< computing the claims' intervals, over all looks
   double wall_s = 0;                  ///< the whole reproduction: the run, fidelity pass, extra repetitions, intervals
   /// Over the paper's claims: kFail if any failed, else kUndecided if any is undecided, else kPass.
