@@ -32,7 +32,15 @@ struct ReproduceArgs {
   std::string out;                            ///< output file; empty: stdout
   bool quiet = false;                         ///< only the reproduction tables on stderr
   std::optional<int> repetitions;             ///< overrides the suite's repetitions per case, when given
+  /// Wall time (s) for judging the claims after the run — intervals, and extra repetitions of undecided claims
+  /// while they fit; absent: what is left of kReproduceWallTarget; 0: no extra repetitions.
+  std::optional<double> budget;
 };
+
+/// What `tcsb reproduce` aims to stay within by default, extra repetitions included (seconds).
+inline constexpr double kReproduceWallTarget = 150.0;
+/// The largest --budget accepted (a day): a bound against typing errors.
+inline constexpr double kMaxReproduceBudget = 86400.0;
 
 /// Options of `tcsb frames`.
 struct FramesArgs {
@@ -101,9 +109,10 @@ CLI::App* add_export_command(CLI::App& app, ExportArgs& args);
 /// Renders an existing result file in another format (gbench, github-action-smaller, ...).
 int export_command(const ExportArgs& args);
 
-/// Registers `reproduce [--suite S] [--paper FILE] [--out FILE] [--quiet]`.
+/// Registers `reproduce [--suite S] [--paper FILE] [--out FILE] [--quiet] [--repetitions N] [--budget SECONDS]`.
 CLI::App* add_reproduce_command(CLI::App& app, ReproduceArgs& args);
-/// Runs the suite, prints both tables beside the paper's, checks the claims: 0 all pass, 1 a claim failed.
+/// Runs the suite, prints both tables beside the paper's, judges the claims (adding repetitions for undecided ones
+/// within the budget): 0 all passed, 1 a claim failed, 4 none failed but some are undecided.
 int reproduce_command(const ReproduceArgs& args);
 
 }  // namespace tcsb::cli

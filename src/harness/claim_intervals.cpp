@@ -1,5 +1,6 @@
 #include "harness/claim_intervals.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -34,6 +35,24 @@ std::vector<std::size_t> sample_offsets(const CaseResult& c) {
 }
 
 }  // namespace
+
+RunResult subset_for_bootstrap(const RunResult& result, const std::vector<std::size_t>& case_indices,
+                               bool keep_operations) {
+  RunResult subset;
+  subset.suite = result.suite;
+  subset.context = result.context;
+  subset.wall_s = result.wall_s;
+  for (std::size_t i = 0; i < result.cases.size(); ++i) {
+    if (std::find(case_indices.begin(), case_indices.end(), i) == case_indices.end()) continue;
+    CaseResult& c = subset.cases.emplace_back(result.cases[i]);
+    for (RepetitionResult& r : c.repetitions) {
+      r.series = StepSeries{};
+      if (!keep_operations) r.operations = 0;
+    }
+    if (!keep_operations) c.ops.samples.clear();
+  }
+  return subset;
+}
 
 RunResult resample_repetitions(const RunResult& result, std::mt19937_64& rng) {
   RunResult out;

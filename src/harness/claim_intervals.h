@@ -15,9 +15,6 @@
 
 namespace tcsb {
 
-/// Resamples behind a claim's interval, and its confidence.
-inline constexpr int kClaimResamples = 400;
-inline constexpr double kClaimConfidence = 0.95;
 /// Fewer repetitions than this and resampling them says nothing about the noise (one repetition would give a
 /// point "interval", falsely decided): no intervals then.
 inline constexpr std::size_t kMinRepetitionsForIntervals = 5;
@@ -30,11 +27,18 @@ inline constexpr std::size_t kMinRepetitionsForIntervals = 5;
 /// to its repetitions' counts (the runner never produces either).
 RunResult resample_repetitions(const RunResult& result, std::mt19937_64& rng);
 
+/// The run restricted to the cases `case_indices` (kept in case order), without per-step series or the fidelity
+/// pass, and — unless `keep_operations` — without operation samples (a repetition then records 0 operations): what
+/// a bootstrap needs to recompute the claims on those cases, and no more, since it copies the run once per resample.
+RunResult subset_for_bootstrap(const RunResult& result, const std::vector<std::size_t>& case_indices,
+                               bool keep_operations);
+
 /// Claim id -> its measured value on each resample (NaN where a resample leaves it unmeasured).
 using ClaimReplicates = std::map<std::string, std::vector<double>>;
 
 /// Recomputes `claims_of` on `resamples` resamples of `result` drawn from a generator seeded with `seed`. Empty
-/// when some case has fewer than kMinRepetitionsForIntervals repetitions.
+/// when some case has fewer than kMinRepetitionsForIntervals repetitions. (Pass a subset_for_bootstrap() of the run
+/// to resample only the cases the claims read: much faster.)
 ClaimReplicates bootstrap_claims(const RunResult& result,
                                  const std::function<std::vector<Claim>(const RunResult&)>& claims_of, int resamples,
                                  std::uint64_t seed);

@@ -91,6 +91,18 @@ void fit_points(std::vector<ScalingPoint> points, Fit& fit) {
   fit.points = std::move(points);
 }
 
+/// The log-log slope of a step fit's points (all positive), when they define one.
+std::optional<double> loglog_exponent(const std::vector<ScalingPoint>& points) {
+  std::vector<double> x, y;
+  for (const ScalingPoint& p : points) {
+    if (!(p.nodes > 0 && p.ms > 0)) return std::nullopt;
+    x.push_back(std::log(p.nodes));
+    y.push_back(std::log(p.ms));
+  }
+  const LinearFit line = fit_linear(x, y);
+  return line.valid ? std::optional(line.slope) : std::nullopt;
+}
+
 }  // namespace
 
 std::string compression_percent(double compression) {
@@ -218,6 +230,18 @@ std::vector<StepFit> step_ms_vs_nodes(const RunResult& result) {
     fits.push_back(std::move(fit));
   }
   return fits;
+}
+
+StepFit step_fit_of_method(const RunResult& result, Method method) {
+  StepFit fit;
+  fit.method = method_name(method);
+  std::vector<ScalingPoint> points;
+  for (const CaseResult& c : result.cases)
+    if (c.key.method == method && usable(c)) points.push_back({c.mean_nodes, c.step_ms.median});
+  if (points.size() < 2) return fit;
+  fit_points(std::move(points), fit);
+  if (fit.valid) fit.loglog_exponent = loglog_exponent(fit.points);
+  return fit;
 }
 
 std::vector<OpFit> op_ms_vs_nodes(const RunResult& result) {

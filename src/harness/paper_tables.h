@@ -53,6 +53,8 @@ struct StepFit {
   std::optional<double> compression;
   bool valid = false;                          ///< false when the points do not define a line (then numbers are null)
   std::optional<double> slope_ms_per_node, intercept_ms, r2;
+  /// Slope of log(ms) against log(nodes): 1 for a straight line through the origin, above 1 for superlinear growth.
+  std::optional<double> loglog_exponent;
   std::vector<ScalingPoint> points;            ///< ascending nodes
 };
 
@@ -99,6 +101,11 @@ std::vector<Table1Row> table1(const RunResult& result);
 
 /// Figure 5: per (method, compression) group with at least 2 ok cases, step time (median) against mean nodes.
 std::vector<StepFit> step_ms_vs_nodes(const RunResult& result);
+
+/// Figure 5 over the whole test set: one line through every usable case of `method` — for TC-SB every budget of
+/// every net (each case one point: its mean simulated nodes, its median step time). `compression` is left empty.
+/// Invalid (and without numbers) with fewer than 2 points.
+StepFit step_fit_of_method(const RunResult& result, Method method);
 
 /// Figure 4: per operation kind (always all four, OpKind order), one point per net pooled over that net's ok TC-SB
 /// cases (mean nodes, median complete time), and the fit.

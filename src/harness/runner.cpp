@@ -1,5 +1,6 @@
 #include "harness/runner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 
@@ -122,6 +123,34 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
   return rep;
 }
 
+/// The nets of a suite, built once per call (they are immutable and shared by every case of the net).
+std::vector<std::shared_ptr<const Net>> build_nets(const Suite& suite) {
+  std::vector<std::shared_ptr<const Net>> nets;
+  nets.reserve(suite.nets.size());
+  for (const NetSpec& spec : suite.nets) {
+    nets.push_back(naming_out_of_memory("suite " + suite.name + ", net " + spec.name,
+                                        [&spec] { return std::make_shared<const Net>(spec); }));
+  }
+  return nets;
+}
+
+/// Runs the planned repetitions into result.cases, numbering each `first_repetition[case] + run.repetition`.
+void run_plan(RunResult& result, const std::vector<PlannedRun>& plan, const std::vector<int>& first_repetition,
+              const std::vector<std::shared_ptr<const Net>>& nets, const RunOptions& options, int& done, int total) {
+  for (const PlannedRun& run : plan) {
+    CaseResult& c = result.cases[run.case_index];
+    // One seed per case, the same for every repetition: repetitions do identical work, so their spread is the
+    // machine's, and N, L, I and the final state are exact, gateable numbers.
+    const std::uint64_t seed = case_seed(result.suite, run.case_index);
+    const int repetition = first_repetition[run.case_index] + run.repetition;
+    c.repetitions.push_back(naming_out_of_memory(
+        "suite " + result.suite.name + ", case " + c.label + " (net " + c.net_name + ")",
+        [&] { return run_repetition(result.suite, c.key, repetition, nets[c.key.net], seed, c.ops.samples); }));
+    ++done;
+    if (options.progress) options.progress(done, total, c.label);
+  }
+}
+
 }  // namespace
 
 RunResult run_suite(const Suite& suite, const Context& context, const RunOptions& options) {
@@ -132,12 +161,7 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
   const std::vector<CaseKey> keys = expand_cases(suite);
   const std::vector<PlannedRun> plan = interleaved_plan(suite, keys);
 
-  std::vector<std::shared_ptr<const Net>> nets;
-  nets.reserve(suite.nets.size());
-  for (const NetSpec& spec : suite.nets) {
-    nets.push_back(naming_out_of_memory("suite " + suite.name + ", net " + spec.name,
-                                        [&spec] { return std::make_shared<const Net>(spec); }));
-  }
+  const std::vector<std::shared_ptr<const Net>> nets = build_nets(suite);
 
   result.cases.resize(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i) {
@@ -155,17 +179,7 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
   const bool fidelity = !fidelity_plan(suite).empty();
   const int total = static_cast<int>(plan.size() + (fidelity ? nets.size() : 0));
   int done = 0;
-  for (const PlannedRun& run : plan) {
-    CaseResult& c = result.cases[run.case_index];
-    // One seed per case, the same for every repetition: repetitions do identical work, so their spread is the
-    // machine's, and N, L, I and the final state are exact, gateable numbers.
-    const std::uint64_t seed = case_seed(suite, run.case_index);
-    c.repetitions.push_back(naming_out_of_memory(
-        "suite " + suite.name + ", case " + c.label + " (net " + c.net_name + ")",
-        [&] { return run_repetition(suite, c.key, run.repetition, nets[c.key.net], seed, c.ops.samples); }));
-    ++done;
-    if (options.progress) options.progress(done, total, c.label);
-  }
+  run_plan(result, plan, std::vector<int>(keys.size(), 0), nets, options, done, total);
   for (CaseResult& c : result.cases) summarize_case(c);
   if (fidelity) {
     result.fidelity = naming_out_of_memory("suite " + suite.name + ", fidelity pass", [&] {
@@ -177,6 +191,36 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
   }
   result.wall_s = std::chrono::duration<double>(StepClock::now() - start).count();
   return result;
+}
+
+void run_more_repetitions(RunResult& result, const std::vector<std::size_t>& case_indices, int extra,
+                          const RunOptions& options) {
+  if (extra <= 0) return;
+  const StepClock::time_point start = StepClock::now();
+  std::vector<bool> chosen(result.cases.size(), false);
+  for (const std::size_t i : case_indices)
+    if (i < chosen.size()) chosen[i] = true;
+  std::vector<CaseKey> keys;
+  std::vector<int> first_repetition;
+  for (const CaseResult& c : result.cases) {
+    keys.push_back(c.key);
+    int next = 0;  // after the case's highest repetition number
+    for (const RepetitionResult& r : c.repetitions) next = std::max(next, r.repetition + 1);
+    first_repetition.push_back(next);
+  }
+  // The run's own order for `extra` repetitions, keeping only the chosen cases: nets rotate, a net's cases stay
+  // side by side in suite order.
+  Suite more = result.suite;
+  more.repetitions = extra;
+  std::vector<PlannedRun> plan = interleaved_plan(more, keys);
+  std::erase_if(plan, [&](const PlannedRun& run) { return !chosen[run.case_index]; });
+  if (plan.empty()) return;
+  const std::vector<std::shared_ptr<const Net>> nets = build_nets(result.suite);
+  int done = 0;
+  run_plan(result, plan, first_repetition, nets, options, done, static_cast<int>(plan.size()));
+  for (std::size_t i = 0; i < result.cases.size(); ++i)
+    if (chosen[i]) summarize_case(result.cases[i]);
+  result.wall_s += std::chrono::duration<double>(StepClock::now() - start).count();
 }
 
 }  // namespace tcsb

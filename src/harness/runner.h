@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "harness/run_result.h"
 #include "harness/suite.h"
@@ -19,5 +20,13 @@ struct RunOptions {
 /// side by side); each repetition builds a fresh body, steps warm-up steps untimed, then times every step with a
 /// monotonic clock. A repetition that diverges stops at once and is reported with its step, never averaged in.
 RunResult run_suite(const Suite& suite, const Context& context, const RunOptions& options = {});
+
+/// Runs `extra` more repetitions of the cases `case_indices` of a finished run (indices into result.cases), in the
+/// run's own interleaved order restricted to those cases (every extra repetition runs each of them once, a net's
+/// cases side by side), numbered after the case's last repetition, each with the case's own seed — so a repetition
+/// added later does the same work as the first ones. Recomputes the touched cases' summaries and adds the time
+/// taken to result.wall_s. Indices out of range are ignored. The fidelity pass is not repeated.
+void run_more_repetitions(RunResult& result, const std::vector<std::size_t>& case_indices, int extra,
+                          const RunOptions& options = {});
 
 }  // namespace tcsb

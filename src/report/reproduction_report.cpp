@@ -9,6 +9,7 @@
 #include "harness/fidelity_tables.h"
 #include "harness/paper_claims.h"
 #include "harness/paper_tables.h"
+#include "harness/runner.h"
 #include "harness/step_clock.h"
 #include "report/claims_console.h"
 #include "report/json_report.h"
@@ -37,19 +38,50 @@ const PaperTable1Row* paper_row(const PaperReference& paper, const std::string& 
   return nullptr;
 }
 
-nlohmann::ordered_json claim_json(const Claim& c) {
-  const std::optional<bool> beyond_noise = decided(c);
+nlohmann::ordered_json claim_json(const TrackedClaim& t) {
+  const Claim& c = t.claim;
+  nlohmann::ordered_json interval = nullptr;
+  if (c.interval)
+    interval = {{"low", json_number(c.interval->low)}, {"high", json_number(c.interval->high)},
+                {"confidence", json_number(t.confidence)}};
   return {{"id", c.id},
           {"description", c.description},
           {"comparison", comparison_name(c.comparison)},
           {"expected", json_number(c.expected)},
           {"tolerance", json_number(c.tolerance)},
+          {"evidence", evidence_name(c.evidence)},
           {"measured", json_number(c.measured)},
-          {"interval", c.interval ? nlohmann::ordered_json{{"low", json_number(c.interval->low)},
-                                                            {"high", json_number(c.interval->high)}}
-                                  : nlohmann::ordered_json(nullptr)},
-          {"pass", c.pass},
-          {"decided", beyond_noise ? nlohmann::ordered_json(*beyond_noise) : nlohmann::ordered_json(nullptr)}};
+          {"interval", interval},
+          {"verdict", verdict_name(verdict(c))},
+          {"look", t.look > 0 ? nlohmann::ordered_json(t.look) : nlohmann::ordered_json(nullptr)},
+          {"repetitions", t.look > 0 ? nlohmann::ordered_json(t.repetitions) : nlohmann::ordered_json(nullptr)}};
+}
+
+nlohmann::ordered_json look_json(const Look& l) {
+  return {{"look", l.look},           {"extra_repetitions", l.extra}, {"cases", l.cases},
+          {"repetitions", l.repetitions}, {"confidence", json_number(l.confidence)},
+          {"resamples", l.resamples}, {"judged", l.judged},          {"undecided", l.undecided},
+          {"seconds", json_number(l.seconds)}};
+}
+
+/// Figure 5's line as description: slope, intercept, R^2, log-log exponent and the node range.
+nlohmann::ordered_json fit_json(const StepFit& f) {
+  const auto nodes = [&](bool last) {
+    return f.points.empty() ? nlohmann::ordered_json(nullptr)
+                            : json_number(last ? f.points.back().nodes : f.points.front().nodes);
+  };
+  return {{"method", f.method},          {"points", f.points.size()},
+          {"min_nodes", nodes(false)},   {"max_nodes", nodes(true)},
+          {"r2", json_number(f.r2)},     {"slope_ms_per_node", json_number(f.slope_ms_per_node)},
+          {"intercept_ms", json_number(f.intercept_ms)}, {"loglog_exponent", json_number(f.loglog_exponent)}};
+}
+
+/// The deterministic targets: judged on their values, once, after the looks.
+TrackedClaim untracked(Claim c) {
+  TrackedClaim t;
+  t.claim = std::move(c);
+  t.gates = false;
+  return t;
 }
 
 /// The fidelity row of TC-SB at a Table 2 row's target, when the run has a fidelity pass.
@@ -64,35 +96,70 @@ std::vector<FidelityRow> fidelity_rows_of(const RunResult& result) {
   return result.fidelity ? fidelity_rows(*result.fidelity) : std::vector<FidelityRow>{};
 }
 
+/// The looks taken, and what the verdicts rest on.
+void print_looks(const Reproduction& reproduction, std::ostream& out) {
+  TextTable t({{"look"}, {"extra reps"}, {"cases"}, {"reps"}, {"confidence"}, {"resamples"}, {"judged"},
+               {"undecided"}, {"seconds"}});
+  for (const Look& l : reproduction.looks)
+    t.add_row({std::to_string(l.look), std::to_string(l.extra), std::to_string(l.cases), std::to_string(l.repetitions),
+               fixed(100.0 * l.confidence, 2) + "%", std::to_string(l.resamples), std::to_string(l.judged),
+               std::to_string(l.undecided), fixed(l.seconds, 1)});
+  out << "Looks (budget " << fixed(reproduction.budget_s, 0) << " s; ended: "
+      << looks_ended_name(reproduction.ended) << "):\n";
+  t.print(out);
+  out << "A claim measured from repetitions passes when its whole interval satisfies it, fails when none of it does, "
+         "and is undecided otherwise (percentile bootstrap of the repetitions, a net's cases drawn together so "
+         "ratios stay paired). Look k spends alpha/2^k of alpha = "
+      << general(kSequentialAlpha, 2) << " (docs/methodology.md); a claim keeps the verdict of the look that "
+      << "decided it. Counts and fidelity metrics are judged on their values.\n";
+  const bool any_interval = std::any_of(reproduction.claims.begin(), reproduction.claims.end(),
+                                        [](const TrackedClaim& c) { return c.claim.interval.has_value(); });
+  if (!any_interval)
+    out << "No intervals: they need at least " << kMinRepetitionsForIntervals << " repetitions per case.\n";
+}
+
 }  // namespace
 
-Reproduction check_reproduction(const RunResult& result, PaperReference paper) {
+Verdict Reproduction::verdict() const {
+  std::vector<Claim> all;
+  for (const TrackedClaim& t : claims) all.push_back(t.claim);
+  return overall_verdict(all);
+}
+
+Reproduction check_reproduction(RunResult& result, PaperReference paper, const ReproductionOptions& options) {
   Reproduction r;
   r.paper = std::move(paper);
-  const std::vector<Table2Row> t2 = table2(result);
-  r.claims = paper_claims(r.paper, t2, step_ms_vs_nodes(result), op_ms_vs_nodes(result));
-  // How far each measured value could move had the run been repeated: the same claims recomputed on bootstrap
-  // resamples of the repetitions. Seeded with the suite's seed, so the same measurements give the same intervals.
-  const StepClock::time_point bootstrap0 = StepClock::now();
-  const ClaimReplicates replicates = bootstrap_claims(
-      result,
-      [&](const RunResult& resample) {
-        const std::vector<Table2Row> rt2 = table2(resample);
-        std::vector<Claim> all = paper_claims(r.paper, rt2, step_ms_vs_nodes(resample), op_ms_vs_nodes(resample));
-        // The wall-time target is not resampled: NaN leaves it without an interval.
-        const std::vector<Claim> targets = project_targets(rt2, std::numeric_limits<double>::quiet_NaN());
-        all.insert(all.end(), targets.begin(), targets.end());
-        return all;
-      },
-      kClaimResamples, result.suite.seed);
-  r.bootstrap_s = ms_between(bootstrap0, StepClock::now()) / 1000.0;
-  r.wall_s = result.wall_s + r.bootstrap_s;
-  r.targets = project_targets(t2, r.wall_s);
-  attach_intervals(r.claims, replicates, kClaimConfidence);
-  attach_intervals(r.targets, replicates, kClaimConfidence);
+  r.budget_s = options.budget_s;
+  const PaperReference& ref = r.paper;
+  SequentialHooks hooks;
+  hooks.claims_of = [&ref](const RunResult& run) {
+    return paper_claims(ref, table2(run), step_fit_of_method(run, Method::kTcsb), table1(run));
+  };
+  hooks.targets_of = [](const RunResult& run) { return project_targets(table2(run)); };
+  hooks.scope_of = scope_of;
+  hooks.run_more = options.run_more ? options.run_more
+                                    : [](RunResult& run, const std::vector<std::size_t>& cases, int extra) {
+                                        run_more_repetitions(run, cases, extra);
+                                      };
+  const StepClock::time_point start = StepClock::now();
+  hooks.now_s = [start] { return ms_between(start, StepClock::now()) / 1000.0; };
+  hooks.on_look = options.on_look;
+  SequentialSettings settings;
+  settings.budget_s = options.budget_s;
+  settings.seed = result.suite.seed;  // the same measurements give the same intervals
+  SequentialOutcome outcome = judge_sequentially(result, settings, hooks);
+
+  r.claims = std::move(outcome.claims);
+  // Figure 4 (operations constant in time) is judged on deterministic work counts, not wall time: its claims
+  // (op_work_claims(result), judged on their values) are appended to r.claims here.
+  r.targets = std::move(outcome.targets);
+  r.looks = std::move(outcome.looks);
+  r.ended = outcome.ended;
+  r.bootstrap_s = outcome.bootstrap_s;
+  r.wall_s = result.wall_s + r.bootstrap_s;  // result.wall_s includes the extra repetitions
+  r.targets.push_back(untracked(wall_time_target(r.wall_s)));
   if (result.fidelity) {  // reported beside the speed targets; like them, they do not gate the exit code
-    const std::vector<Claim> fidelity = fidelity_targets(fidelity_rows(*result.fidelity));
-    r.targets.insert(r.targets.end(), fidelity.begin(), fidelity.end());
+    for (Claim& c : fidelity_targets(fidelity_rows(*result.fidelity))) r.targets.push_back(untracked(std::move(c)));
   }
   return r;
 }
@@ -136,16 +203,28 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
                             {"link_ops_ms", v(row.link_ops_ms)}, {"complete_ms", v(row.complete_ms)},
                             {"p50_us", v(row.p50_us)}, {"p99_us", v(row.p99_us)}, {"count", row.count}}}});
   }
-  nlohmann::ordered_json claims = nlohmann::ordered_json::array(), targets = nlohmann::ordered_json::array();
-  for (const Claim& c : reproduction.claims) claims.push_back(claim_json(c));
-  for (const Claim& c : reproduction.targets) targets.push_back(claim_json(c));
+  nlohmann::ordered_json claims = nlohmann::ordered_json::array(), targets = nlohmann::ordered_json::array(),
+                         looks = nlohmann::ordered_json::array();
+  for (const TrackedClaim& c : reproduction.claims) claims.push_back(claim_json(c));
+  for (const TrackedClaim& c : reproduction.targets) targets.push_back(claim_json(c));
+  for (const Look& l : reproduction.looks) looks.push_back(look_json(l));
   return {{"paper_source", reproduction.paper.source},
           {"paper_hardware", reproduction.paper.hardware},
           {"table1", t1},
           {"table2", t2},
+          {"figure5", {{"description", "step time against simulated nodes, one least-squares line per method through "
+                                       "every usable case (TC-SB: all budgets); plain's is reported, not claimed"},
+                       {"plain", fit_json(step_fit_of_method(result, Method::kPlain))},
+                       {"tcsb", fit_json(step_fit_of_method(result, Method::kTcsb))}}},
           {"claims", claims},
           {"targets", targets},
-          {"pass", reproduction.pass()},
+          {"verdict", verdict_name(reproduction.verdict())},
+          {"sequential", {{"alpha", json_number(kSequentialAlpha)},
+                          {"correction", "look k spends alpha / 2^k: a central 1 - 2 alpha_k percentile bootstrap "
+                                         "interval, ceil(10 / alpha_k) resamples"},
+                          {"budget_s", json_number(reproduction.budget_s)},
+                          {"ended", looks_ended_name(reproduction.ended)},
+                          {"looks", looks}}},
           {"bootstrap_s", json_number(reproduction.bootstrap_s)},
           {"wall_s", json_number(reproduction.wall_s)}};
 }
@@ -197,19 +276,20 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
   }
   out << "Table 1 beside the paper's (cost of one operation):\n";
   t1.print(out);
-  print_claims("Claims of the paper (any FAIL: exit 1):", reproduction.claims, out);
+  for (const Method method : {Method::kPlain, Method::kTcsb}) {
+    const StepFit f = step_fit_of_method(result, method);
+    if (!f.valid) continue;
+    out << "Figure 5, " << f.method << ": step ms = " << general(f.slope_ms_per_node.value_or(0) * 1000.0, 4)
+        << " us x nodes + " << general(f.intercept_ms, 4) << " ms over " << f.points.size() << " cases ("
+        << fixed(f.points.front().nodes, 0) << " to " << fixed(f.points.back().nodes, 0) << " nodes), R^2 "
+        << general(f.r2, 4) << ", log-log exponent " << general(f.loglog_exponent, 3)
+        << (method == Method::kPlain ? " (reported, not claimed)" : "") << "\n";
+  }
+  print_claims("Claims of the paper (any FAIL: exit 1; else any undecided: exit 4):", reproduction.claims, out);
   print_claims("Targets of this project (reported, not gating):", reproduction.targets, out);
-  const bool intervals = std::any_of(reproduction.claims.begin(), reproduction.claims.end(),
-                                     [](const Claim& c) { return c.interval.has_value(); });
-  if (intervals)
-    out << "95% interval: where the measured value could lie had the run been repeated (percentile bootstrap, "
-        << kClaimResamples << " resamples of the repetitions, a net's cases drawn together so ratios stay paired; "
-        << fixed(reproduction.bootstrap_s, 1) << " s). Beyond noise \"no\": the verdict flips inside the interval, "
-        << "so this run cannot decide it.\n";
-  else
-    out << "No intervals: they need at least " << kMinRepetitionsForIntervals << " repetitions per case.\n";
-  out << "Reproduction " << (reproduction.pass() ? "PASSED" : "FAILED") << " in " << fixed(reproduction.wall_s, 1)
-      << " s\n";
+  print_looks(reproduction, out);
+  out << "Reproduction: " << verdict_text(reproduction.verdict()) << " (" << fixed(reproduction.wall_s, 1)
+      << " s, " << reproduction.looks.size() << " look(s))\n";
 }
 
 }  // namespace tcsb

@@ -13,8 +13,9 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+/// A deterministic claim is decided on its value.
 bool passes(Comparison c, double expected, double tolerance, std::optional<double> measured) {
-  return check_claim("id", "desc", c, expected, tolerance, measured).pass;
+  return passed(check_claim("id", "desc", c, expected, tolerance, measured));
 }
 
 TEST(Claim, AtMostBoundaries) {
@@ -43,9 +44,12 @@ TEST(Claim, WithinBoundaries) {
 
 TEST(Claim, NotMeasuredFailsForEveryComparison) {
   for (const Comparison c : {Comparison::kAtMost, Comparison::kAtLeast, Comparison::kWithin}) {
-    const Claim claim = check_claim("id", "desc", c, 1.0, 1e9, std::nullopt);
-    EXPECT_FALSE(claim.pass) << comparison_name(c);
-    EXPECT_FALSE(claim.measured.has_value());
+    for (const Evidence e : {Evidence::kDeterministic, Evidence::kRepeated}) {
+      Claim claim = check_claim("id", "desc", c, 1.0, 1e9, std::nullopt, e);
+      claim.interval = Interval{0.9, 1.1};  // an interval cannot rescue a claim that was never measured
+      EXPECT_EQ(verdict(claim), Verdict::kFail) << comparison_name(c) << " " << evidence_name(e);
+      EXPECT_FALSE(claim.measured.has_value());
+    }
   }
 }
 
@@ -54,7 +58,7 @@ TEST(Claim, NonFiniteMeasuredFailsAndIsStoredAsNotMeasured) {
     // -inf would "pass" at_most and +inf at_least by plain comparison; a diverged run must never pass.
     for (const Comparison c : {Comparison::kAtMost, Comparison::kAtLeast, Comparison::kWithin}) {
       const Claim claim = check_claim("id", "desc", c, 1.0, 0.5, bad);
-      EXPECT_FALSE(claim.pass) << comparison_name(c) << " " << bad;
+      EXPECT_EQ(verdict(claim), Verdict::kFail) << comparison_name(c) << " " << bad;
       EXPECT_FALSE(claim.measured.has_value());
     }
   }
@@ -69,7 +73,8 @@ TEST(Claim, KeepsItsFields) {
   EXPECT_DOUBLE_EQ(claim.tolerance, 0.1);
   ASSERT_TRUE(claim.measured.has_value());
   EXPECT_DOUBLE_EQ(*claim.measured, 3.4);
-  EXPECT_TRUE(claim.pass);
+  EXPECT_EQ(claim.evidence, Evidence::kDeterministic);
+  EXPECT_TRUE(passed(claim));
 }
 
 TEST(Claim, RejectsBadDefinitions) {
@@ -78,47 +83,68 @@ TEST(Claim, RejectsBadDefinitions) {
   EXPECT_THROW(check_claim("id", "d", Comparison::kAtMost, 1.0, kInf, 1.0), std::invalid_argument);
 }
 
-TEST(Claim, AllPass) {
+TEST(Claim, OverallVerdictFailBeatsUndecidedBeatsPass) {
   const Claim good = check_claim("a", "", Comparison::kAtMost, 1.0, 0.0, 0.5);
   const Claim bad = check_claim("b", "", Comparison::kAtMost, 1.0, 0.0, 2.0);
   const Claim unmeasured = check_claim("c", "", Comparison::kAtMost, 1.0, 0.0, std::nullopt);
-  EXPECT_TRUE(all_pass({}));
-  EXPECT_TRUE(all_pass(std::vector<Claim>{good, good}));
-  EXPECT_FALSE(all_pass(std::vector<Claim>{good, bad}));
-  EXPECT_FALSE(all_pass(std::vector<Claim>{good, unmeasured}));
+  const Claim open = check_claim("d", "", Comparison::kAtMost, 1.0, 0.0, 0.5, Evidence::kRepeated);  // no interval
+  EXPECT_EQ(overall_verdict({}), Verdict::kPass);
+  EXPECT_EQ(overall_verdict(std::vector<Claim>{good, good}), Verdict::kPass);
+  EXPECT_EQ(overall_verdict(std::vector<Claim>{good, bad}), Verdict::kFail);
+  EXPECT_EQ(overall_verdict(std::vector<Claim>{good, unmeasured}), Verdict::kFail);
+  EXPECT_EQ(overall_verdict(std::vector<Claim>{good, open}), Verdict::kUndecided);
+  EXPECT_EQ(overall_verdict(std::vector<Claim>{open, bad, good}), Verdict::kFail);
 }
 
+/// A claim measured from repetitions, with the given value and interval.
 Claim with_interval(Comparison c, double expected, double tolerance, double measured, double low, double high) {
-  Claim claim = check_claim("id", "desc", c, expected, tolerance, measured);
+  Claim claim = check_claim("id", "desc", c, expected, tolerance, measured, Evidence::kRepeated);
   claim.interval = Interval{low, high};
   return claim;
 }
 
-TEST(Claim, DecidedWhenTheWholeIntervalGivesTheVerdict) {
-  // at_most 0.2: 0.15 passes; decided only if the interval stays at or below 0.2.
-  EXPECT_EQ(decided(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.15, 0.10, 0.19)), true);
-  EXPECT_EQ(decided(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.15, 0.10, 0.25)), false);
-  EXPECT_EQ(decided(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.30, 0.21, 0.40)), true);   // a decided FAIL
-  EXPECT_EQ(decided(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.30, 0.19, 0.40)), false);
-  EXPECT_EQ(decided(with_interval(Comparison::kAtLeast, 0.98, 0.0, 0.99, 0.985, 0.995)), true);
-  EXPECT_EQ(decided(with_interval(Comparison::kAtLeast, 0.98, 0.0, 0.95, 0.93, 0.99)), false);
-  // within 2 +- 0.5: an interval across the whole band fails at both ends but is not a decided FAIL.
-  EXPECT_EQ(decided(with_interval(Comparison::kWithin, 2.0, 0.5, 2.2, 1.9, 2.4)), true);
-  EXPECT_EQ(decided(with_interval(Comparison::kWithin, 2.0, 0.5, 3.0, 2.6, 3.5)), true);
-  EXPECT_EQ(decided(with_interval(Comparison::kWithin, 2.0, 0.5, 3.0, 1.0, 3.5)), false);
+TEST(Claim, RepeatedClaimsAreJudgedOnTheWholeInterval) {
+  // at_most 0.2: pass only if the whole interval is at or below 0.2, fail only if all of it is above.
+  EXPECT_EQ(verdict(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.15, 0.10, 0.19)), Verdict::kPass);
+  EXPECT_EQ(verdict(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.15, 0.10, 0.20)), Verdict::kPass);  // closed
+  EXPECT_EQ(verdict(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.15, 0.10, 0.25)), Verdict::kUndecided);
+  EXPECT_EQ(verdict(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.30, 0.21, 0.40)), Verdict::kFail);
+  EXPECT_EQ(verdict(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.30, 0.19, 0.40)), Verdict::kUndecided);
+  EXPECT_EQ(verdict(with_interval(Comparison::kAtLeast, 0.98, 0.0, 0.99, 0.985, 0.995)), Verdict::kPass);
+  EXPECT_EQ(verdict(with_interval(Comparison::kAtLeast, 0.98, 0.0, 0.95, 0.93, 0.99)), Verdict::kUndecided);
+  EXPECT_EQ(verdict(with_interval(Comparison::kAtLeast, 0.98, 0.0, 0.95, 0.93, 0.97)), Verdict::kFail);
 }
 
-TEST(Claim, NotDecidableWithoutIntervalOrMeasurement) {
-  EXPECT_EQ(decided(check_claim("id", "desc", Comparison::kAtMost, 1.0, 0.0, 0.5)), std::nullopt);
-  Claim unmeasured = check_claim("id", "desc", Comparison::kAtMost, 1.0, 0.0, std::nullopt);
-  unmeasured.interval = Interval{0.1, 0.2};
-  EXPECT_EQ(decided(unmeasured), std::nullopt);
+TEST(Claim, WithinIsAnEquivalenceTest) {
+  // within 1 +- 0.03: pass only inside the band; fail only wholly outside, on either side; an interval across the
+  // band, or across one edge, is undecided (the old two-valued check called [0.96, 1.04] a failure beyond noise).
+  EXPECT_EQ(verdict(with_interval(Comparison::kWithin, 1.0, 0.03, 1.0, 0.98, 1.02)), Verdict::kPass);
+  EXPECT_EQ(verdict(with_interval(Comparison::kWithin, 1.0, 0.03, 1.06, 1.04, 1.08)), Verdict::kFail);
+  EXPECT_EQ(verdict(with_interval(Comparison::kWithin, 1.0, 0.03, 0.94, 0.92, 0.96)), Verdict::kFail);
+  EXPECT_EQ(verdict(with_interval(Comparison::kWithin, 1.0, 0.03, 1.0, 0.96, 1.04)), Verdict::kUndecided);
+  EXPECT_EQ(verdict(with_interval(Comparison::kWithin, 1.0, 0.03, 1.02, 0.99, 1.05)), Verdict::kUndecided);
+}
+
+TEST(Claim, ThePointEstimateNeverDecidesARepeatedClaim) {
+  // Measured 0.15 satisfies at_most 0.2, but an interval wholly above says the run measured a failure.
+  EXPECT_EQ(verdict(with_interval(Comparison::kAtMost, 0.2, 0.0, 0.15, 0.21, 0.3)), Verdict::kFail);
+  // Without an interval (too few repetitions) a repeated claim is undecided, however clear its value looks.
+  EXPECT_EQ(verdict(check_claim("id", "", Comparison::kAtMost, 1.0, 0.0, 0.01, Evidence::kRepeated)),
+            Verdict::kUndecided);
+  // A deterministic claim ignores any interval: its value is exact.
+  Claim exact = check_claim("id", "", Comparison::kAtMost, 1.0, 0.0, 0.5);
+  exact.interval = Interval{0.5, 3.0};
+  EXPECT_EQ(verdict(exact), Verdict::kPass);
 }
 
 TEST(Claim, ComparisonNames) {
   EXPECT_STREQ(comparison_name(Comparison::kAtMost), "at_most");
   EXPECT_STREQ(comparison_name(Comparison::kAtLeast), "at_least");
   EXPECT_STREQ(comparison_name(Comparison::kWithin), "within");
+  EXPECT_STREQ(verdict_name(Verdict::kPass), "pass");
+  EXPECT_STREQ(verdict_name(Verdict::kFail), "fail");
+  EXPECT_STREQ(verdict_name(Verdict::kUndecided), "undecided");
+  EXPECT_STREQ(evidence_name(Evidence::kRepeated), "repeated");
 }
 
 }  // namespace

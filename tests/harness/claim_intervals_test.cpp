@@ -101,8 +101,8 @@ TEST(ClaimIntervals, ResampleRejectsOperationCountsThatDoNotAddUp) {
 
 /// Claims on the median step time of case `index`, and one never measured.
 std::vector<Claim> claims_on(const RunResult& r, std::size_t index) {
-  return {check_claim("median", "", Comparison::kAtMost, 3.0, 0.0, r.cases[index].step_ms.median),
-          check_claim("never", "", Comparison::kAtMost, 3.0, 0.0, std::nullopt)};
+  return {check_claim("median", "", Comparison::kAtMost, 3.0, 0.0, r.cases[index].step_ms.median, Evidence::kRepeated),
+          check_claim("never", "", Comparison::kAtMost, 3.0, 0.0, std::nullopt, Evidence::kRepeated)};
 }
 
 TEST(ClaimIntervals, IntervalsSpanTheRepetitionsAndRepeatForASeed) {
@@ -119,7 +119,8 @@ TEST(ClaimIntervals, IntervalsSpanTheRepetitionsAndRepeatForASeed) {
   EXPECT_LT(claims[0].interval->low, claims[0].interval->high);
   EXPECT_TRUE(claims[0].interval->contains(*claims[0].measured));
   EXPECT_FALSE(claims[1].interval.has_value());  // undefined on every resample
-  EXPECT_EQ(decided(claims[0]), true);            // 10..14 > 3: a FAIL beyond noise
+  EXPECT_EQ(verdict(claims[0]), Verdict::kFail);  // 10..14 > 3: a decided FAIL
+  EXPECT_EQ(verdict(claims[1]), Verdict::kFail);  // never measured
 
   const ClaimReplicates again = bootstrap_claims(run, of_case1, 200, 9);
   EXPECT_EQ(again.at("median"), replicates.at("median"));
@@ -134,7 +135,7 @@ TEST(ClaimIntervals, IdenticalRepetitionsGiveAPointInterval) {
   ASSERT_TRUE(claims[0].interval.has_value());
   EXPECT_EQ(claims[0].interval->low, 2.5);
   EXPECT_EQ(claims[0].interval->high, 2.5);
-  EXPECT_EQ(decided(claims[0]), true);
+  EXPECT_EQ(verdict(claims[0]), Verdict::kPass);
 }
 
 TEST(ClaimIntervals, TooFewRepetitionsGiveNoIntervals) {
@@ -151,7 +152,24 @@ TEST(ClaimIntervals, TooFewRepetitionsGiveNoIntervals) {
   std::vector<Claim> claims = claims_on(run, 1);
   attach_intervals(claims, bootstrap_claims(run, of_case1, 100, 3), 0.95);
   EXPECT_FALSE(claims[0].interval.has_value());
-  EXPECT_EQ(decided(claims[0]), std::nullopt);
+  EXPECT_EQ(verdict(claims[0]), Verdict::kUndecided);  // no interval: the run cannot know its noise
+}
+
+TEST(ClaimIntervals, ASubsetKeepsTheChosenCasesWithoutSeriesAndOperationsUnlessAsked) {
+  const RunResult run = two_nets();
+  const RunResult light = subset_for_bootstrap(run, {1, 3}, false);
+  ASSERT_EQ(light.cases.size(), 2u);
+  EXPECT_EQ(light.cases[0].label, run.cases[1].label);
+  EXPECT_TRUE(light.cases[0].ops.samples.empty());
+  for (const RepetitionResult& r : light.cases[1].repetitions) {
+    EXPECT_EQ(r.operations, 0);
+    EXPECT_TRUE(r.series.step_ms.empty());
+  }
+  const RunResult with_ops = subset_for_bootstrap(run, {1}, true);
+  EXPECT_EQ(with_ops.cases[0].ops.samples.size(), run.cases[1].ops.samples.size());
+  std::mt19937_64 rng(1);
+  EXPECT_NO_THROW(resample_repetitions(light, rng));  // still consistent: counts add up
+  EXPECT_NO_THROW(resample_repetitions(with_ops, rng));
 }
 
 }  // namespace

@@ -110,19 +110,19 @@ TEST(FidelityTargets, PassAndFailAsMeasured) {
     ADD_FAILURE() << "no target " << id;
     return targets.front();
   };
-  EXPECT_TRUE(find("fidelity_rms_75").pass);
-  EXPECT_FALSE(find("fidelity_rms_30").pass);
+  EXPECT_TRUE(passed(find("fidelity_rms_75")));
+  EXPECT_FALSE(passed(find("fidelity_rms_30")));
   EXPECT_DOUBLE_EQ(*find("fidelity_weighted_vs_uniform_30").measured, 2.5 / 6.0);
-  EXPECT_TRUE(find("fidelity_weighted_vs_uniform_30").pass);
-  EXPECT_TRUE(find("fidelity_popping_75").pass);  // 0.2 <= 0.5
+  EXPECT_TRUE(passed(find("fidelity_weighted_vs_uniform_30")));
+  EXPECT_TRUE(passed(find("fidelity_popping_75")));  // 0.2 <= 0.5
   EXPECT_EQ(targets.size(), 5u);
 }
 
 TEST(FidelityTargets, FailWhenNothingWasMeasured) {
   const std::vector<Claim> targets = fidelity_targets({});
   ASSERT_EQ(targets.size(), 2u);
-  EXPECT_FALSE(targets[0].pass);
-  EXPECT_FALSE(targets[1].pass);
+  EXPECT_FALSE(passed(targets[0]));
+  EXPECT_FALSE(passed(targets[1]));
   EXPECT_FALSE(targets[0].measured);
 }
 

@@ -74,7 +74,20 @@ TEST(ResultSchema, OptionalSectionsOfOtherCommandsConform) {
   doc["fidelity"] = ojson::object();
   doc["pareto"] = ojson::array();
   doc["max_compression"] = ojson::array();
+  EXPECT_EQ(problems(doc), Lines{});  // an earlier reproduction's layout stays valid
+  doc["reproduction"] = {{"verdict", "undecided"},
+                         {"claims", ojson::array({{{"id", "a"}, {"verdict", "pass"}, {"look", 2}, {"repetitions", 10}},
+                                                  {{"id", "b"}, {"verdict", "undecided"}, {"look", nullptr}}})}};
   EXPECT_EQ(problems(doc), Lines{});
+}
+
+TEST(ResultSchema, AReproductionVerdictIsOneOfThree) {
+  ojson doc = native_json(run_with_cases());
+  doc["reproduction"] = {{"verdict", "maybe"}, {"claims", ojson::array({{{"id", "a"}, {"verdict", true}}})}};
+  const Lines p = problems(doc);
+  ASSERT_EQ(p.size(), 2u) << ::testing::PrintToString(p);
+  EXPECT_NE(p[0].find("reproduction.verdict"), std::string::npos) << p[0];
+  EXPECT_NE(p[1].find("reproduction.claims[0].verdict"), std::string::npos) << p[1];
 }
 
 TEST(ResultSchema, RejectsWhatIsNotANativeResult) {
