@@ -65,17 +65,18 @@ std::string escaped(std::string_view text) {
 
 std::string text_of(const ojson& value);
 
-/// An object as one cell: an interval as "low – high", anything else as "key: value, ...".
+/// An object as one cell: "key: value, ...", except that an interval leads with "low – high" and puts any other
+/// keys (a confidence level, say) after it in parentheses.
 std::string object_text(const ojson& object) {
-  if (object.contains("low") && object.contains("high") && object.size() == 2) {
-    return markdown_number(object["low"]) + " – " + markdown_number(object["high"]);
-  }
-  std::string out;
+  const bool interval = object.contains("low") && object.contains("high");
+  std::string others;
   for (const auto& [key, value] : object.items()) {
-    if (!out.empty()) out += ", ";
-    out += key + ": " + text_of(value);
+    if (interval && (key == "low" || key == "high")) continue;
+    others += (others.empty() ? "" : ", ") + key + ": " + text_of(value);
   }
-  return out;
+  if (!interval) return others;
+  const std::string range = text_of(object["low"]) + " – " + text_of(object["high"]);
+  return others.empty() ? range : range + " (" + others + ")";
 }
 
 /// Any JSON value as cell text: numbers by markdown_number, booleans yes/no, null as an empty cell.

@@ -154,7 +154,10 @@ ojson reproduction_block() {
              {"interval", {{"low", 0.2188}, {"high", 0.8841}}},
              {"pass", true},
              {"decided", false}},
-            {{"id", "new|shape"}, {"verdict", "undecided"}, {"margin", 0.5}},
+            {{"id", "new|shape"},
+             {"verdict", "undecided"},
+             {"margin", 0.5},
+             {"interval", {{"low", 0.25}, {"high", 0.75}, {"confidence", 0.975}}}},
             {{"id", "bare"}, {"pass", false}}}},
           {"targets", ojson::array()},
           {"pass", true},
@@ -188,7 +191,7 @@ TEST(MarkdownExport, ClaimsRenderWhateverFieldsTheyHaveInAStableOrder) {
   // Known fields in a fixed order, the verdict, then unknown fields (margin); description is left out.
   EXPECT_TRUE(has_line(md, "| id | check | expected | measured | interval | verdict | decided | margin |")) << md;
   EXPECT_TRUE(has_line(md, "| speed | at_most | 0.4328 | 0.2296 | 0.2188 – 0.8841 | pass | no | |")) << md;
-  EXPECT_TRUE(has_line(md, "| new\\|shape | | | | | undecided | | 0.5000 |")) << md;
+  EXPECT_TRUE(has_line(md, "| new\\|shape | | | | 0.2500 – 0.7500 (confidence: 0.9750) | undecided | | 0.5000 |")) << md;
   EXPECT_TRUE(has_line(md, "| bare | | | | | FAIL | | |")) << md;
   EXPECT_FALSE(contains(md, "long prose"));
   EXPECT_TRUE(contains(md, "Every claim of the paper passed.")) << md;
