@@ -294,15 +294,17 @@ std::string table2_section(const ojson& doc) {
     columns.push_back({"pop max %", error("popping_pct")});
   }
   std::string out = "### Table 2\n\n";
-  out += "Mean over nets of N (nodes), L (links), I (interpolations) and the mean step time in ms; ratio: step time "
-         "to plain Bullet's, same run.";
+  out +=
+      "Mean over nets of N (nodes), L (links), I (interpolations) and the mean step time in ms; ratio: step time "
+      "to plain Bullet's, same run.";
   if (with_paper) {
     const std::string hardware = text_of(at(reproduction, "paper_hardware"));
     out += " Paper" + (hardware.empty() ? std::string() : " (" + hardware + ")") + " beside ours.";
   }
   if (with_error)
-    out += " RMS: error against full-resolution plain Bullet in % of the net's extent, mean over steps and nets; "
-           "max and pop: max over steps and nets.";
+    out +=
+        " RMS: error against full-resolution plain Bullet in % of the net's extent, mean over steps and nets; "
+        "max and pop: max over steps and nets.";
   return out + "\n\n" + table(columns, rows);
 }
 
@@ -325,9 +327,8 @@ std::string table1_section(const ojson& doc) {
     columns.push_back({"paper µs", [&](const ojson& row) {
                          return markdown_number(scaled(at(paper_of(row), "complete_ms"), 1000.0));
                        }});
-  columns.push_back({with_paper ? "ours µs" : "µs", [](const ojson& row) {
-                       return markdown_number(scaled(at(row, "complete_ms"), 1000.0));
-                     }});
+  columns.push_back({with_paper ? "ours µs" : "µs",
+                     [](const ojson& row) { return markdown_number(scaled(at(row, "complete_ms"), 1000.0)); }});
   columns.push_back(field("p50 µs", "p50_us"));
   columns.push_back(field("p99 µs", "p99_us"));
   if (with_paper)
@@ -361,26 +362,28 @@ std::string scaling_section(const ojson& doc) {
   const ojson& steps = at(scaling, "step_ms_vs_nodes");
   const ojson& ops = at(scaling, "op_ms_vs_nodes");
   if (!non_empty_array(steps) && !non_empty_array(ops)) return "";
-  std::string out = "### Scaling\n\nLeast-squares lines through one point per net (mean nodes, median step or "
-                    "operation time in ms); flatness: how far an operation's cost moves across the nets' sizes.\n";
+  std::string out =
+      "### Scaling\n\nLeast-squares lines through one point per net (mean nodes, median step or "
+      "operation time in ms); flatness: how far an operation's cost moves across the nets' sizes.\n";
   if (non_empty_array(steps)) {
     out += "\nStep time against nodes:\n\n" +
            table({field("method", "method"),
                   {"compression", [](const ojson& row) { return compression_text(at(row, "compression")); }},
-                  slope_column("ms", 1.0), field("intercept ms", "intercept_ms"), field("r²", "r2"), points_column(),
+                  slope_column("ms", 1.0),
+                  field("intercept ms", "intercept_ms"),
+                  field("r²", "r2"),
+                  points_column(),
                   field("valid", "valid")},
                  steps);
   }
   if (non_empty_array(ops)) {
     // An operation costs microseconds: in ms its intercept would need an exponent.
-    const Column intercept_us{"intercept µs", [](const ojson& row) {
-                                return markdown_number(scaled(at(row, "intercept_ms"), 1000.0));
-                              }};
-    out += "\nOperations against nodes:\n\n" + table({field("operation", "operation"), slope_column("µs", 1000.0),
-                                                       intercept_us, field("r²", "r2"),
-                                                       field("flatness", "flatness"), points_column(),
-                                                       field("valid", "valid")},
-                                                      ops);
+    const Column intercept_us{
+        "intercept µs", [](const ojson& row) { return markdown_number(scaled(at(row, "intercept_ms"), 1000.0)); }};
+    out += "\nOperations against nodes:\n\n" +
+           table({field("operation", "operation"), slope_column("µs", 1000.0), intercept_us, field("r²", "r2"),
+                  field("flatness", "flatness"), points_column(), field("valid", "valid")},
+                 ops);
   }
   return out;
 }
@@ -391,8 +394,12 @@ struct ClaimField {
   const char* key;
   const char* header;
 };
-constexpr ClaimField kClaimFields[] = {{"id", "id"},           {"comparison", "check"}, {"expected", "expected"},
-                                       {"tolerance", "tolerance"}, {"measured", "measured"}, {"interval", "interval"}};
+constexpr ClaimField kClaimFields[] = {{"id", "id"},
+                                       {"comparison", "check"},
+                                       {"expected", "expected"},
+                                       {"tolerance", "tolerance"},
+                                       {"measured", "measured"},
+                                       {"interval", "interval"}};
 constexpr const char* kClaimFieldsAfterVerdict[] = {"decided"};
 // Not columns: prose too long for a table cell, or folded into the verdict column.
 constexpr const char* kClaimFieldsLeftOut[] = {"description", "verdict", "pass"};
@@ -442,8 +449,9 @@ std::string claims_section(const ojson& doc) {
   const ojson& claims = at(reproduction, "claims");
   const ojson& targets = at(reproduction, "targets");
   if (!non_empty_array(claims) && !non_empty_array(targets)) return "";
-  std::string out = "### Claims\n\nInterval: where the measured value could lie had the run been repeated "
-                    "(percentile bootstrap of the repetitions), when the run has enough repetitions.";
+  std::string out =
+      "### Claims\n\nInterval: where the measured value could lie had the run been repeated "
+      "(percentile bootstrap of the repetitions), when the run has enough repetitions.";
   if (const ojson& v = at(reproduction, "verdict"); !v.is_null()) {
     out += " Verdict of the reproduction: **" + text_of(v) + "**.";
   } else if (const ojson& pass = at(reproduction, "pass"); pass.is_boolean()) {
@@ -468,14 +476,17 @@ std::string fidelity_section(const ojson& doc) {
   const ojson& pareto = at(doc, "pareto");
   const ojson& best = at(doc, "max_compression");
   if (!non_empty_array(rows) && !non_empty_array(pareto) && !best.is_object()) return "";
-  std::string out = "### Fidelity\n\nError against full-resolution plain Bullet, in % of the net's extent (energy "
-                    "drift: in % of the reference's initial energy); rows combine nets as mean of means and p95s, max "
-                    "of maxima. Time ratio: the subject's mean step to the reference's, both timed in the fidelity "
-                    "pass.\n";
+  std::string out =
+      "### Fidelity\n\nError against full-resolution plain Bullet, in % of the net's extent (energy "
+      "drift: in % of the reference's initial energy); rows combine nets as mean of means and p95s, max "
+      "of maxima. Time ratio: the subject's mean step to the reference's, both timed in the fidelity "
+      "pass.\n";
   if (non_empty_array(rows)) {
-    std::vector<Column> columns{field("method", "method"),
-                                {"compression", [](const ojson& row) { return compression_text(at(row, "compression")); }}};
-    if (any_cell(rows, [](const ojson& row) { return text_of(at(row, "grid")); })) columns.push_back(field("grid", "grid"));
+    std::vector<Column> columns{field("method", "method"), {"compression", [](const ojson& row) {
+                                                              return compression_text(at(row, "compression"));
+                                                            }}};
+    if (any_cell(rows, [](const ojson& row) { return text_of(at(row, "grid")); }))
+      columns.push_back(field("grid", "grid"));
     for (Column c : {field("N", "N"), metric("RMS % mean", "rms_pct", "mean"), metric("RMS % p95", "rms_pct", "p95"),
                      metric("max %", "max_pct", "max"), metric("weighted RMS %", "weighted_rms_pct", "mean"),
                      metric("pop max %", "popping_pct", "max"), metric("energy drift %", "energy_drift_pct", "mean"),
@@ -487,16 +498,19 @@ std::string fidelity_section(const ojson& doc) {
   if (non_empty_array(pareto)) {
     out += "\nPareto sweep (TC-SB budgets; on front: no other budget is both faster and more accurate):\n\n" +
            table({{"compression", [](const ojson& row) { return compression_text(at(row, "compression")); }},
-                  field("N", "N"), field("time ratio", "time_ratio_vs_plain"), field("RMS %", "rms_pct"),
-                  field("worst net RMS %", "worst_net_rms_pct"), field("on front", "on_front")},
+                  field("N", "N"),
+                  field("time ratio", "time_ratio_vs_plain"),
+                  field("RMS %", "rms_pct"),
+                  field("worst net RMS %", "worst_net_rms_pct"),
+                  field("on front", "on_front")},
                  pareto);
   }
   if (best.is_object()) {
     out += "\nMaximum compression: ";
     const ojson& c = at(best, "compression");
     out += c.is_number() ? compression_text(c) + " of the nodes" : std::string("none");
-    out += " keeps the worst net's RMS error within " + markdown_number(at(best, "threshold_pct"), 3) +
-           " % of its extent";
+    out +=
+        " keeps the worst net's RMS error within " + markdown_number(at(best, "threshold_pct"), 3) + " % of its extent";
     if (c.is_number())
       out += " (worst net " + markdown_number(at(best, "worst_net_rms_pct")) + " %, time ratio " +
              markdown_number(at(best, "time_ratio_vs_plain")) + ")";

@@ -9,9 +9,8 @@
 // bytes (docs/results.md is checked against a fresh rendering).
 #pragma once
 
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "report/report_format.h"
 
