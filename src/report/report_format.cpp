@@ -5,6 +5,7 @@
 #include "report/gbench_export.h"
 #include "report/github_action_export.h"
 #include "report/json_report.h"
+#include "report/markdown_export.h"
 
 namespace tcsb {
 namespace {
@@ -27,6 +28,7 @@ constexpr Registration kFormats[] = {
     {"gbench", &create<GbenchFormat>},
     {"github-action-smaller", &create<GithubActionSmallerFormat>},
     {"github-action-bigger", &create<GithubActionBiggerFormat>},
+    {"markdown", &create<MarkdownFormat>},
 };
 
 }  // namespace

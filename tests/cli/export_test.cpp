@@ -80,6 +80,25 @@ TEST_F(Export, GithubActionFormats) {
   EXPECT_EQ(speedups[1]["unit"], "x");
 }
 
+TEST_F(Export, MarkdownSectionOfAResultFile) {
+  const Outcome from_file = tcsb("export result.json --format markdown --out result.md");
+  ASSERT_EQ(from_file.exit_code, 0) << from_file.err;
+  const std::string md = read_file(dir_ / "result.md");
+  const ojson context = ojson::parse(read_file(dir_ / "result.json"))["context"];
+  EXPECT_EQ(md.substr(0, md.find('\n')), "## Run: suite `small`, " +
+                                               context["date_utc"].get<std::string>().substr(0, 10) + ", " +
+                                               context["git_commit"].get<std::string>().substr(0, 7));
+  EXPECT_NE(md.find("\nSource: suite `small` (1 nets, 3 repetitions of 20 steps) · "), std::string::npos) << md;
+  EXPECT_NE(md.find("\n| method | compression | N | L | I | ms | ratio | node ratio | nets | status |\n"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("\n| plain | - | 81.00 | 144.0 | 0 | "), std::string::npos) << md;
+  EXPECT_NE(md.find("\n### Table 1\n"), std::string::npos) << md;
+  EXPECT_EQ(md.find("### Claims"), std::string::npos) << "a run has no reproduction block";
+  // Rendering is a pure function of the file: the same file gives the same bytes.
+  EXPECT_EQ(tcsb("export result.json --format markdown").out, md);
+}
+
 TEST_F(Export, BadInputIsOneLineAndWritesNothing) {
   const struct {
     const char* args;

@@ -1,0 +1,555 @@
+#include "report/markdown_export.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string_view>
+#include <vector>
+
+#include "report/text_table.h"
+
+namespace tcsb {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+/// The null every missing lookup returns (never inserted anywhere).
+const ojson& null_json() {
+  static const ojson kNull;
+  return kNull;
+}
+
+/// `object[key]`, or null when `object` is not an object or lacks the key: a hand-made or older file never throws.
+const ojson& at(const ojson& object, const std::string& key) {
+  if (!object.is_object()) return null_json();
+  const auto it = object.find(key);
+  return it == object.end() ? null_json() : *it;
+}
+
+/// The element of `array` whose `key1` and `key2` equal the given values, or null.
+const ojson& find_row(const ojson& array, const std::string& key1, const ojson& value1, const std::string& key2,
+                      const ojson& value2) {
+  if (!array.is_array()) return null_json();
+  for (const ojson& row : array) {
+    if (at(row, key1) == value1 && at(row, key2) == value2) return row;
+  }
+  return null_json();
+}
+
+/// `value` times `factor` as a JSON number, or null when `value` is not a number.
+ojson scaled(const ojson& value, double factor) {
+  return value.is_number() ? ojson(value.get<double>() * factor) : ojson(nullptr);
+}
+
+/// `part` as a percentage of `whole`, or null when either is missing or `whole` is 0.
+ojson percent_of(const ojson& part, const ojson& whole) {
+  if (!part.is_number() || !whole.is_number() || whole.get<double>() == 0) return nullptr;
+  return ojson(100.0 * part.get<double>() / whole.get<double>());
+}
+
+/// Text safe inside a table cell: a `|` would end the cell, a newline the row.
+std::string escaped(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '|') {
+      out += "\\|";
+    } else if (c == '\n' || c == '\r') {
+      out += ' ';
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string text_of(const ojson& value);
+
+/// An object as one cell: "key: value, ...", except that an interval leads with "low – high" and puts any other
+/// keys (a confidence level, say) after it in parentheses.
+std::string object_text(const ojson& object) {
+  const bool interval = object.contains("low") && object.contains("high");
+  std::string others;
+  for (const auto& [key, value] : object.items()) {
+    if (interval && (key == "low" || key == "high")) continue;
+    others += (others.empty() ? "" : ", ") + key + ": " + text_of(value);
+  }
+  if (!interval) return others;
+  const std::string range = text_of(object["low"]) + " – " + text_of(object["high"]);
+  return others.empty() ? range : range + " (" + others + ")";
+}
+
+/// Any JSON value as cell text: numbers by markdown_number, booleans yes/no, null as an empty cell.
+std::string text_of(const ojson& value) {
+  switch (value.type()) {
+    case ojson::value_t::string:
+      return escaped(value.get_ref<const std::string&>());
+    case ojson::value_t::boolean:
+      return value.get<bool>() ? "yes" : "no";
+    case ojson::value_t::number_integer:
+    case ojson::value_t::number_unsigned:
+    case ojson::value_t::number_float:
+      return markdown_number(value);
+    case ojson::value_t::array: {
+      std::string out;
+      for (const ojson& v : value) out += (out.empty() ? "" : ", ") + text_of(v);
+      return out;
+    }
+    case ojson::value_t::object:
+      return escaped(object_text(value));
+    default:
+      return "";
+  }
+}
+
+/// A compression as the tables print it: "-" for none (plain Bullet), else a percentage of the net's nodes.
+std::string compression_text(const ojson& compression) {
+  if (!compression.is_number()) return "-";
+  return general(100.0 * compression.get<double>(), 3) + "%";
+}
+
+/// One column of a Markdown table: its header and how a row (a JSON object) becomes its cell.
+struct Column {
+  std::string header;
+  std::function<std::string(const ojson& row)> cell;
+};
+
+/// A column showing `row[key]`.
+Column field(std::string header, std::string key, int digits = 4) {
+  return {std::move(header), [key = std::move(key), digits](const ojson& row) {
+            const ojson& v = at(row, key);
+            return v.is_number_float() ? markdown_number(v, digits) : text_of(v);
+          }};
+}
+
+/// A Markdown table of `rows` (a JSON array; anything else gives no rows).
+std::string table(const std::vector<Column>& columns, const ojson& rows) {
+  std::string out = "|";
+  for (const Column& c : columns) out += " " + c.header + " |";
+  out += "\n|";
+  for (std::size_t i = 0; i < columns.size(); ++i) out += "---|";
+  out += "\n";
+  if (!rows.is_array()) return out;
+  for (const ojson& row : rows) {
+    out += "|";
+    for (const Column& c : columns) {
+      const std::string cell = c.cell(row);
+      out += cell.empty() ? " |" : " " + cell + " |";
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+/// True when `array` has a row for which `cell` is not empty.
+bool any_cell(const ojson& array, const std::function<std::string(const ojson&)>& cell) {
+  if (!array.is_array()) return false;
+  return std::any_of(array.begin(), array.end(), [&](const ojson& row) { return !cell(row).empty(); });
+}
+
+bool non_empty_array(const ojson& value) { return value.is_array() && !value.empty(); }
+
+std::string short_commit(const ojson& commit) {
+  return commit.is_string() ? commit.get<std::string>().substr(0, 7) : std::string();
+}
+
+/// "2026-11-22T09:27:13Z" as "2026-11-22 09:27:13 UTC"; any other text as it is.
+std::string date_text(const ojson& date) {
+  if (!date.is_string()) return "";
+  std::string d = date.get<std::string>();
+  if (d.size() == 20 && d[10] == 'T' && d.back() == 'Z') return d.substr(0, 10) + " " + d.substr(11, 8) + " UTC";
+  return d;
+}
+
+std::string suite_name(const ojson& doc) {
+  const ojson& name = at(at(doc, "suite"), "name");
+  return name.is_string() ? name.get<std::string>() : "unnamed";
+}
+
+// ---- sections ----------------------------------------------------------------------------------------------------
+
+std::string heading(const ojson& doc) {
+  const ojson& context = at(doc, "context");
+  std::string h = at(doc, "reproduction").is_object() ? "## Reproduction: suite `" : "## Run: suite `";
+  h += suite_name(doc) + "`";
+  if (const std::string date = date_text(at(context, "date_utc")); !date.empty()) h += ", " + date.substr(0, 10);
+  if (const std::string commit = short_commit(at(context, "git_commit")); !commit.empty()) h += ", " + commit;
+  return h + "\n";
+}
+
+std::string wall_text(const ojson& doc) {
+  const ojson& reproduction = at(doc, "reproduction");
+  const ojson& wall = at(reproduction, "wall_s").is_number() ? at(reproduction, "wall_s") : at(doc, "wall_s");
+  if (!wall.is_number()) return "";
+  std::string out = markdown_number(wall, 3) + " s wall";
+  std::vector<std::string> parts;
+  if (const ojson& f = at(at(doc, "fidelity"), "wall_s"); f.is_number())
+    parts.push_back("fidelity pass " + markdown_number(f, 3) + " s");
+  if (const ojson& b = at(reproduction, "bootstrap_s"); b.is_number())
+    parts.push_back("claims' intervals " + markdown_number(b, 3) + " s");
+  for (std::size_t i = 0; i < parts.size(); ++i) out += (i == 0 ? " (" : ", ") + parts[i];
+  return parts.empty() ? out : out + ")";
+}
+
+std::string suite_text(const ojson& doc) {
+  const ojson& suite = at(doc, "suite");
+  std::string out = "suite `" + suite_name(doc) + "`";
+  std::vector<std::string> parts;
+  if (const ojson& nets = at(suite, "nets"); nets.is_array()) parts.push_back(std::to_string(nets.size()) + " nets");
+  if (const ojson& r = at(suite, "repetitions"); r.is_number_integer()) {
+    std::string reps = text_of(r) + " repetitions";
+    if (const ojson& s = at(suite, "steps"); s.is_number_integer()) reps += " of " + text_of(s) + " steps";
+    parts.push_back(reps);
+  }
+  for (std::size_t i = 0; i < parts.size(); ++i) out += (i == 0 ? " (" : ", ") + parts[i];
+  return parts.empty() ? out : out + ")";
+}
+
+std::string command_text(const ojson& command) {
+  if (command.is_string()) return command.get<std::string>();
+  if (!command.is_array()) return "";
+  std::string out;
+  for (const ojson& word : command) {
+    if (word.is_string()) out += (out.empty() ? "" : " ") + word.get<std::string>();
+  }
+  return out;
+}
+
+std::string build_text(const ojson& context) {
+  std::string out = text_of(at(context, "compiler"));
+  if (const std::string flags = text_of(at(context, "cxx_flags")); !flags.empty()) out += " `" + flags + "`";
+  if (const std::string bullet = text_of(at(context, "bullet_version")); !bullet.empty()) {
+    out += (out.empty() ? "Bullet " : ", Bullet ") + bullet;
+    if (const std::string precision = text_of(at(context, "bullet_precision")); !precision.empty())
+      out += " " + precision + " precision";
+  }
+  return out;
+}
+
+std::string source_line(const ojson& doc) {
+  const ojson& context = at(doc, "context");
+  std::vector<std::string> parts;
+  const std::string command = command_text(at(context, "command"));
+  parts.push_back(command.empty() ? suite_text(doc) : "`" + command + "`");
+  parts.push_back(date_text(at(context, "date_utc")));
+  if (const std::string commit = short_commit(at(context, "git_commit")); !commit.empty())
+    parts.push_back("commit " + commit);
+  std::string cpu = text_of(at(context, "cpu_model"));
+  if (const ojson& cores = at(context, "cores"); cores.is_number_integer())
+    cpu += (cpu.empty() ? "" : ", ") + text_of(cores) + " cores";
+  parts.push_back(cpu);
+  parts.push_back(build_text(context));
+  if (const ojson& load = at(context, "load_average_1m"); load.is_number())
+    parts.push_back("load " + markdown_number(load, 3) + " at the start");
+  parts.push_back(wall_text(doc));
+  if (!command.empty()) parts.push_back(suite_text(doc));
+  std::string out = "Source:";
+  bool first = true;
+  for (const std::string& p : parts) {
+    if (p.empty()) continue;
+    out += (first ? " " : " · ") + p;
+    first = false;
+  }
+  out += ".\n";
+  if (const ojson& status = at(doc, "status"); status.is_string() && status != "ok")
+    out += "\nStatus: **" + escaped(status.get<std::string>()) + "** (see the cases in the result file).\n";
+  if (const ojson& warnings = at(context, "warnings"); non_empty_array(warnings))
+    out += "\nWarnings recorded: " + text_of(warnings) + ".\n";
+  return out;
+}
+
+std::string table2_section(const ojson& doc) {
+  const ojson& rows = at(doc, "table2");
+  if (!non_empty_array(rows)) return "";
+  const ojson& reproduction = at(doc, "reproduction");
+  const ojson& paper_rows = at(reproduction, "table2");
+  // The reproduction block names a row's compression by its label, as the paper does.
+  const auto beside = [&paper_rows](const ojson& row) -> const ojson& {
+    return find_row(paper_rows, "method", at(row, "method"), "compression", at(row, "compression_label"));
+  };
+  const auto paper = [&beside](const std::string& key) {
+    return [&beside, key](const ojson& row) { return text_of(at(at(beside(row), "paper"), key)); };
+  };
+  const auto error = [&beside](const std::string& key) {
+    return [&beside, key](const ojson& row) { return text_of(at(at(at(beside(row), "ours"), "fidelity"), key)); };
+  };
+  const bool with_paper = any_cell(rows, paper("N"));
+  std::vector<Column> columns{field("method", "method"), field("compression", "compression_label")};
+  const auto add = [&](const char* paper_header, const std::string& paper_key, Column ours) {
+    if (with_paper) columns.push_back({paper_header, paper(paper_key)});
+    columns.push_back(std::move(ours));
+  };
+  add("paper N", "N", field(with_paper ? "ours N" : "N", "N"));
+  add("paper L", "L", field(with_paper ? "ours L" : "L", "L"));
+  add("paper I", "I", field(with_paper ? "ours I" : "I", "I"));
+  add("paper ms", "total_ms", field(with_paper ? "ours ms" : "ms", "total_ms"));
+  add("paper ratio", "time_ratio_vs_plain", field(with_paper ? "ours ratio" : "ratio", "time_ratio_vs_plain"));
+  columns.push_back(field("node ratio", "node_ratio"));
+  columns.push_back(field("nets", "nets"));
+  columns.push_back(field("status", "status"));
+  const bool with_error = any_cell(rows, error("rms_pct"));
+  if (with_error) {
+    columns.push_back({"RMS %", error("rms_pct")});
+    columns.push_back({"max %", error("max_pct")});
+    columns.push_back({"pop max %", error("popping_pct")});
+  }
+  std::string out = "### Table 2\n\n";
+  out +=
+      "Mean over nets of N (nodes), L (links), I (interpolations) and the mean step time in ms; ratio: step time "
+      "to plain Bullet's, same run.";
+  if (with_paper) {
+    const std::string hardware = text_of(at(reproduction, "paper_hardware"));
+    out += " Paper" + (hardware.empty() ? std::string() : " (" + hardware + ")") + " beside ours.";
+  }
+  if (with_error)
+    out +=
+        " RMS: error against full-resolution plain Bullet in % of the net's extent, mean over steps and nets; "
+        "max and pop: max over steps and nets.";
+  return out + "\n\n" + table(columns, rows);
+}
+
+std::string table1_section(const ojson& doc) {
+  const ojson& rows = at(doc, "table1");
+  if (!non_empty_array(rows)) return "";
+  const ojson& paper_rows = at(at(doc, "reproduction"), "table1");
+  const auto paper_of = [&paper_rows](const ojson& row) -> const ojson& {
+    if (!paper_rows.is_array()) return null_json();
+    for (const ojson& p : paper_rows) {
+      if (at(p, "operation") == at(row, "operation")) return at(p, "paper");
+    }
+    return null_json();
+  };
+  const bool with_paper = any_cell(rows, [&](const ojson& row) { return text_of(at(paper_of(row), "N")); });
+  std::vector<Column> columns{field("operation", "operation")};
+  if (with_paper) columns.push_back({"paper N", [&](const ojson& row) { return text_of(at(paper_of(row), "N")); }});
+  columns.push_back(field(with_paper ? "ours N" : "N", "N"));
+  if (with_paper)
+    columns.push_back({"paper µs", [&](const ojson& row) {
+                         return markdown_number(scaled(at(paper_of(row), "complete_ms"), 1000.0));
+                       }});
+  columns.push_back({with_paper ? "ours µs" : "µs",
+                     [](const ojson& row) { return markdown_number(scaled(at(row, "complete_ms"), 1000.0)); }});
+  columns.push_back(field("p50 µs", "p50_us"));
+  columns.push_back(field("p99 µs", "p99_us"));
+  if (with_paper)
+    columns.push_back({"paper node %", [&](const ojson& row) {
+                         const ojson& p = paper_of(row);
+                         return markdown_number(percent_of(at(p, "node_ops_ms"), at(p, "complete_ms")), 3);
+                       }});
+  columns.push_back(field(with_paper ? "ours node %" : "node %", "node_ops_pct", 3));
+  columns.push_back(field("count", "count"));
+  return "### Table 1\n\nCost of one operation (mean µs, inside real runs between real steps); N, L: the net's nodes "
+         "and links when it ran; node %: share of the time spent on nodes, the rest on links.\n\n" +
+         table(columns, rows);
+}
+
+/// A fit's slope per 1000 nodes in `unit` (`per_ms` of them in a millisecond): per node it would read 0.0002 ms.
+Column slope_column(const std::string& unit, double per_ms) {
+  return {unit + " per 1000 nodes", [per_ms](const ojson& row) {
+            return markdown_number(scaled(at(row, "slope_ms_per_node"), 1000.0 * per_ms));
+          }};
+}
+
+Column points_column() {
+  return {"points", [](const ojson& row) {
+            const ojson& p = at(row, "points");
+            return p.is_array() ? std::to_string(p.size()) : std::string();
+          }};
+}
+
+std::string scaling_section(const ojson& doc) {
+  const ojson& scaling = at(doc, "scaling");
+  const ojson& steps = at(scaling, "step_ms_vs_nodes");
+  const ojson& ops = at(scaling, "op_ms_vs_nodes");
+  if (!non_empty_array(steps) && !non_empty_array(ops)) return "";
+  std::string out =
+      "### Scaling\n\nLeast-squares lines through one point per net (mean nodes, median step or "
+      "operation time in ms); flatness: how far an operation's cost moves across the nets' sizes.\n";
+  if (non_empty_array(steps)) {
+    out += "\nStep time against nodes:\n\n" +
+           table({field("method", "method"),
+                  {"compression", [](const ojson& row) { return compression_text(at(row, "compression")); }},
+                  slope_column("ms", 1.0),
+                  field("intercept ms", "intercept_ms"),
+                  field("r²", "r2"),
+                  points_column(),
+                  field("valid", "valid")},
+                 steps);
+  }
+  if (non_empty_array(ops)) {
+    // An operation costs microseconds: in ms its intercept would need an exponent.
+    const Column intercept_us{
+        "intercept µs", [](const ojson& row) { return markdown_number(scaled(at(row, "intercept_ms"), 1000.0)); }};
+    out += "\nOperations against nodes:\n\n" +
+           table({field("operation", "operation"), slope_column("µs", 1000.0), intercept_us, field("r²", "r2"),
+                  field("flatness", "flatness"), points_column(), field("valid", "valid")},
+                 ops);
+  }
+  return out;
+}
+
+// Claims are rendered generically: the fields known today in a fixed order, then any others in the order they
+// first appear, so a claim that gains or loses a field still renders (the claim layout is still evolving).
+struct ClaimField {
+  const char* key;
+  const char* header;
+};
+constexpr ClaimField kClaimFields[] = {{"id", "id"},
+                                       {"comparison", "check"},
+                                       {"expected", "expected"},
+                                       {"tolerance", "tolerance"},
+                                       {"measured", "measured"},
+                                       {"interval", "interval"}};
+constexpr const char* kClaimFieldsAfterVerdict[] = {"decided"};
+// Not columns: prose too long for a table cell, or folded into the verdict column.
+constexpr const char* kClaimFieldsLeftOut[] = {"description", "verdict", "pass"};
+
+bool known_claim_field(const std::string& key) {
+  for (const ClaimField& f : kClaimFields)
+    if (key == f.key) return true;
+  for (const char* k : kClaimFieldsAfterVerdict)
+    if (key == k) return true;
+  for (const char* k : kClaimFieldsLeftOut)
+    if (key == k) return true;
+  return false;
+}
+
+bool any_has(const ojson& claims, const std::string& key) {
+  return std::any_of(claims.begin(), claims.end(), [&](const ojson& c) { return c.is_object() && c.contains(key); });
+}
+
+std::string verdict_text(const ojson& claim) {
+  if (const ojson& v = at(claim, "verdict"); !v.is_null()) return text_of(v);
+  if (const ojson& pass = at(claim, "pass"); pass.is_boolean()) return pass.get<bool>() ? "pass" : "FAIL";
+  return "";
+}
+
+std::string claims_table(const ojson& claims) {
+  std::vector<Column> columns;
+  for (const ClaimField& f : kClaimFields) {
+    if (std::string_view(f.key) == "id" || any_has(claims, f.key)) columns.push_back(field(f.header, f.key));
+  }
+  columns.push_back({"verdict", verdict_text});
+  for (const char* key : kClaimFieldsAfterVerdict) {
+    if (any_has(claims, key)) columns.push_back(field(key, key));
+  }
+  std::vector<std::string> extra;
+  for (const ojson& claim : claims) {
+    if (!claim.is_object()) continue;
+    for (const auto& [key, value] : claim.items()) {
+      if (!known_claim_field(key) && std::find(extra.begin(), extra.end(), key) == extra.end()) extra.push_back(key);
+    }
+  }
+  for (const std::string& key : extra) columns.push_back(field(escaped(key), key));
+  return table(columns, claims);
+}
+
+std::string claims_section(const ojson& doc) {
+  const ojson& reproduction = at(doc, "reproduction");
+  const ojson& claims = at(reproduction, "claims");
+  const ojson& targets = at(reproduction, "targets");
+  if (!non_empty_array(claims) && !non_empty_array(targets)) return "";
+  std::string out =
+      "### Claims\n\nInterval: where the measured value could lie had the run been repeated "
+      "(percentile bootstrap of the repetitions), when the run has enough repetitions.";
+  if (const ojson& v = at(reproduction, "verdict"); !v.is_null()) {
+    out += " Verdict of the reproduction: **" + text_of(v) + "**.";
+  } else if (const ojson& pass = at(reproduction, "pass"); pass.is_boolean()) {
+    out += pass.get<bool>() ? " Every claim of the paper passed." : " At least one claim of the paper **failed**.";
+  }
+  out += "\n";
+  if (non_empty_array(claims)) out += "\nClaims of the paper:\n\n" + claims_table(claims);
+  if (non_empty_array(targets)) out += "\nTargets of this project (reported, not gating):\n\n" + claims_table(targets);
+  return out;
+}
+
+/// A fidelity metric's statistic (`row[metric][stat]`).
+Column metric(std::string header, std::string metric_key, std::string stat) {
+  return {std::move(header), [metric_key = std::move(metric_key), stat = std::move(stat)](const ojson& row) {
+            return markdown_number(at(at(row, metric_key), stat));
+          }};
+}
+
+std::string fidelity_section(const ojson& doc) {
+  const ojson& fidelity = at(doc, "fidelity");
+  const ojson& rows = at(fidelity, "rows");
+  const ojson& pareto = at(doc, "pareto");
+  const ojson& best = at(doc, "max_compression");
+  if (!non_empty_array(rows) && !non_empty_array(pareto) && !best.is_object()) return "";
+  std::string out =
+      "### Fidelity\n\nError against full-resolution plain Bullet, in % of the net's extent (energy "
+      "drift: in % of the reference's initial energy); rows combine nets as mean of means and p95s, max "
+      "of maxima. Time ratio: the subject's mean step to the reference's, both timed in the fidelity "
+      "pass.\n";
+  if (non_empty_array(rows)) {
+    std::vector<Column> columns{field("method", "method"), {"compression", [](const ojson& row) {
+                                                              return compression_text(at(row, "compression"));
+                                                            }}};
+    if (any_cell(rows, [](const ojson& row) { return text_of(at(row, "grid")); }))
+      columns.push_back(field("grid", "grid"));
+    for (Column c : {field("N", "N"), metric("RMS % mean", "rms_pct", "mean"), metric("RMS % p95", "rms_pct", "p95"),
+                     metric("max %", "max_pct", "max"), metric("weighted RMS %", "weighted_rms_pct", "mean"),
+                     metric("pop max %", "popping_pct", "max"), metric("energy drift %", "energy_drift_pct", "mean"),
+                     field("time ratio", "time_ratio_vs_plain"), field("switch ms", "switch_ms"),
+                     field("worst net RMS %", "worst_net_rms_pct"), field("nets", "nets"), field("status", "status")})
+      columns.push_back(std::move(c));
+    out += "\n" + table(columns, rows);
+  }
+  if (non_empty_array(pareto)) {
+    out += "\nPareto sweep (TC-SB budgets; on front: no other budget is both faster and more accurate):\n\n" +
+           table({{"compression", [](const ojson& row) { return compression_text(at(row, "compression")); }},
+                  field("N", "N"),
+                  field("time ratio", "time_ratio_vs_plain"),
+                  field("RMS %", "rms_pct"),
+                  field("worst net RMS %", "worst_net_rms_pct"),
+                  field("on front", "on_front")},
+                 pareto);
+  }
+  if (best.is_object()) {
+    out += "\nMaximum compression: ";
+    const ojson& c = at(best, "compression");
+    out += c.is_number() ? compression_text(c) + " of the nodes" : std::string("none");
+    out +=
+        " keeps the worst net's RMS error within " + markdown_number(at(best, "threshold_pct"), 3) + " % of its extent";
+    if (c.is_number())
+      out += " (worst net " + markdown_number(at(best, "worst_net_rms_pct")) + " %, time ratio " +
+             markdown_number(at(best, "time_ratio_vs_plain")) + ")";
+    out += ".\n";
+  }
+  // A reproduction lists these targets with the claims; a plain run with a fidelity pass has them only here.
+  if (const ojson& targets = at(fidelity, "targets"); non_empty_array(targets) && !at(doc, "reproduction").is_object())
+    out += "\nFidelity targets of this project (reported, not gating):\n\n" + claims_table(targets);
+  return out;
+}
+
+}  // namespace
+
+std::string markdown_number(const ojson& value, int digits) {
+  if (value.is_number_integer() || value.is_number_unsigned()) return value.dump();
+  if (!value.is_number()) return "";
+  const double x = value.get<double>();
+  if (!std::isfinite(x)) return "";
+  if (x == 0) return "0";
+  char buf[64];
+  const double magnitude = std::floor(std::log10(std::abs(x)));
+  if (magnitude < -3) {
+    std::snprintf(buf, sizeof buf, "%.*e", std::max(0, digits - 1), x);
+    return buf;
+  }
+  const int decimals = std::max(0, digits - 1 - static_cast<int>(magnitude));
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+  return buf;
+}
+
+std::string markdown_report(const ojson& native) {
+  std::string out = heading(native) + "\n" + source_line(native);
+  for (const std::string& section : {table2_section(native), table1_section(native), scaling_section(native),
+                                     fidelity_section(native), claims_section(native)}) {
+    if (!section.empty()) out += "\n" + section;
+  }
+  return out;
+}
+
+std::string MarkdownFormat::render_native(const ojson& native) const { return markdown_report(native); }
+
+}  // namespace tcsb
