@@ -58,17 +58,40 @@ std::vector<Claim> paper_claims(const PaperReference& paper, const std::vector<T
                             "TC-SB's step time is linear in the nodes it simulates: one least-squares line through "
                             "every TC-SB case (all budgets, all nets), R^2 (Figure 5)",
                             Comparison::kAtLeast, kLinearR2, 0.0, tcsb_fit.valid ? tcsb_fit.r2 : std::nullopt));
-  for (const Table1Row& row : table1) {
-    double paper_ms = 0;
-    bool in_paper = false;
+  // Table 1. A begin operation is compared with the paper's as it stands. An end operation is compared as part of
+  // its whole cycle (begin + end): the paper deleted an end operation's links lazily, outside its timing ("these
+  // links will be deleted in a lazy manner", section 3.4; its end operations' Link-Ops are 0.1 and 0.0 us), while ours
+  // deletes them inside the end operation. The cycle counts our deletions and not the paper's, so it can only err
+  // against us.
+  const auto paper_ms = [&paper](std::string_view operation) -> std::optional<double> {
     for (const PaperTable1Row& p : paper.table1)
-      if (p.operation == row.operation) paper_ms = p.complete_ms, in_paper = true;
-    if (!in_paper) continue;
-    claims.push_back(repeated(op_claim_id(row.operation),
-                              row.operation + ": one operation costs at most the paper's mean complete time, in ms "
-                              "(Table 1; ours: mean over every sample of the run)",
-                              Comparison::kAtMost, paper_ms, 0.0,
-                              row.count > 0 ? std::optional(row.complete_ms) : std::nullopt));
+      if (p.operation == operation) return p.complete_ms;
+    return std::nullopt;
+  };
+  const auto ours_ms = [&table1](std::string_view operation) -> std::optional<double> {
+    for (const Table1Row& row : table1)
+      if (row.operation == operation && row.count > 0) return row.complete_ms;
+    return std::nullopt;
+  };
+  for (const auto& [begin, end] : {std::pair<std::string, std::string>{"refine", "end-refine"},
+                                   std::pair<std::string, std::string>{"coarse", "end-coarse"}}) {
+    const std::optional<double> paper_begin = paper_ms(begin), paper_end = paper_ms(end);
+    const std::optional<double> ours_begin = ours_ms(begin), ours_end = ours_ms(end);
+    if (paper_begin) {
+      claims.push_back(repeated(op_claim_id(begin),
+                                begin + ": one operation costs at most the paper's mean complete time, in ms "
+                                "(Table 1; ours: mean over every sample of the run)",
+                                Comparison::kAtMost, *paper_begin, 0.0, ours_begin));
+    }
+    if (paper_begin && paper_end) {
+      std::optional<double> cycle;
+      if (ours_begin && ours_end) cycle = *ours_begin + *ours_end;
+      claims.push_back(repeated(op_claim_id(end),
+                                end + ": the whole cycle " + begin + " + " + end + " costs at most the paper's, in ms "
+                                "(Table 1, means; the paper timed its end operations without their lazily deferred "
+                                "link deletions, ours include them)",
+                                Comparison::kAtMost, *paper_begin + *paper_end, 0.0, cycle));
+    }
   }
   return claims;
 }
