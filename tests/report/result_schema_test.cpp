@@ -77,6 +77,17 @@ TEST(ResultSchema, OptionalSectionsOfOtherCommandsConform) {
   EXPECT_EQ(problems(doc), Lines{});
 }
 
+TEST(ResultSchema, OpWorkIsOptionalButPinnedWhenPresent) {
+  ojson doc = native_json(run_with_cases());
+  ASSERT_TRUE(doc["cases"][1].contains("op_work"));
+  ojson without = doc;
+  without["cases"][1].erase("op_work");  // a result written before op_work existed
+  EXPECT_EQ(problems(without), Lines{});
+  doc["cases"][1]["op_work"]["refine"].erase("links");
+  doc["cases"][1]["op_work"]["coarse"]["nodes"]["max"] = -1;
+  EXPECT_EQ(problems(doc).size(), 2u);
+}
+
 TEST(ResultSchema, RejectsWhatIsNotANativeResult) {
   ojson doc = native_json(run_with_cases());
   doc["schema_version"] = 1;
