@@ -27,7 +27,9 @@ struct OpWorkSummary {
 /// Accumulates OpSamples; O(1) per sample, no allocation, so it may sit behind an OpSink on a long run.
 class OpWorkTally {
  public:
+  /// Counts one operation call.
   void add(const OpSample& sample);
+  /// Counts every call in `samples`.
   void add(std::span<const OpSample> samples) {
     for (const OpSample& s : samples) add(s);
   }
