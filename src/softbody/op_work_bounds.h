@@ -1,7 +1,7 @@
 // Upper bounds on the work of one TreeCut operation (OpWork, op_sample.h), derived from the cut's invariants, so
 // that "the operations are constant in time" (paper, Figure 4) becomes a deterministic statement: whatever the size
-// of the net, no operation counts more than these. The op_work claims (harness/op_work.h) and the scaling test
-// (tests/softbody/op_work_test.cpp) check measured maxima against them.
+// of the net, no operation counts more than these. The op_work claims (harness/op_work_claims.h) and the scaling test
+// (tests/harness/op_work_scaling_test.cpp) check measured maxima against them.
 //
 // The invariants the derivations use (tc_softbody.h, incidence_list.h, cut_adjacency.h):
 //  (B) Balanced cut: cut nodes whose blocks share an edge are at most one level apart, so a side of a block has at
@@ -20,17 +20,17 @@
 //
 // Counts per primitive (tc_softbody.cpp), as OpWork defines them:
 //   add_node:    nodes 2, tree_records 2, dbvt_leaves 1
-//   remove_node: nodes 2, tree_records 2, dbvt_leaves 2, links <= 12 (the moved node's links re-pointed, (D))
+//   remove_node: nodes 1, tree_records 1, dbvt_leaves 1;
+//                relocation_nodes 1 and relocation_links <= 12 (the node moved into the hole, its links re-pointed, (D))
 //   add_link:    links 1, tree_records 2
-//   remove_link: links 2, tree_records 4 (the removed link and the last link moved into its place)
+//   remove_link: links 1, tree_records 2; relocation_links 1 (the last link moved into its place)
 //   refresh of a link constant: links 1, tree_records 2
 //   set_simulated_mass: nodes 1, tree_records 1
 //   the neighbour walk: tree_records 1 + its probes
 //
-// Measured maxima (paper suite, and tests/harness/op_work_scaling_test.cpp on 33^2 .. 1025^2) reach the bound
-// exactly for every count of end-refine, for nodes and DBVT leaves of every operation and for coarse's links; the
-// rest stay below it: refine links 32 of 36 and tree records 90 of 114, coarse tree records 82 of 84, end-coarse
-// links 96 of 104 and tree records 94 of 110 (those bounds sum worst cases that cannot all occur in one call).
+// The relocation counts are the swap-with-last's: which node or link is last in Bullet's arrays is a draw unrelated
+// to the operation's block, so they are kept apart from the block-local counts (nodes, links, tree records, DBVT
+// leaves), whose maxima and interior means then depend on the block's neighbourhood alone (harness/op_work_claims.h).
 #pragma once
 
 #include <cstdint>
@@ -71,6 +71,8 @@ inline constexpr OpWork kRefine{
                     + kMaxChildren * (1 + kMaxRefineChildProbes)  // the children's walks
                     + 2 * kRefineLinksAdded,                  // add_link
     .dbvt_leaves = kMaxChildren,                              // one leaf per child
+    .relocation_nodes = 0,                                    // nothing removed
+    .relocation_links = 0,
     .dbvt_ancestors = 0,                                      // not bounded by the cut (OpWork::dbvt_ancestors)
 };
 
@@ -83,17 +85,19 @@ inline constexpr int kEndRefineChildLinkVisits = kMaxChildren * kMaxChildDegree;
 inline constexpr OpWork kEndRefine{
     .nodes = 1                    // p's velocity
              + kMaxChildren * 2   // each child's velocity, and its full mass
-             + 2,                 // remove_node(p): p and the node moved into its place
-    .links = 2 * kEndRefineLinksRemoved      // remove_link
+             + 1,                 // remove_node(p)
+    .links = kEndRefineLinksRemoved          // remove_link
              + kEndRefineChildLinkVisits     // faded-in links made steady
-             + kMaxDegree                    // remove_node(p) re-points the moved node's links
              + kEndRefineChildLinkVisits,    // the children's constants refreshed
     .tree_records = 1                                // p
-                    + 4 * kEndRefineLinksRemoved     // remove_link
+                    + 2 * kEndRefineLinksRemoved     // remove_link
                     + kMaxChildren * (1 + 1)         // each child, and its mass
-                    + 2                              // remove_node(p)
+                    + 1                              // remove_node(p)
                     + 2 * kEndRefineChildLinkVisits,  // refreshing the children's links
-    .dbvt_leaves = 2,                                // p's leaf removed, the moved node's re-pointed
+    .dbvt_leaves = 1,                                // p's leaf removed
+    .relocation_nodes = 1,                           // remove_node(p): the node moved into its place
+    .relocation_links = kEndRefineLinksRemoved       // remove_link: the last link moved into each hole
+                        + kMaxDegree,                // remove_node(p) re-points the moved node's links
     .dbvt_ancestors = 0,                             // nothing inserted
 };
 
@@ -116,6 +120,8 @@ inline constexpr OpWork kCoarse{
                     + 1 + kMaxWalkProbes           // p's walk
                     + 2 * kCoarseLinksAdded,       // add_link
     .dbvt_leaves = 1,                              // p's leaf
+    .relocation_nodes = 0,                         // nothing removed
+    .relocation_links = 0,
     .dbvt_ancestors = 0,                           // not bounded by the cut (OpWork::dbvt_ancestors)
 };
 
@@ -127,18 +133,20 @@ inline constexpr OpWork kEndCoarse{
     .nodes = 1                    // p's velocity
              + kMaxChildren       // each child's velocity
              + 1                  // p's full mass
-             + kMaxChildren * 2,  // remove_node per child
-    .links = 2 * kEndCoarseLinksRemoved  // remove_link
+             + kMaxChildren,      // remove_node per child
+    .links = kEndCoarseLinksRemoved      // remove_link
              + kMaxWalkVisits            // p's faded-in links made steady
-             + kMaxChildren * kMaxDegree  // remove_node re-points each moved node's links
              + kMaxWalkVisits,           // p's constants refreshed
     .tree_records = 1                                // p
                     + kMaxChildren                   // each child's incidence list
-                    + 4 * kEndCoarseLinksRemoved     // remove_link
+                    + 2 * kEndCoarseLinksRemoved     // remove_link
                     + 1                              // p's mass
-                    + kMaxChildren * 2               // remove_node per child
+                    + kMaxChildren                   // remove_node per child
                     + 2 * kMaxWalkVisits,            // refreshing p's links
-    .dbvt_leaves = kMaxChildren * 2,                 // each child's leaf removed, each moved node's re-pointed
+    .dbvt_leaves = kMaxChildren,                     // each child's leaf removed
+    .relocation_nodes = kMaxChildren,                // remove_node per child: a node moved into each hole
+    .relocation_links = kEndCoarseLinksRemoved       // remove_link: the last link moved into each hole
+                        + kMaxChildren * kMaxDegree,  // remove_node re-points each moved node's links
     .dbvt_ancestors = 0,                             // nothing inserted
 };
 

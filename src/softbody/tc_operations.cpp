@@ -128,7 +128,7 @@ std::int32_t TcSoftBody::new_op(OpKind kind, TreeId parent) {
 void TcSoftBody::begin_refine(TreeId p) {
   const std::int64_t t0 = now_ns();
   prefetch_footprint(p);
-  work_ = {};
+  work_ = {.interior = neighbourhood_inside_net(tree(), p)};
   const LodNode& pn = tree().node(p);
   const std::int32_t op = new_op(OpKind::kRefine, p);
   const Node& parent_node = m_nodes[record(p).bullet];
@@ -188,7 +188,7 @@ void TcSoftBody::begin_refine(TreeId p) {
 void TcSoftBody::begin_coarse(TreeId p) {
   const std::int64_t t0 = now_ns();
   prefetch_footprint(p);
-  work_ = {};
+  work_ = {.interior = neighbourhood_inside_net(tree(), p)};
   const LodNode& pn = tree().node(p);
   const std::int32_t op = new_op(OpKind::kCoarse, p);
   ++work_.tree_records;  // p's LOD node, record and state
@@ -280,7 +280,7 @@ void TcSoftBody::end_refine(const Op& op) {
   const TreeId p = op.parent;
   const LodNode& pn = tree().node(p);
   prefetch_link_removals(std::span<const TreeId>(&p, 1));
-  work_ = {};
+  work_ = {.interior = neighbourhood_inside_net(tree(), p)};
   ++work_.tree_records;  // p's LOD node, record and incidence list
   while (incidence_[static_cast<std::size_t>(p)].size() > 0)  // faded-out links and tethers
     remove_link(incidence_[static_cast<std::size_t>(p)][0]);
@@ -314,7 +314,7 @@ void TcSoftBody::end_coarse(const Op& op) {
   const TreeId p = op.parent;
   const LodNode& pn = tree().node(p);
   prefetch_link_removals(std::span<const TreeId>(pn.children.data(), static_cast<std::size_t>(pn.child_count)));
-  work_ = {};
+  work_ = {.interior = neighbourhood_inside_net(tree(), p)};
   ++work_.tree_records;  // p's LOD node and record
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];

@@ -127,9 +127,7 @@ void TcSoftBody::remove_node(TreeId id) {
   ++work_.dbvt_leaves;
   const int last = m_nodes.size() - 1;
   if (k != last) {
-    ++work_.nodes;         // the last node, copied into the hole
-    ++work_.tree_records;  // its incidence list and Bullet index
-    ++work_.dbvt_leaves;   // its leaf, re-pointed
+    ++work_.relocation_nodes;  // the last node, copied into the hole: its leaf, Bullet index and tree entry
     // Swap-with-last: the moved node's leaf and incident links are re-pointed, O(degree).
     Node* from = &m_nodes[last];
     m_nodes[k] = m_nodes[last];
@@ -137,7 +135,7 @@ void TcSoftBody::remove_node(TreeId id) {
     to->m_leaf->data = to;
     const TreeId moved = tree_of_[static_cast<std::size_t>(last)];
     for (std::int32_t li : incidence_[static_cast<std::size_t>(moved)]) {
-      ++work_.links;
+      ++work_.relocation_links;
       Link& l = m_links[li];
       if (l.m_n[0] == from) l.m_n[0] = to;
       if (l.m_n[1] == from) l.m_n[1] = to;
@@ -187,8 +185,7 @@ void TcSoftBody::remove_link(int link) {
   work_.tree_records += 2;
   const int last = m_links.size() - 1;
   if (link != last) {
-    ++work_.links;            // the last link, copied into the hole
-    work_.tree_records += 2;  // its endpoints' incidence lists, re-pointed
+    ++work_.relocation_links;  // the last link, copied into the hole; its endpoints' incidence entries re-pointed
     // Swap-with-last: Bullet keeps no pointer to links, only our incidence lists name the moved one.
     m_links[link] = m_links[last];
     link_meta_[static_cast<std::size_t>(link)] = link_meta_[static_cast<std::size_t>(last)];

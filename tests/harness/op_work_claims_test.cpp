@@ -16,12 +16,14 @@ OpSample sample(OpKind kind, OpWork work) {
   return s;
 }
 
-/// Work well inside every bound, scaled by `f` (1 keeps it unchanged).
+/// Work well inside every bound, scaled by `f` (1 keeps it unchanged), of an interior call. No relocation: refine and
+/// coarse remove nothing, so their bound on it is 0.
 OpWork typical(int f = 1) {
-  return {.nodes = 5 * f, .links = 10 * f, .tree_records = 30 * f, .dbvt_leaves = 1, .dbvt_ancestors = 2};
+  return {.nodes = 5 * f, .links = 10 * f, .tree_records = 30 * f, .dbvt_leaves = 1, .dbvt_ancestors = 2,
+          .interior = true};
 }
 
-/// A TC-SB case on `net` whose every operation did `work` (twice, so maxima and means are both exercised).
+/// A TC-SB case on `net` whose every operation did `work` and `other` (so maxima and means are both exercised).
 CaseResult tcsb_case(const std::string& net, OpWork work, OpWork other) {
   CaseResult c;
   c.key.method = Method::kTcsb;
@@ -68,6 +70,69 @@ TEST(OpWorkClaims, TheSameWorkOnEveryNetPasses) {
     // Nothing spreads, so measured is the largest max / bound: 2 * 30 tree records against refine's bound, etc.
     EXPECT_GT(*c.measured, 0) << c.id;
     EXPECT_LE(*c.measured, 1) << c.id;
+  }
+}
+
+TEST(OpWorkClaims, AnInteriorMeanGrowingWithTheNetFailsThoughTheMaximumIsFlat) {
+  RunResult r = flat_run();
+  // On the largest net the smaller of each case's two end-coarse calls touches two links more: per-net interior
+  // mean 16 against 15, the maximum 20 everywhere.
+  for (std::size_t i : {7u, 8u})
+    for (OpSample& s : r.cases[i].ops.samples)
+      if (s.kind == OpKind::kEndCoarse && s.work.links == 10) s.work.links += 2;
+  const std::vector<Claim> claims = op_work_claims(r);
+  EXPECT_FALSE(find(claims, "op_work_end-coarse").pass);
+  EXPECT_TRUE(find(claims, "op_work_coarse").pass);
+  EXPECT_NEAR(*find(claims, "op_work_end-coarse").measured, (1.0 / 16) / 0.05, 1e-12);
+}
+
+TEST(OpWorkClaims, BorderCallsThatDifferWhileInteriorCallsAgreePass) {
+  RunResult r = flat_run();
+  // Only n45 has border calls, and they do less (fewer neighbours): its mean over all calls drops well beyond 5 %,
+  // its maximum and interior mean are those of every other net.
+  OpWork border = typical();
+  border.interior = false;
+  border.links = 4;
+  border.tree_records = 12;
+  for (int k = 0; k < kOpKindCount; ++k)
+    for (int i = 0; i < 4; ++i) r.cases[1].ops.samples.push_back(sample(static_cast<OpKind>(k), border));
+  const std::vector<NetOpWork> nets = op_work_by_net(r);
+  const OpWorkSummary n45 = nets[0].tally.summary(OpKind::kCoarse), n55 = nets[1].tally.summary(OpKind::kCoarse);
+  EXPECT_EQ(n45.interior_calls, 4);
+  EXPECT_DOUBLE_EQ(n45[OpWorkCount::kLinks].mean, 9.5);  // (10 + 20 + 20 + 10 + 4 * 4) / 8, against 15
+  EXPECT_DOUBLE_EQ(n45[OpWorkCount::kLinks].interior_mean, n55[OpWorkCount::kLinks].interior_mean);
+  for (const Claim& c : op_work_claims(r)) EXPECT_TRUE(c.pass) << c.id;
+  // The same border calls on an interior block would be judged: the interior mean then drops as well.
+  for (OpSample& s : r.cases[1].ops.samples) s.work.interior = s.work.interior || s.work.links == 4;
+  for (const Claim& c : op_work_claims(r)) EXPECT_FALSE(c.pass) << c.id;
+}
+
+TEST(OpWorkClaims, RelocationWorkIsBoundedButNotCompared) {
+  RunResult r = flat_run();
+  // Whatever is last in Bullet's arrays: end-coarse relocates 0 links on n45, 60 on n81 (bound 68). Passes.
+  for (std::size_t i : {7u, 8u})
+    for (OpSample& s : r.cases[i].ops.samples)
+      if (s.kind == OpKind::kEndCoarse) {
+        s.work.relocation_nodes = op_work_bounds::kEndCoarse.relocation_nodes;
+        s.work.relocation_links = 60;
+      }
+  EXPECT_TRUE(find(op_work_claims(r), "op_work_end-coarse").pass);
+  // One call more than the bound fails, on any net.
+  r.cases[4].ops.samples[6].work.relocation_links = op_work_bounds::kEndCoarse.relocation_links + 1;
+  EXPECT_FALSE(find(op_work_claims(r), "op_work_end-coarse").pass);
+  // Refine removes nothing: its relocation bound is 0, so any relocation fails.
+  r.cases[4].ops.samples[0].work.relocation_nodes = 1;
+  EXPECT_FALSE(find(op_work_claims(r), "op_work_refine").pass);
+}
+
+TEST(OpWorkClaims, WithoutInteriorCallsOnSomeNetTheClaimIsUnmeasured) {
+  RunResult r = flat_run();
+  for (CaseResult& c : r.cases)
+    if (c.net_name == "n55")
+      for (OpSample& s : c.ops.samples) s.work.interior = false;
+  for (const Claim& c : op_work_claims(r)) {
+    EXPECT_FALSE(c.pass) << c.id;
+    EXPECT_FALSE(c.measured.has_value()) << c.id;
   }
 }
 
@@ -144,6 +209,8 @@ TEST(OpWorkByNet, PoolsTheTcsbCasesOfEachNetInOrder) {
   EXPECT_EQ(s.calls, 4);  // two budgets x two calls; the plain case's sample is not among them
   EXPECT_EQ(s[OpWorkCount::kLinks].max, 20);
   EXPECT_DOUBLE_EQ(s[OpWorkCount::kLinks].mean, 15.0);
+  EXPECT_EQ(s.interior_calls, 4);
+  EXPECT_DOUBLE_EQ(s[OpWorkCount::kLinks].interior_mean, 15.0);
 }
 
 TEST(RelativeSpread, IsTheRangeOverTheLargest) {

@@ -103,16 +103,21 @@ TEST(NativeJson, CaseAndRepetitionKeys) {
 TEST(NativeJson, OpWorkPerOperationAndCount) {
   RunResult r = small_run();
   OpSample a = op(OpKind::kCoarse, 1000, 500, 30, 60), b = a;
-  a.work = {.nodes = 10, .links = 20, .tree_records = 60, .dbvt_leaves = 1, .dbvt_ancestors = 3};
+  a.work = {.nodes = 10, .links = 20, .tree_records = 60, .dbvt_leaves = 1, .dbvt_ancestors = 3, .interior = true};
   b.work = {.nodes = 8, .links = 15, .tree_records = 50, .dbvt_leaves = 1, .dbvt_ancestors = 0};
   r.cases[1].ops.samples = {a, b, op(OpKind::kRefine, 1000, 500, 30, 60)};
   const ojson work = native_json(r)["cases"][1]["op_work"];
   EXPECT_EQ(keys(work), (std::vector<std::string>{"refine", "end-refine", "coarse", "end-coarse"}));
-  EXPECT_EQ(keys(work["coarse"]), (std::vector<std::string>{"calls", "nodes", "links", "tree_records", "dbvt_leaves",
-                                                            "dbvt_ancestors"}));
+  EXPECT_EQ(keys(work["coarse"]),
+            (std::vector<std::string>{"calls", "interior_calls", "nodes", "links", "tree_records", "dbvt_leaves",
+                                      "relocation_nodes", "relocation_links", "dbvt_ancestors"}));
+  EXPECT_EQ(keys(work["coarse"]["links"]), (std::vector<std::string>{"max", "mean", "interior_mean"}));
   EXPECT_EQ(work["coarse"]["calls"], 2);
+  EXPECT_EQ(work["coarse"]["interior_calls"], 1);
   EXPECT_EQ(work["coarse"]["links"]["max"], 20);
   EXPECT_EQ(work["coarse"]["links"]["mean"], 17.5);
+  EXPECT_EQ(work["coarse"]["links"]["interior_mean"], 20);  // a alone
+  EXPECT_TRUE(work["refine"]["links"]["interior_mean"].is_null());  // called, but never in the interior
   EXPECT_EQ(work["coarse"]["dbvt_ancestors"]["mean"], 1.5);
   EXPECT_EQ(work["refine"]["calls"], 1);
   EXPECT_EQ(work["refine"]["nodes"]["max"], 0);
