@@ -57,4 +57,15 @@ bool for_each_cut_neighbour(const LodTree& tree, TreeId x, InCut&& in_cut, Visit
   return balanced;
 }
 
+/// Whether the block of `x` and the eight blocks of its level around it are all whole blocks inside the net: the
+/// block's leaf extent grown by one block of its level (2^level leaves) on every side lies inside the grid. Such a
+/// block has the same neighbourhood on every net (a full side, full-size neighbours and children all round); a block
+/// at the border has fewer. Grid arithmetic on the block's own LodNode, O(1).
+inline bool neighbourhood_inside_net(const LodTree& tree, TreeId x) {
+  const LodNode& node = tree.node(x);
+  const int block = 1 << node.level;
+  return node.leaf_x0 - block >= 0 && node.leaf_y0 - block >= 0 && node.leaf_x1 + block <= tree.level_width(0) &&
+         node.leaf_y1 + block <= tree.level_height(0);
+}
+
 }  // namespace tcsb

@@ -4,6 +4,7 @@
 
 #include "harness/paper_tables.h"
 #include "report/fidelity_json.h"
+#include "report/op_work_json.h"
 
 namespace tcsb {
 namespace {
@@ -105,7 +106,7 @@ ojson case_json(const RunResult& result, std::size_t index) {
   if (const auto plain = plain_case_for(result, index)) ratio = paired_ratio(result, index, *plain);
   ojson reps = ojson::array();
   for (const RepetitionResult& r : c.repetitions) reps.push_back(repetition_json(r));
-  return {
+  ojson out = {
       {"label", c.label},
       {"net", c.net_name},
       {"method", method_name(c.key.method)},
@@ -123,6 +124,9 @@ ojson case_json(const RunResult& result, std::size_t index) {
       {"ratio_vs_plain", json_number(ratio)},
       {"repetitions", std::move(reps)},
   };
+  // Only TC-SB has TreeCut operations; the key stays absent elsewhere (and in results written before it existed).
+  if (c.key.method == Method::kTcsb) out["op_work"] = op_work_json(c.ops.samples);
+  return out;
 }
 
 ojson table1_json(const RunResult& result) {

@@ -47,7 +47,7 @@ void DbvtNodeCache::give(btDbvtNode* node) {
 }
 
 btDbvtNode* insert_leaf_beside(btDbvt& tree, DbvtNodeCache& nodes, btDbvtNode* beside, const btDbvtVolume& volume,
-                               void* data) {
+                               void* data, std::int32_t* ancestors) {
   btDbvtNode* leaf = nodes.take(nullptr);
   leaf->volume = volume;
   leaf->data = data;  // shares storage with childs[0]; childs[1] == nullptr marks a leaf
@@ -62,11 +62,14 @@ btDbvtNode* insert_leaf_beside(btDbvt& tree, DbvtNodeCache& nodes, btDbvtNode* b
     tree.m_root = pair;
   beside->parent = pair;
   leaf->parent = pair;
+  std::int32_t visited = 0;
   for (btDbvtNode* node = pair; (prev = node->parent) != nullptr; node = prev) {
+    ++visited;
     if (prev->volume.Contain(node->volume)) break;
     ::Merge(prev->childs[0]->volume, prev->childs[1]->volume, prev->volume);
   }
   ++tree.m_leaves;
+  if (ancestors != nullptr) *ancestors += visited;
   return leaf;
 }
 

@@ -12,6 +12,7 @@
 #include <BulletCollision/BroadphaseCollision/btDbvt.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace tcsb {
@@ -43,9 +44,10 @@ class DbvtNodeCache {
 };
 
 /// Inserts a new leaf (volume, data) as the sibling of the existing leaf `beside`, then enlarges ancestors' boxes
-/// until one already contains the new pair (as btDbvt's insertleaf does after its descent). Returns the leaf.
+/// until one already contains the new pair (as btDbvt's insertleaf does after its descent). Returns the leaf. When
+/// `ancestors` is given, adds to it the number of ancestor boxes the walk up visited (enlarged, or found containing).
 btDbvtNode* insert_leaf_beside(btDbvt& tree, DbvtNodeCache& nodes, btDbvtNode* beside, const btDbvtVolume& volume,
-                               void* data);
+                               void* data, std::int32_t* ancestors = nullptr);
 
 /// Removes a leaf without shrinking its ancestors' boxes (they stay valid, only looser).
 void remove_leaf_lazily(btDbvt& tree, DbvtNodeCache& nodes, btDbvtNode* leaf);

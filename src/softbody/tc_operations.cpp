@@ -128,15 +128,27 @@ std::int32_t TcSoftBody::new_op(OpKind kind, TreeId parent) {
 void TcSoftBody::begin_refine(TreeId p) {
   const std::int64_t t0 = now_ns();
   prefetch_footprint(p);
+  work_ = {.interior = neighbourhood_inside_net(tree(), p)};
   const LodNode& pn = tree().node(p);
   const std::int32_t op = new_op(OpKind::kRefine, p);
   const Node& parent_node = m_nodes[record(p).bullet];
   const btVector3 xp = parent_node.m_x, vp = parent_node.m_v;
+  ++work_.tree_records;  // p's LOD node, record and state
+  ++work_.nodes;         // p's position and velocity
   const Eigen::Matrix<double, 3, 2> affine = deformation(p);
+  if (settings_.placement != Placement::kRigid) {
+    // local_affine_fit (const, also used outside operations) visits each link of p, its other endpoint's record
+    // and its Bullet node.
+    const int fitted = incidence_[static_cast<std::size_t>(p)].size();
+    work_.links += fitted;
+    work_.tree_records += fitted;
+    work_.nodes += fitted;
+  }
   // Children take the parent's velocity and half their mass; the parent keeps the other half. Total mass and
   // linear momentum are unchanged.
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
+    ++work_.tree_records;  // c's LOD node, record and state
     record(c).sim_mass = 0.5 * tree().node(c).mass;
     add_node(c, place_child(p, c, xp, affine), vp, p);
     state_[static_cast<std::size_t>(c)] = CutState::kArriving;
@@ -158,8 +170,9 @@ void TcSoftBody::begin_refine(TreeId p) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     // Children connect to each other at full strength (not blended) and to the committed neighbours touching
     // their block — the nearest of the parent's neighbours — fading in.
+    ++work_.tree_records;  // the walk reads c's LOD node; each membership probe counts one more
     for_each_cut_neighbour(
-        tree(), c, [this](TreeId n) { return committed(n); },
+        tree(), c, [this](TreeId n) { return probe_committed(n); },
         [&](TreeId n) {
           if (is_child(pn, n)) {
             if (c < n) add_link(c, n, LinkRole::kSteady, -1);
@@ -175,14 +188,18 @@ void TcSoftBody::begin_refine(TreeId p) {
 void TcSoftBody::begin_coarse(TreeId p) {
   const std::int64_t t0 = now_ns();
   prefetch_footprint(p);
+  work_ = {.interior = neighbourhood_inside_net(tree(), p)};
   const LodNode& pn = tree().node(p);
   const std::int32_t op = new_op(OpKind::kCoarse, p);
+  ++work_.tree_records;  // p's LOD node, record and state
   // The parent appears at its children's centre of mass with their mean velocity, carrying half their mass.
   Eigen::Vector3d weighted_x = Eigen::Vector3d::Zero(), momentum = Eigen::Vector3d::Zero();
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     const Node& n = m_nodes[record(c).bullet];
     const double m = tree().node(c).mass;
+    ++work_.tree_records;  // c's LOD node, record, state and incidence list
+    ++work_.nodes;         // c's position and velocity
     weighted_x += m * to_eigen(n.m_x);
     momentum += m * to_eigen(n.m_v);
   }
@@ -211,8 +228,9 @@ void TcSoftBody::begin_coarse(TreeId p) {
       refresh_link_constant(li);
     }
   }
+  ++work_.tree_records;  // the walk reads p's LOD node; each membership probe counts one more
   for_each_cut_neighbour(
-      tree(), p, [this](TreeId n) { return committed(n); },
+      tree(), p, [this](TreeId n) { return probe_committed(n); },
       [&](TreeId n) { add_link(p, n, LinkRole::kFadeIn, op); });
   for (int i = 0; i < pn.child_count; ++i) add_link(p, pn.children[static_cast<std::size_t>(i)], LinkRole::kTether, op);
   emit(OpKind::kCoarse, t1 - t0, now_ns() - t1);
@@ -262,6 +280,8 @@ void TcSoftBody::end_refine(const Op& op) {
   const TreeId p = op.parent;
   const LodNode& pn = tree().node(p);
   prefetch_link_removals(std::span<const TreeId>(&p, 1));
+  work_ = {.interior = neighbourhood_inside_net(tree(), p)};
+  ++work_.tree_records;  // p's LOD node, record and incidence list
   while (incidence_[static_cast<std::size_t>(p)].size() > 0)  // faded-out links and tethers
     remove_link(incidence_[static_cast<std::size_t>(p)][0]);
   for (int i = 0; i < pn.child_count; ++i) make_faded_in_links_steady(pn.children[static_cast<std::size_t>(i)]);
@@ -269,9 +289,12 @@ void TcSoftBody::end_refine(const Op& op) {
 
   // The parent's half of the mass and its momentum go to the children in proportion to their masses.
   const Eigen::Vector3d vp = to_eigen(m_nodes[record(p).bullet].m_v);
+  ++work_.nodes;  // p's velocity
   const double parent_share = record(p).sim_mass / pn.mass;
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
+    ++work_.tree_records;  // c's LOD node and record
+    ++work_.nodes;         // c's velocity
     const double full = tree().node(c).mass;
     Node& n = m_nodes[record(c).bullet];
     if (!tree().node(c).pinned())
@@ -291,8 +314,11 @@ void TcSoftBody::end_coarse(const Op& op) {
   const TreeId p = op.parent;
   const LodNode& pn = tree().node(p);
   prefetch_link_removals(std::span<const TreeId>(pn.children.data(), static_cast<std::size_t>(pn.child_count)));
+  work_ = {.interior = neighbourhood_inside_net(tree(), p)};
+  ++work_.tree_records;  // p's LOD node and record
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
+    ++work_.tree_records;  // c's incidence list and record
     while (incidence_[static_cast<std::size_t>(c)].size() > 0)  // faded-out, doomed and tether links
       remove_link(incidence_[static_cast<std::size_t>(c)][0]);
   }
@@ -301,9 +327,11 @@ void TcSoftBody::end_coarse(const Op& op) {
 
   // The children's halves of the mass and their momentum go to the parent.
   Node& parent_node = m_nodes[record(p).bullet];
+  ++work_.nodes;  // p's velocity
   Eigen::Vector3d momentum = record(p).sim_mass * to_eigen(parent_node.m_v);
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
+    ++work_.nodes;  // c's velocity
     momentum += record(c).sim_mass * to_eigen(m_nodes[record(c).bullet].m_v);
   }
   if (!pn.pinned()) parent_node.m_v = to_bullet(momentum / pn.mass);
@@ -319,6 +347,7 @@ void TcSoftBody::end_coarse(const Op& op) {
 void TcSoftBody::make_faded_in_links_steady(TreeId id) {
   for (std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
     CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
+    ++work_.links;
     if (meta.role == LinkRole::kFadeIn) meta = {meta.a, meta.b, LinkRole::kSteady, -1};
   }
 }
@@ -339,7 +368,7 @@ void TcSoftBody::retire_from_cut(TreeId id) {
 void TcSoftBody::emit(OpKind kind, std::int64_t node_ns, std::int64_t link_ns) {
   if (sink_ == nullptr) return;
   sink_->record({kind, static_cast<std::int32_t>(node_ns), static_cast<std::int32_t>(link_ns), m_nodes.size(),
-                 m_links.size()});
+                 m_links.size(), work_});
 }
 
 }  // namespace tcsb

@@ -107,9 +107,13 @@ int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, Tree
   added.m_material = m_materials[0];
   btDbvtNode* beside_leaf = m_nodes[record(beside).bullet].m_leaf;
   added.m_leaf = insert_leaf_beside(m_ndbvt, dbvt_nodes_, beside_leaf,
-                                    btDbvtVolume::FromCR(x, getCollisionShape()->getMargin()), &added);
+                                    btDbvtVolume::FromCR(x, getCollisionShape()->getMargin()), &added,
+                                    &work_.dbvt_ancestors);
   tree_of_.push_back(id);
   set_bullet_index(id, index);
+  work_.nodes += 2;         // the appended node, and the node beside whose leaf it goes
+  work_.tree_records += 2;  // id's and beside's
+  ++work_.dbvt_leaves;
   return index;
 }
 
@@ -118,8 +122,12 @@ void TcSoftBody::remove_node(TreeId id) {
   if (incidence_[static_cast<std::size_t>(id)].size() != 0)
     throw std::logic_error("TcSoftBody::remove_node: node still has links");
   remove_leaf_lazily(m_ndbvt, dbvt_nodes_, m_nodes[k].m_leaf);
+  ++work_.nodes;
+  ++work_.tree_records;
+  ++work_.dbvt_leaves;
   const int last = m_nodes.size() - 1;
   if (k != last) {
+    ++work_.relocation_nodes;  // the last node, copied into the hole: its leaf, Bullet index and tree entry
     // Swap-with-last: the moved node's leaf and incident links are re-pointed, O(degree).
     Node* from = &m_nodes[last];
     m_nodes[k] = m_nodes[last];
@@ -127,6 +135,7 @@ void TcSoftBody::remove_node(TreeId id) {
     to->m_leaf->data = to;
     const TreeId moved = tree_of_[static_cast<std::size_t>(last)];
     for (std::int32_t li : incidence_[static_cast<std::size_t>(moved)]) {
+      ++work_.relocation_links;
       Link& l = m_links[li];
       if (l.m_n[0] == from) l.m_n[0] = to;
       if (l.m_n[1] == from) l.m_n[1] = to;
@@ -162,7 +171,9 @@ int TcSoftBody::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
   link_meta_.push_back({a, b, role, op});
   incidence_[static_cast<std::size_t>(a)].add(index);
   incidence_[static_cast<std::size_t>(b)].add(index);
-  refresh_link_constant(index);
+  write_link_constant(index);
+  ++work_.links;
+  work_.tree_records += 2;  // both endpoints: records read, incidence lists written
   return index;
 }
 
@@ -170,8 +181,11 @@ void TcSoftBody::remove_link(int link) {
   const CutLink meta = link_meta_[static_cast<std::size_t>(link)];
   incidence_[static_cast<std::size_t>(meta.a)].remove(link);
   incidence_[static_cast<std::size_t>(meta.b)].remove(link);
+  ++work_.links;
+  work_.tree_records += 2;
   const int last = m_links.size() - 1;
   if (link != last) {
+    ++work_.relocation_links;  // the last link, copied into the hole; its endpoints' incidence entries re-pointed
     // Swap-with-last: Bullet keeps no pointer to links, only our incidence lists name the moved one.
     m_links[link] = m_links[last];
     link_meta_[static_cast<std::size_t>(link)] = link_meta_[static_cast<std::size_t>(last)];
@@ -184,6 +198,8 @@ void TcSoftBody::remove_link(int link) {
 }
 
 void TcSoftBody::set_simulated_mass(TreeId id, double mass) {
+  ++work_.nodes;
+  ++work_.tree_records;
   NodeRecord& r = record(id);
   r.sim_mass = mass;
   r.inv_mass = m_nodes[r.bullet].m_im = inverse_mass(id, mass);
@@ -209,6 +225,12 @@ double TcSoftBody::arrival_weight(TreeId id) const {
 }
 
 void TcSoftBody::refresh_link_constant(int link) {
+  ++work_.links;
+  work_.tree_records += 2;  // both endpoints' records (inverse masses)
+  write_link_constant(link);
+}
+
+void TcSoftBody::write_link_constant(int link) {
   Link& l = m_links[link];
   const CutLink& meta = link_meta_[static_cast<std::size_t>(link)];
   // Bullet's updateLinkConstants expression, (m_n[0]->m_im + m_n[1]->m_im) / m_material->m_kLST, read from where it

@@ -200,6 +200,9 @@ class TcSoftBody : public btSoftBody {
   const NodeRecord& record(TreeId id) const { return record_[static_cast<std::size_t>(id)]; }
   /// Bullet's inverse mass for carrying `mass`: 0 when the node is pinned.
   btScalar inverse_mass(TreeId id, double mass) const;
+  /// Writes a link's constant from its endpoints' inverse masses and its blend weight (counts nothing).
+  void write_link_constant(int link);
+  /// write_link_constant, counted as operation work.
   void refresh_link_constant(int link);
   void refresh_incident_constants(TreeId id);
   double blend_alpha(const CutLink& meta) const;
@@ -223,6 +226,11 @@ class TcSoftBody : public btSoftBody {
   /// incidence lists, and the incidence lists of the links at the end of the array that the swap-with-last removals
   /// will move (tc_prefetch.cpp). No effect on results; O(links removed).
   void prefetch_link_removals(std::span<const TreeId> ids) const;
+  /// committed(id), counted as one tree record probed: the membership test an operation's neighbour walk makes.
+  bool probe_committed(TreeId id) {
+    ++work_.tree_records;
+    return committed(id);
+  }
   void emit(OpKind kind, std::int64_t node_ns, std::int64_t link_ns);
   btVector3 place_child(TreeId parent, TreeId child, const btVector3& parent_x,
                         const Eigen::Matrix<double, 3, 2>& deformation) const;
@@ -244,6 +252,9 @@ class TcSoftBody : public btSoftBody {
   int committed_count_ = 0;
   int link_reallocations_ = 0;
   OpSink* sink_ = nullptr;
+  /// The running operation's work (OpWork's definitions): zeroed when an operation starts, emitted when it ends.
+  /// Primitives count into it whenever they run; between operations (the blend ramp) nothing reads it.
+  OpWork work_;
 };
 
 }  // namespace tcsb

@@ -7,6 +7,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "net/net.h"
@@ -317,6 +318,43 @@ TEST(CutAdjacency, MissingSideIsUnbalanced) {
   EXPECT_FALSE(neighbours(tree, net->index(3, 4), cut).balanced);
   EXPECT_FALSE(neighbours(tree, net->index(4, 5), cut).balanced);
   EXPECT_TRUE(neighbours(tree, net->index(1, 1), cut).balanced);
+}
+
+/// Whether a block is whole: it covers 2^level x 2^level leaves (partial blocks lie at the far borders).
+bool whole(const LodNode& n) {
+  const int side = 1 << n.level;
+  return n.leaf_x1 - n.leaf_x0 == side && n.leaf_y1 - n.leaf_y0 == side;
+}
+
+TEST(NeighbourhoodInsideNet, IsTheBlockAndItsEightNeighboursOfItsLevelAllWhole) {
+  for (const auto& [w, h] : {std::pair{9, 9}, std::pair{16, 16}, std::pair{33, 17}, std::pair{45, 45}}) {
+    const auto net = make_net(w, h);
+    const LodTree& tree = net->lod();
+    for (TreeId id = 0; id < static_cast<TreeId>(tree.size()); ++id) {
+      const LodNode& n = tree.node(id);
+      bool expected = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const TreeId m = tree.at(n.level, n.gx + dx, n.gy + dy);
+          expected = expected && m != kNoTreeNode && whole(tree.node(m));
+        }
+      EXPECT_EQ(neighbourhood_inside_net(tree, id), expected) << w << "x" << h << " node " << id;
+    }
+  }
+}
+
+TEST(NeighbourhoodInsideNet, OnANineByNineNet) {
+  const auto net = make_net(9, 9);
+  const LodTree& tree = net->lod();
+  EXPECT_FALSE(neighbourhood_inside_net(tree, tree.at(0, 0, 4)));  // on the border
+  EXPECT_TRUE(neighbourhood_inside_net(tree, tree.at(0, 1, 4)));
+  EXPECT_TRUE(neighbourhood_inside_net(tree, tree.at(0, 7, 7)));
+  EXPECT_FALSE(neighbourhood_inside_net(tree, tree.at(1, 0, 1)));  // leaves 0-1: nothing to the left
+  EXPECT_TRUE(neighbourhood_inside_net(tree, tree.at(1, 1, 1)));   // leaves 2-3, neighbours 0-1 and 4-5
+  EXPECT_TRUE(neighbourhood_inside_net(tree, tree.at(1, 2, 2)));   // leaves 4-5, neighbours 2-3 and 6-7
+  EXPECT_FALSE(neighbourhood_inside_net(tree, tree.at(1, 3, 2)));  // its right neighbour is leaf 8 alone
+  EXPECT_FALSE(neighbourhood_inside_net(tree, tree.at(2, 1, 1)));  // leaves 4-7: the block to its right is partial
+  EXPECT_FALSE(neighbourhood_inside_net(tree, tree.root()));
 }
 
 }  // namespace

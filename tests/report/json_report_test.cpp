@@ -83,7 +83,8 @@ TEST(NativeJson, CaseAndRepetitionKeys) {
   EXPECT_EQ(keys(c), (std::vector<std::string>{"label", "net", "method", "compression", "target_nodes", "net_nodes",
                                                "net_links", "status", "mean_nodes", "mean_links",
                                                "mean_interpolations", "mean_feedback_ms", "mean_feedback_total_ms",
-                                               "step_ms", "ratio_vs_plain", "repetitions"}));
+                                               "step_ms", "ratio_vs_plain", "repetitions", "op_work"}));
+  EXPECT_FALSE(doc["cases"][0].contains("op_work"));  // plain: no TreeCut operations
   EXPECT_EQ(c["label"], "n0/tcsb@0.3");
   EXPECT_EQ(c["compression"], 0.3);
   EXPECT_TRUE(doc["cases"][0]["compression"].is_null());
@@ -97,6 +98,32 @@ TEST(NativeJson, CaseAndRepetitionKeys) {
                                       "mean_feedback_ms", "mean_feedback_total_ms", "operations", "final_state_hash",
                                       "build_ms"}));
   EXPECT_TRUE(c["repetitions"][0]["diverged_step"].is_null());
+}
+
+TEST(NativeJson, OpWorkPerOperationAndCount) {
+  RunResult r = small_run();
+  OpSample a = op(OpKind::kCoarse, 1000, 500, 30, 60), b = a;
+  a.work = {.nodes = 10, .links = 20, .tree_records = 60, .dbvt_leaves = 1, .dbvt_ancestors = 3, .interior = true};
+  b.work = {.nodes = 8, .links = 15, .tree_records = 50, .dbvt_leaves = 1, .dbvt_ancestors = 0};
+  r.cases[1].ops.samples = {a, b, op(OpKind::kRefine, 1000, 500, 30, 60)};
+  const ojson work = native_json(r)["cases"][1]["op_work"];
+  EXPECT_EQ(keys(work), (std::vector<std::string>{"refine", "end-refine", "coarse", "end-coarse"}));
+  EXPECT_EQ(keys(work["coarse"]),
+            (std::vector<std::string>{"calls", "interior_calls", "nodes", "links", "tree_records", "dbvt_leaves",
+                                      "relocation_nodes", "relocation_links", "dbvt_ancestors"}));
+  EXPECT_EQ(keys(work["coarse"]["links"]), (std::vector<std::string>{"max", "mean", "interior_mean"}));
+  EXPECT_EQ(work["coarse"]["calls"], 2);
+  EXPECT_EQ(work["coarse"]["interior_calls"], 1);
+  EXPECT_EQ(work["coarse"]["links"]["max"], 20);
+  EXPECT_EQ(work["coarse"]["links"]["mean"], 17.5);
+  EXPECT_EQ(work["coarse"]["links"]["interior_mean"], 20);  // a alone
+  EXPECT_TRUE(work["refine"]["links"]["interior_mean"].is_null());  // called, but never in the interior
+  EXPECT_EQ(work["coarse"]["dbvt_ancestors"]["mean"], 1.5);
+  EXPECT_EQ(work["refine"]["calls"], 1);
+  EXPECT_EQ(work["refine"]["nodes"]["max"], 0);
+  EXPECT_EQ(work["end-refine"]["calls"], 0);  // never called: null, not a misleading 0
+  EXPECT_TRUE(work["end-refine"]["nodes"]["max"].is_null());
+  EXPECT_TRUE(work["end-refine"]["nodes"]["mean"].is_null());
 }
 
 TEST(NativeJson, TablesAndFits) {

@@ -90,6 +90,18 @@ TEST(ResultSchema, AReproductionVerdictIsOneOfThree) {
   EXPECT_NE(p[1].find("reproduction.claims[0].verdict"), std::string::npos) << p[1];
 }
 
+TEST(ResultSchema, OpWorkIsOptionalButPinnedWhenPresent) {
+  ojson doc = native_json(run_with_cases());
+  ASSERT_TRUE(doc["cases"][1].contains("op_work"));
+  ojson without = doc;
+  without["cases"][1].erase("op_work");  // a result written before op_work existed
+  EXPECT_EQ(problems(without), Lines{});
+  doc["cases"][1]["op_work"]["refine"].erase("links");
+  doc["cases"][1]["op_work"]["coarse"]["nodes"]["max"] = -1;
+  doc["cases"][1]["op_work"]["end-coarse"].erase("relocation_links");
+  EXPECT_EQ(problems(doc).size(), 3u);
+}
+
 TEST(ResultSchema, RejectsWhatIsNotANativeResult) {
   ojson doc = native_json(run_with_cases());
   doc["schema_version"] = 1;
