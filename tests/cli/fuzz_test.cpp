@@ -1,0 +1,358 @@
+// Structure-aware fuzzing of everything tcsb reads from a file: suites (`validate`, `run`) and result files
+// (`compare`, `export`). Each case takes a valid document, applies one to three seeded mutations — to its parsed
+// structure (a value deleted, retyped, replaced by an extreme, a key renamed, an array shuffled) or to its text (cut
+// short, NUL and garbage appended, a number overflowing to infinity, nesting thousands deep, a byte flipped) — and
+// runs the real executable on it. Whatever the input, tcsb must end in one of two ways:
+//   - exit 0 (or 1 where the command judges: compare), with well-formed output, or
+//   - exit 2 with exactly one line on stderr, and no output file left behind (nor any stray temporary file);
+// never a signal, a hang, exit 3 ("internal error") or another code. The generator is seeded, so a failure names
+// the case that reproduces it; the case count is TCSB_FUZZ_CASES (fewer under the sanitizers, where each process
+// start costs more).
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <csignal>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cli_fixture.h"
+
+#ifndef TCSB_FUZZ_CASES
+#define TCSB_FUZZ_CASES 1000
+#endif
+
+namespace {
+
+using namespace tcsb::cli_test;
+using ojson = nlohmann::ordered_json;
+
+/// Longest any single case may run before it counts as a hang (a run of the 9x9 suite takes well under a second).
+constexpr unsigned kCaseTimeoutS = 30;
+/// Failures listed in full before the rest are only counted.
+constexpr int kFailuresShown = 8;
+
+/// How one process ended.
+struct Ended {
+  int exit_code = -1;  ///< -1 when killed by a signal
+  int signal = 0;      ///< the signal, 0 when it exited
+  std::string err;     ///< its stderr
+};
+
+/// Runs TCSB_BINARY with `args` in `dir` (no shell, so no quoting can go wrong), stdout and stderr to files there,
+/// killed by SIGALRM after kCaseTimeoutS.
+Ended run_tcsb(const fs::path& dir, const std::vector<std::string>& args) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (::chdir(dir.c_str()) != 0) ::_exit(126);
+    const int out = ::open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = ::open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (out < 0 || err < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
+    std::vector<char*> argv{const_cast<char*>(TCSB_BINARY)};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::alarm(kCaseTimeoutS);  // survives exec: a hang ends as SIGALRM
+    ::execv(TCSB_BINARY, argv.data());
+    ::_exit(127);
+  }
+  Ended e;
+  int status = 0;
+  if (pid < 0 || ::waitpid(pid, &status, 0) != pid) return e;
+  if (WIFEXITED(status)) e.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) e.signal = WTERMSIG(status);
+  e.err = read_file(dir / "stderr.txt");
+  return e;
+}
+
+/// Seeded mutations of JSON documents, structural and textual.
+class Mutator {
+ public:
+  /// `extremes`: whether numbers may become huge (false for documents that are run, not only parsed: a suite asking
+  /// for a billion warm-up steps is valid and would simply run for hours).
+  Mutator(std::uint64_t seed, bool extremes) : rng_(seed), extremes_(extremes) {}
+
+  /// `doc` with 1-3 mutations, as text; `log` says which, for the failure message.
+  std::string mutate(const ojson& doc, std::string& log) {
+    ojson j = doc;
+    const int structural = pick(0, 3);
+    for (int i = 0; i < structural; ++i) mutate_structure(j, log);
+    std::string text = j.dump(2);
+    if (structural == 0 || chance(0.25)) mutate_text(text, log);
+    return text;
+  }
+
+ private:
+  int pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  bool chance(double p) { return std::bernoulli_distribution(p)(rng_); }
+  template <typename T>
+  const T& one_of(const std::vector<T>& items) {
+    return items[static_cast<std::size_t>(pick(0, static_cast<int>(items.size()) - 1))];
+  }
+
+  /// Every value's JSON pointer, the root included.
+  static void pointers(const ojson& j, const ojson::json_pointer& at, std::vector<ojson::json_pointer>& out) {
+    out.push_back(at);
+    if (j.is_object()) {
+      for (const auto& [key, value] : j.items()) pointers(value, at / key, out);
+    } else if (j.is_array()) {
+      for (std::size_t i = 0; i < j.size(); ++i) pointers(j[i], at / i, out);
+    }
+  }
+
+  ojson replacement() {
+    static const std::vector<ojson> kTame = {
+        nullptr, true, false, 0, -1, 1, 2, 0.5, -0.5, 1e-300, "", "x", ojson::array(), ojson::object(),
+        ojson::array({ojson::array()}), "\x1b[31mred\x07\r\nnext", std::string(3000, 'k')};
+    static const std::vector<ojson> kExtreme = {
+        2147483647, 2147483648LL, -2147483649LL, 9223372036854775807LL, 18446744073709551615ULL, 1e308, -1e308,
+        4.9e-324, 1e15, 123456789.5};
+    return extremes_ && chance(0.4) ? one_of(kExtreme) : one_of(kTame);
+  }
+
+  void mutate_structure(ojson& j, std::string& log) {
+    std::vector<ojson::json_pointer> all;
+    pointers(j, ojson::json_pointer(), all);
+    const ojson::json_pointer at = one_of(all);
+    ojson& v = j[at];
+    const std::string where = at.to_string().empty() ? "/" : at.to_string();
+    switch (pick(0, 7)) {
+      case 0:  // delete (the root cannot be: replace it instead)
+        if (!at.empty()) {
+          ojson& parent = j[at.parent_pointer()];
+          if (parent.is_object()) {
+            parent.erase(at.back());
+          } else {
+            parent.erase(static_cast<std::size_t>(std::stoul(at.back())));
+          }
+          log += " delete " + where + ";";
+          return;
+        }
+        [[fallthrough]];
+      case 1:
+      case 2:
+        v = replacement();
+        log += " replace " + where + " with " + v.dump().substr(0, 40) + ";";
+        return;
+      case 3:  // scale a number
+        if (v.is_number()) {
+          const std::vector<double> factors = extremes_ ? std::vector<double>{-1, 0, 10, 1e6, 1e-6, 1.0000001}
+                                                        : std::vector<double>{-1, 0, 0.5, 1.0000001};
+          const double f = one_of(factors);
+          v = v.get<double>() * f;
+          log += " scale " + where + " by " + std::to_string(f) + ";";
+          return;
+        }
+        [[fallthrough]];
+      case 4:  // an unknown key, or an extra element
+        if (v.is_object()) {
+          v["zz_unknown_" + std::to_string(pick(0, 99))] = replacement();
+          log += " add key to " + where + ";";
+        } else if (v.is_array()) {
+          v.push_back(v.empty() ? replacement() : v[0]);
+          log += " append to " + where + ";";
+        } else {
+          v = ojson::array({v});
+          log += " wrap " + where + " in an array;";
+        }
+        return;
+      case 5:  // rename a key
+        if (v.is_object() && !v.empty()) {
+          const std::string key = v.begin().key();
+          ojson moved = v[key];
+          v.erase(key);
+          v[key + "\t\x01"] = moved;
+          log += " rename " + where + "/" + key + ";";
+          return;
+        }
+        [[fallthrough]];
+      case 6:  // reorder an array, or retype a container
+        if (v.is_array() && v.size() > 1) {
+          std::shuffle(v.begin(), v.end(), rng_);
+          log += " shuffle " + where + ";";
+        } else if (v.is_object()) {
+          ojson as_array = ojson::array();
+          for (const auto& item : v.items()) as_array.push_back(item.value());
+          v = as_array;
+          log += " object->array " + where + ";";
+        } else {
+          v = v.dump();
+          log += " stringify " + where + ";";
+        }
+        return;
+      default:  // the same value twice in a row: duplicate an array element in place
+        if (v.is_array() && !v.empty()) {
+          v.insert(v.begin(), v[0]);
+          log += " duplicate first element of " + where + ";";
+        } else {
+          v = nullptr;
+          log += " null " + where + ";";
+        }
+        return;
+    }
+  }
+
+  void mutate_text(std::string& text, std::string& log) {
+    switch (pick(0, 5)) {
+      case 0: {
+        const std::size_t cut = static_cast<std::size_t>(pick(0, static_cast<int>(text.size())));
+        text.resize(cut);
+        log += " cut at byte " + std::to_string(cut) + ";";
+        return;
+      }
+      case 1:
+        text += std::string("\0garbage{[\"", 11);
+        log += " NUL and garbage appended;";
+        return;
+      case 2: {  // a number that overflows a double
+        const std::size_t digit = text.find_first_of("0123456789");
+        if (digit != std::string::npos) text.replace(digit, 1, chance(0.5) ? "1e309" : "-1e309");
+        log += " a number overflows to infinity;";
+        return;
+      }
+      case 3: {  // nesting far deeper than any parser's stack should allow
+        const int depth = chance(0.5) ? 100000 : pick(100, 5000);
+        text = std::string(static_cast<std::size_t>(depth), '[') + text + std::string(static_cast<std::size_t>(depth), ']');
+        log += " nested " + std::to_string(depth) + " deep;";
+        return;
+      }
+      case 4: {
+        if (text.empty()) return;
+        const std::size_t at = static_cast<std::size_t>(pick(0, static_cast<int>(text.size()) - 1));
+        text[at] = static_cast<char>(pick(0, 255));
+        log += " byte " + std::to_string(at) + " flipped;";
+        return;
+      }
+      default:
+        text = "\xef\xbb\xbf" + text;  // a byte-order mark
+        log += " BOM prefixed;";
+        return;
+    }
+  }
+
+  std::mt19937_64 rng_;
+  bool extremes_;
+};
+
+/// What the files in the case directory may be after a case: anything else is a stray file tcsb left behind.
+bool only_expected_files(const fs::path& dir, const std::set<std::string>& allowed, std::string& stray) {
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (!allowed.count(name)) {
+      stray = name;
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Whether `path` holds a JSON object with "tool": "tcsb".
+bool is_tcsb_document(const fs::path& path) {
+  try {
+    const ojson doc = ojson::parse(read_file(path));
+    return doc.is_object() && doc.value("tool", "") == "tcsb";
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+class Fuzz : public Cli {
+ protected:
+  /// Checks one case's ending; `judges`: exit 1 is a legitimate verdict of this command. Returns "" when fine.
+  static std::string problem(const Ended& e, bool judges) {
+    if (e.signal != 0) return "killed by signal " + std::to_string(e.signal) + (e.signal == SIGALRM ? " (hang)" : "");
+    if (e.exit_code == 0 || (judges && e.exit_code == 1)) return "";
+    if (e.exit_code != 2) return "exit " + std::to_string(e.exit_code) + ": " + e.err.substr(0, 300);
+    if (count_lines(e.err) != 1 || e.err.rfind("tcsb: error: ", 0) != 0)
+      return "exit 2 without exactly one error line: " + e.err.substr(0, 300);
+    return "";
+  }
+
+  void record(const std::string& what, int index, const std::string& log, const std::string& why) {
+    ++failures_;
+    if (failures_ <= kFailuresShown) ADD_FAILURE() << what << " case " << index << ":" << log << " -> " << why;
+  }
+
+  void TearDown() override {
+    if (failures_ > kFailuresShown) ADD_FAILURE() << failures_ - kFailuresShown << " more failing cases";
+    Cli::TearDown();
+  }
+
+  int failures_ = 0;
+};
+
+/// The bundled suites and the CLI tests' 9x9 suite, as parsed documents.
+std::vector<ojson> suite_corpus() {
+  std::vector<ojson> corpus{ojson::parse(nine_by_nine_suite("fuzz", 2))};
+  for (const auto& entry : fs::directory_iterator(fs::path(TCSB_SOURCE_DIR) / "suites")) {
+    if (entry.path().extension() == ".json") corpus.push_back(ojson::parse(read_file(entry.path())));
+  }
+  return corpus;
+}
+
+TEST_F(Fuzz, ValidateParsesMutatedSuitesOrRefusesThemInOneLine) {
+  const std::vector<ojson> corpus = suite_corpus();
+  Mutator mutator(20261124, /*extremes=*/true);
+  const int cases = TCSB_FUZZ_CASES;
+  for (int i = 0; i < cases; ++i) {
+    std::string log;
+    write_file(dir_ / "suite.json", mutator.mutate(corpus[static_cast<std::size_t>(i) % corpus.size()], log));
+    const Ended e = run_tcsb(dir_, {"validate", "suite.json"});
+    if (const std::string why = problem(e, /*judges=*/false); !why.empty()) record("validate", i, log, why);
+  }
+}
+
+TEST_F(Fuzz, RunWritesAResultOrRefusesAndWritesNothing) {
+  const ojson suite = ojson::parse(nine_by_nine_suite("fuzz", 2));
+  Mutator mutator(424242, /*extremes=*/false);
+  const int cases = TCSB_FUZZ_CASES / 5;  // each one runs a simulation
+  for (int i = 0; i < cases; ++i) {
+    std::string log;
+    write_file(dir_ / "suite.json", mutator.mutate(suite, log));
+    fs::remove(dir_ / "out.json");
+    const Ended e = run_tcsb(dir_, {"run", "suite.json", "--quiet", "--out", "out.json"});
+    std::string why = problem(e, /*judges=*/false);
+    std::string stray;
+    if (why.empty() && e.exit_code == 0 && !is_tcsb_document(dir_ / "out.json")) why = "exit 0 without a result";
+    if (why.empty() && e.exit_code != 0 && fs::exists(dir_ / "out.json")) why = "refused, but wrote out.json";
+    if (why.empty() && !only_expected_files(dir_, {"suite.json", "out.json", "stdout.txt", "stderr.txt"}, stray))
+      why = "left a stray file: " + stray;
+    if (!why.empty()) record("run", i, log, why);
+  }
+}
+
+TEST_F(Fuzz, CompareAndExportReadMutatedResultsOrRefuseThemInOneLine) {
+  write_file(dir_ / "suite.json", nine_by_nine_suite("fuzz", 2));
+  const Ended made = run_tcsb(dir_, {"run", "suite.json", "--quiet", "--out", "base.json"});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  const ojson base = ojson::parse(read_file(dir_ / "base.json"));
+  Mutator mutator(777, /*extremes=*/true);
+  const std::set<std::string> allowed{"suite.json", "base.json", "new.json", "out.json", "stdout.txt", "stderr.txt"};
+  const int cases = TCSB_FUZZ_CASES / 2;  // each one starts the executable twice
+  for (int i = 0; i < cases; ++i) {
+    std::string log;
+    write_file(dir_ / "new.json", mutator.mutate(base, log));
+    // Both orders: a broken baseline must be refused as surely as a broken new run.
+    const std::vector<std::string> compare =
+        i % 2 == 0 ? std::vector<std::string>{"compare", "base.json", "new.json"}
+                   : std::vector<std::string>{"compare", "new.json", "base.json"};
+    // compare prints its Markdown summary on stderr when it decides, so only its refusals must be one line.
+    if (const std::string why = problem(run_tcsb(dir_, compare), /*judges=*/true); !why.empty())
+      record("compare", i, log, why);
+
+    fs::remove(dir_ / "out.json");
+    const Ended e = run_tcsb(dir_, {"export", "new.json", "--format", "gbench", "--out", "out.json"});
+    std::string why = problem(e, /*judges=*/false);
+    std::string stray;
+    if (why.empty() && e.exit_code == 0 && !fs::exists(dir_ / "out.json")) why = "exit 0 without output";
+    if (why.empty() && e.exit_code != 0 && fs::exists(dir_ / "out.json")) why = "refused, but wrote out.json";
+    if (why.empty() && !only_expected_files(dir_, allowed, stray)) why = "left a stray file: " + stray;
+    if (!why.empty()) record("export", i, log, why);
+  }
+}
+
+}  // namespace
