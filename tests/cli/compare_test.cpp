@@ -298,7 +298,8 @@ TEST_F(Compare, AnInfiniteTimeIsBadInput) {
   std::string text = next.dump(2);
   text.replace(text.find("\"INFINITE\""), 10, "1e400");
   write_file(dir_ / "new.json", text);
-  expect_bad_input(tcsb("compare base.json new.json"), "tcsb: error: new.json: not valid JSON: number overflow");
+  expect_bad_input(tcsb("compare base.json new.json"),
+                   "tcsb: error: new.json: cases[2].repetitions[4].mean_step_ms: not valid JSON: number overflow");
 }
 
 TEST_F(Compare, NegativeNodeCountsAreBadInput) {

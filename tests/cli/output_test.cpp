@@ -62,8 +62,11 @@ TEST_F(Output, AFullStdoutIsExit3ForEveryCommand) {
 
 TEST_F(Output, AFullOutOrSummaryFileIsExit3WithoutInternalError) {
   make_result();
+  // The gate decides only with 9 repetitions (fewer: exit 2 before any summary), so compare gets a run of its own.
+  write_file(dir_ / "gate.json", nine_by_nine_suite("gate", 9));
+  ASSERT_EQ(tcsb("run gate.json --quiet --out gated.json").exit_code, 0);
   for (const std::string args :
-       {"compare result.json result.json --summary /dev/full", "export result.json --format gbench --out /dev/full"}) {
+       {"compare gated.json gated.json --summary /dev/full", "export result.json --format gbench --out /dev/full"}) {
     const Outcome o = tcsb(args);
     EXPECT_EQ(o.exit_code, 3) << args << "\n" << o.err;
     EXPECT_NE(o.err.find("tcsb: error: cannot write /dev/full: No space left on device"), std::string::npos)
