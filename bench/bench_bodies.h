@@ -71,10 +71,10 @@ OpBody& op_body(int width);
 /// One finished run (one repetition) of a per-operation benchmark, for the flatness summary, which pools the
 /// repetitions of each benchmark and size.
 struct OpRun {
-  std::string op;          ///< benchmark name, e.g. "BM_Refine"
+  std::string op;  ///< benchmark name, e.g. "BM_Refine"
   int width = 0;
-  long long nodes = 0;     ///< Bullet nodes when it ran (the N of the fit)
-  std::vector<double> ns;  ///< each measured call
+  long long nodes = 0;                   ///< Bullet nodes when it ran (the N of the fit)
+  std::vector<double> ns;                ///< each measured call
   std::vector<double> node_ns, link_ns;  ///< the body's own split of each call (OpSample)
 };
 /// Every per-operation run of this process, in order.

@@ -30,8 +30,12 @@ namespace tcsb::bench {
 namespace {
 
 // Same order as OpKind, so a Timed indexes per-kind arrays.
-enum class Timed { kRefine = static_cast<int>(OpKind::kRefine), kEndRefine = static_cast<int>(OpKind::kEndRefine),
-                   kCoarse = static_cast<int>(OpKind::kCoarse), kEndCoarse = static_cast<int>(OpKind::kEndCoarse) };
+enum class Timed {
+  kRefine = static_cast<int>(OpKind::kRefine),
+  kEndRefine = static_cast<int>(OpKind::kEndRefine),
+  kCoarse = static_cast<int>(OpKind::kCoarse),
+  kEndCoarse = static_cast<int>(OpKind::kEndCoarse)
+};
 
 /// Runs `blend_steps` advance_blends() calls and returns the time of the last one, which ends the (only) operation
 /// in flight.

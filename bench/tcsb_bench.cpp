@@ -207,8 +207,8 @@ void print_summary() {
 
   std::fprintf(stderr, "\nPer-operation cost (ns, one call; N = Bullet nodes at the mixed cut; repetitions pooled, "
                        "rep medians = the range of their own medians)\n");
-  std::fprintf(stderr, "%-14s %6s %8s %4s %7s %9s %9s %9s %9s %9s %9s %9s %15s\n", "op", "width", "N", "reps",
-               "calls", "median", "mean", "p90", "p99", "max", "node_med", "link_med", "rep medians");
+  std::fprintf(stderr, "%-14s %6s %8s %4s %7s %9s %9s %9s %9s %9s %9s %9s %15s\n", "op", "width", "N", "reps", "calls",
+               "median", "mean", "p90", "p99", "max", "node_med", "link_med", "rep medians");
   for (const std::string& op : order)
     for (const SizeSummary& z : sizes[op])
       std::fprintf(stderr, "%-14s %6d %8lld %4d %7zu %9.0f %9.0f %9.0f %9.0f %9.0f %9.0f %9.0f %7.0f-%-7.0f\n",
@@ -237,8 +237,8 @@ void print_summary() {
     const double spread = fit.slope * (nmax - nmin);
     const double ratio = cost > 0 ? spread / cost : 0.0;
     const char* verdict = std::fabs(ratio) < 0.2 ? "flat" : (ratio > 0 ? "GROWS" : "falls");
-    std::fprintf(stderr, "%-14s %5zu %8.0f %8.0f %12.3e %12.1f %10.0f %7.1f%%  %s\n", op.c_str(), zs.size(), nmin,
-                 nmax, fit.slope, spread, cost, 100.0 * ratio, verdict);
+    std::fprintf(stderr, "%-14s %5zu %8.0f %8.0f %12.3e %12.1f %10.0f %7.1f%%  %s\n", op.c_str(), zs.size(), nmin, nmax,
+                 fit.slope, spread, cost, 100.0 * ratio, verdict);
   }
   // The median target is stated at 65x65.
   for (const std::string& op : order)

@@ -35,13 +35,13 @@ enum class Verdict {
 
 /// A claim checked against a measurement: `measured` compared to `expected` by `comparison` within `tolerance`.
 struct Claim {
-  std::string id;                          ///< stable identifier, e.g. "tcsb_30_vs_plain"
-  std::string description;                 ///< the claim in words, as the paper states it
-  Comparison comparison = Comparison::kAtMost;  ///< how measured is compared with expected
-  double expected = 0.0;                   ///< the claimed value
-  double tolerance = 0.0;                  ///< allowed slack, >= 0
+  std::string id;                                ///< stable identifier, e.g. "tcsb_30_vs_plain"
+  std::string description;                       ///< the claim in words, as the paper states it
+  Comparison comparison = Comparison::kAtMost;   ///< how measured is compared with expected
+  double expected = 0.0;                         ///< the claimed value
+  double tolerance = 0.0;                        ///< allowed slack, >= 0
   Evidence evidence = Evidence::kDeterministic;  ///< how the verdict is reached
-  std::optional<double> measured;          ///< nullopt when not measured (or diverged, or non-finite); then fails
+  std::optional<double> measured;                ///< nullopt when not measured (or diverged, or non-finite); then fails
   /// Where `measured` could lie had the run been repeated (a bootstrap interval over repetitions), when computed.
   std::optional<Interval> interval;
 };

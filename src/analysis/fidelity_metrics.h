@@ -10,8 +10,8 @@ namespace tcsb {
 
 /// Distances between a surface and the reference, node by node, in the units of the positions (metres).
 struct SurfaceError {
-  double rms = 0;           ///< sqrt(mean |x_i - ref_i|^2)
-  double max = 0;           ///< max |x_i - ref_i|
+  double rms = 0;  ///< sqrt(mean |x_i - ref_i|^2)
+  double max = 0;  ///< max |x_i - ref_i|
   /// sqrt(sum w_i |x_i - ref_i|^2 / sum w_i): the error where the weights (the reference's saliency) say it is
   /// seen. Equals rms when no weights are given or they sum to 0 (nothing salient: every node counts the same).
   double weighted_rms = 0;

@@ -42,8 +42,8 @@ LinearFit fit_linear(std::span<const double> x, std::span<const double> y) {
   const double ss_tot = (ys.array() - ys.mean()).matrix().squaredNorm();
   // With an intercept, SS_res <= SS_tot, so constant y leaves only rounding in SS_res: the line fits exactly.
   fit.r2 = ss_tot > 0.0 ? std::clamp(1.0 - ss_res / ss_tot, 0.0, 1.0) : 1.0;
-  fit.valid = std::isfinite(fit.slope) && std::isfinite(fit.intercept) && std::isfinite(ss_res) &&
-              std::isfinite(ss_tot);
+  fit.valid =
+      std::isfinite(fit.slope) && std::isfinite(fit.intercept) && std::isfinite(ss_res) && std::isfinite(ss_tot);
   if (!fit.valid) {
     // Only reachable on overflow (values near the limits of double); never hand non-finite numbers out.
     fit = LinearFit{};

@@ -10,12 +10,12 @@ namespace tcsb {
 
 /// Result of fit_linear; every number is finite, and meaningful only when `valid`.
 struct LinearFit {
-  bool valid = false;              ///< false if fewer than 2 points or all x equal (slope undefined)
-  double intercept = 0.0;          ///< a in y = a + b*x
-  double slope = 0.0;              ///< b in y = a + b*x
-  double r2 = 0.0;                 ///< 1 - SS_res/SS_tot; 1 when all y are equal (a line fits them exactly)
-  std::vector<double> residuals;   ///< y_i - (a + b*x_i), in input order (empty when not valid)
-  std::size_t points = 0;          ///< number of (x, y) pairs given
+  bool valid = false;             ///< false if fewer than 2 points or all x equal (slope undefined)
+  double intercept = 0.0;         ///< a in y = a + b*x
+  double slope = 0.0;             ///< b in y = a + b*x
+  double r2 = 0.0;                ///< 1 - SS_res/SS_tot; 1 when all y are equal (a line fits them exactly)
+  std::vector<double> residuals;  ///< y_i - (a + b*x_i), in input order (empty when not valid)
+  std::size_t points = 0;         ///< number of (x, y) pairs given
 };
 
 /// Least-squares line through (x_i, y_i). Throws std::invalid_argument if the sizes differ or a value is

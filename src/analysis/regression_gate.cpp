@@ -63,9 +63,12 @@ std::vector<TimingDecision> decide_timings(std::span<const TimingSamples> family
     const bool larger = *d.change >= 0.0;
     d.p_value = larger ? adj_larger[k] : adj_smaller[k];
     const bool significant = *d.p_value <= settings.alpha;
-    if (significant && larger && *d.change > settings.threshold) d.verdict = TimingVerdict::kRegressed;
-    else if (significant && !larger && -*d.change > settings.threshold) d.verdict = TimingVerdict::kImproved;
-    else d.verdict = TimingVerdict::kUnchanged;
+    if (significant && larger && *d.change > settings.threshold)
+      d.verdict = TimingVerdict::kRegressed;
+    else if (significant && !larger && -*d.change > settings.threshold)
+      d.verdict = TimingVerdict::kImproved;
+    else
+      d.verdict = TimingVerdict::kUnchanged;
   }
   return decisions;
 }

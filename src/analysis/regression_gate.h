@@ -38,7 +38,7 @@ struct TimingDecision {
   std::size_t base_count = 0, next_count = 0;  ///< samples on each side
   std::optional<double> base_median;           ///< nullopt for an empty sample
   std::optional<double> next_median;
-  std::optional<double> change;                ///< next median / base median - 1; nullopt when undefined
+  std::optional<double> change;  ///< next median / base median - 1; nullopt when undefined
   /// Holm-adjusted one-sided p-value in the direction of the change (larger: next > base, else next < base);
   /// compare it with alpha directly. nullopt when the metric is unreliable.
   std::optional<double> p_value;

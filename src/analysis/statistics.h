@@ -13,16 +13,16 @@ inline constexpr double kUnstableCv = 0.10;
 
 /// Summary of a sample of finite doubles; all zeros (count 0) for an empty sample.
 struct Summary {
-  std::size_t count = 0;   ///< number of values
-  double median = 0.0;     ///< 50th percentile
-  double mean = 0.0;       ///< arithmetic mean
-  double stddev = 0.0;     ///< sample standard deviation (n-1 denominator); 0 for n < 2
-  double cv = 0.0;         ///< stddev / |mean|; 0 when mean == 0
-  double p95 = 0.0;        ///< 95th percentile (linear interpolation)
-  double p99 = 0.0;        ///< 99th percentile (linear interpolation)
-  double min = 0.0;        ///< smallest value
-  double max = 0.0;        ///< largest value
-  bool unstable = false;   ///< cv > kUnstableCv
+  std::size_t count = 0;  ///< number of values
+  double median = 0.0;    ///< 50th percentile
+  double mean = 0.0;      ///< arithmetic mean
+  double stddev = 0.0;    ///< sample standard deviation (n-1 denominator); 0 for n < 2
+  double cv = 0.0;        ///< stddev / |mean|; 0 when mean == 0
+  double p95 = 0.0;       ///< 95th percentile (linear interpolation)
+  double p99 = 0.0;       ///< 99th percentile (linear interpolation)
+  double min = 0.0;       ///< smallest value
+  double max = 0.0;       ///< largest value
+  bool unstable = false;  ///< cv > kUnstableCv
 };
 
 /// Summarises `values` (any order). Throws std::invalid_argument if any value is non-finite.

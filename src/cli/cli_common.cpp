@@ -41,8 +41,9 @@ std::filesystem::path resolve_suite(const std::string& argument) {
   if (std::filesystem::is_regular_file(bundled, ec)) return bundled;
   std::string known;
   for (const std::string& name : bundled_suite_names()) known += (known.empty() ? "" : ", ") + name;
-  throw SuiteError(argument, "", "no such file, and not a bundled suite (bundled: " +
-                                     (known.empty() ? "none in " + suites_dir().string() : known) + ")");
+  throw SuiteError(argument, "",
+                   "no such file, and not a bundled suite (bundled: " +
+                       (known.empty() ? "none in " + suites_dir().string() : known) + ")");
 }
 
 std::string one_line(std::string_view text) {

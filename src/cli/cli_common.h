@@ -18,10 +18,10 @@ namespace tcsb::cli {
 
 /// Process exit codes (DESIGN §6).
 enum ExitCode : int {
-  kExitOk = 0,        ///< success (a run with diverged cases included: they are reported, not hidden)
-  kExitFailed = 1,    ///< a gate or claim failed (decided)
-  kExitUsage = 2,     ///< bad usage or bad input; nothing ran and no output file was touched
-  kExitInternal = 3,  ///< anything else: a bug, or the machine failed us (e.g. the output could not be written)
+  kExitOk = 0,         ///< success (a run with diverged cases included: they are reported, not hidden)
+  kExitFailed = 1,     ///< a gate or claim failed (decided)
+  kExitUsage = 2,      ///< bad usage or bad input; nothing ran and no output file was touched
+  kExitInternal = 3,   ///< anything else: a bug, or the machine failed us (e.g. the output could not be written)
   kExitUndecided = 4,  ///< reproduce: no claim failed, but some remain undecided (within the run's noise)
 };
 

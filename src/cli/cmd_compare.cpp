@@ -41,9 +41,10 @@ void warn_about_contexts(const LoadedResult& base, const LoadedResult& next, con
 }  // namespace
 
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
-  CLI::App* cmd = app.add_subcommand(
-      "compare", "Regression gate: compare two results of the same suite (exit 0 pass, 1 regression or changed "
-                 "behaviour, 2 bad input, different suites or no timing metric to decide on)");
+  CLI::App* cmd =
+      app.add_subcommand("compare",
+                         "Regression gate: compare two results of the same suite (exit 0 pass, 1 regression or changed "
+                         "behaviour, 2 bad input, different suites or no timing metric to decide on)");
   cmd->add_option("base", args.base, "Baseline result (a `tcsb run` JSON file)")->required();
   cmd->add_option("new", args.next, "New result of the same suite")->required();
   cmd->add_option("--alpha", args.alpha, "Family-wise significance level of the U tests (Holm), in (0, 1)")
@@ -83,8 +84,8 @@ int compare_command(const CompareArgs& args) {
   // kExitUsage, one line and no summary, as for any unusable input. Changed behaviour is decided without timings,
   // so it still fails (kExitFailed) below, with its summary.
   if (!outcome.timings_decided() && !outcome.behaviour_changed()) {
-    throw UsageError(base.view.file + " and " + next.view.file + ": the gate cannot decide: " +
-                     undecided_reason(outcome));
+    throw UsageError(base.view.file + " and " + next.view.file +
+                     ": the gate cannot decide: " + undecided_reason(outcome));
   }
   warn_about_contexts(base, next, outcome.comparison);
   const std::string summary = comparison_summary_markdown(outcome, base.view, next.view);

@@ -10,7 +10,8 @@
 namespace tcsb::cli {
 
 CLI::App* add_export_command(CLI::App& app, ExportArgs& args) {
-  CLI::App* cmd = app.add_subcommand("export", "Convert a result file to another format (gbench, github-action-*, markdown)");
+  CLI::App* cmd =
+      app.add_subcommand("export", "Convert a result file to another format (gbench, github-action-*, markdown)");
   cmd->add_option("result", args.result, "A result file written by `tcsb run`")->required();
   cmd->add_option("--format", args.format, "Output format: " + known_formats())->required();
   cmd->add_option("--out", args.out, "Write to FILE (atomically) instead of stdout");

@@ -50,7 +50,9 @@ CLI::App* add_list_command(CLI::App& app) { return app.add_subcommand("list", "L
 int list_command() {
   const std::vector<std::string> names = bundled_suite_names();
   if (names.empty()) throw UsageError("no bundled suites in " + suites_dir().string() + " (set TCSB_SUITES_DIR?)");
-  TextTable table({{"suite", TextTable::Align::kLeft}, {"nets"}, {"methods", TextTable::Align::kLeft},
+  TextTable table({{"suite", TextTable::Align::kLeft},
+                   {"nets"},
+                   {"methods", TextTable::Align::kLeft},
                    {"description", TextTable::Align::kLeft}});
   for (const std::string& name : names) table.add_row(describe(name));
   table.print(std::cout, 0);

@@ -10,8 +10,8 @@
 #include "cli/run_support.h"
 #include "harness/step_clock.h"
 #include "report/json_report.h"
-#include "report/reproduction_report.h"
 #include "report/report_writer.h"
+#include "report/reproduction_report.h"
 #include "report/text_table.h"
 
 namespace tcsb::cli {

@@ -22,8 +22,7 @@ int validate_command(const ValidateArgs& args) {
   char mib[32];
   std::snprintf(mib, sizeof mib, "%.1f", static_cast<double>(estimate_peak_bytes(suite)) / (1024.0 * 1024.0));
   std::cout << terminal_safe(args.suite) << ": ok (" << suite.nets.size() << " nets, " << expand_cases(suite).size()
-            << " cases, "
-            << suite.repetitions << " repetitions, estimated peak memory " << mib << " MiB)" << std::endl;
+            << " cases, " << suite.repetitions << " repetitions, estimated peak memory " << mib << " MiB)" << std::endl;
   return kExitOk;
 }
 

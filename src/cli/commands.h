@@ -16,22 +16,22 @@ namespace tcsb::cli {
 
 /// Options of `tcsb run` (also used by the default reproduction).
 struct RunArgs {
-  std::string suite;            ///< a path or a bundled suite name
-  std::string out;              ///< output file; empty: stdout
-  std::string format = "json";  ///< a make_format() name
-  bool quiet = false;           ///< no console report on stderr
-  std::vector<double> compression;  ///< overrides the suite's TC-SB node budgets (fractions), when given
+  std::string suite;                  ///< a path or a bundled suite name
+  std::string out;                    ///< output file; empty: stdout
+  std::string format = "json";        ///< a make_format() name
+  bool quiet = false;                 ///< no console report on stderr
+  std::vector<double> compression;    ///< overrides the suite's TC-SB node budgets (fractions), when given
   std::optional<double> max_step_ms;  ///< overrides the suite's time budget per step (ms; 0 disables), when given
   std::optional<int> repetitions;     ///< overrides the suite's repetitions per case, when given
 };
 
 /// Options of `tcsb reproduce`.
 struct ReproduceArgs {
-  std::string suite = "paper";                ///< a path or a bundled suite name
-  std::string paper = "results/paper.json";   ///< the paper's own numbers
-  std::string out;                            ///< output file; empty: stdout
-  bool quiet = false;                         ///< only the reproduction tables on stderr
-  std::optional<int> repetitions;             ///< overrides the suite's repetitions per case, when given
+  std::string suite = "paper";               ///< a path or a bundled suite name
+  std::string paper = "results/paper.json";  ///< the paper's own numbers
+  std::string out;                           ///< output file; empty: stdout
+  bool quiet = false;                        ///< only the reproduction tables on stderr
+  std::optional<int> repetitions;            ///< overrides the suite's repetitions per case, when given
   /// Wall time (s) for judging the claims after the run — intervals, and extra repetitions of undecided claims
   /// while they fit; absent: what is left of kReproduceWallTarget; 0: no extra repetitions.
   std::optional<double> budget;
@@ -44,11 +44,11 @@ inline constexpr double kMaxReproduceBudget = 86400.0;
 
 /// Options of `tcsb frames`.
 struct FramesArgs {
-  std::string suite = "paper";          ///< a path or a bundled suite name
-  std::string net;                      ///< a net of the suite by name; empty: its last
-  std::optional<double> compression;    ///< TC-SB node budget; absent: the suite's smallest target
+  std::string suite = "paper";               ///< a path or a bundled suite name
+  std::string net;                           ///< a net of the suite by name; empty: its last
+  std::optional<double> compression;         ///< TC-SB node budget; absent: the suite's smallest target
   std::vector<int> steps{30, 60, 120, 240};  ///< record after these steps (the cloth falls, then swings)
-  std::string out;                      ///< output file; empty: stdout
+  std::string out;                           ///< output file; empty: stdout
 };
 
 /// The latest step `tcsb frames` records (a bound against typing errors; 100 000 steps take minutes at 81 x 81).
@@ -61,19 +61,19 @@ struct ValidateArgs {
 
 /// Options of `tcsb compare`.
 struct CompareArgs {
-  std::string base;          ///< baseline result file
-  std::string next;          ///< new result file
-  double alpha = 0.05;       ///< family-wise significance level (Holm over the gated metrics)
-  double threshold = 0.05;   ///< smallest relative change of a median that fails the gate
-  bool absolute = false;     ///< gate absolute step times too (dedicated machines)
-  std::string summary;       ///< Markdown summary file; empty: stderr
+  std::string base;         ///< baseline result file
+  std::string next;         ///< new result file
+  double alpha = 0.05;      ///< family-wise significance level (Holm over the gated metrics)
+  double threshold = 0.05;  ///< smallest relative change of a median that fails the gate
+  bool absolute = false;    ///< gate absolute step times too (dedicated machines)
+  std::string summary;      ///< Markdown summary file; empty: stderr
 };
 
 /// Options of `tcsb export`.
 struct ExportArgs {
-  std::string result;        ///< a native result file
-  std::string format;        ///< a make_format() name
-  std::string out;           ///< output file; empty: stdout
+  std::string result;  ///< a native result file
+  std::string format;  ///< a make_format() name
+  std::string out;     ///< output file; empty: stdout
 };
 
 /// Registers `run SUITE [--out FILE] [--format NAME] [--quiet]`.

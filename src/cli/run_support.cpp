@@ -26,7 +26,8 @@ void check_out_path(const std::string& out, const std::string& option) {
 
 void check_out_is_not_input(const std::string& out, const std::filesystem::path& input, const std::string& option) {
   if (out.empty() || input.empty()) return;
-  struct stat out_st {}, in_st {};
+  struct stat out_st {
+  }, in_st{};
   bool same = false;
   if (::stat(out.c_str(), &out_st) == 0 && ::stat(input.c_str(), &in_st) == 0) {
     // Both exist: the same file however it is spelled (a symlink, "./", a hard link).
@@ -50,9 +51,10 @@ double checked_budget(double compression) {
 }
 
 void add_repetitions_option(CLI::App& command, std::optional<int>& repetitions) {
-  command.add_option("--repetitions", repetitions,
-                     "Repetitions of every case, 1 to " + std::to_string(kMaxRepetitions) +
-                         " (overrides the suite; more make the medians and claim intervals steadier on a noisy machine)");
+  command.add_option(
+      "--repetitions", repetitions,
+      "Repetitions of every case, 1 to " + std::to_string(kMaxRepetitions) +
+          " (overrides the suite; more make the medians and claim intervals steadier on a noisy machine)");
 }
 
 void apply_repetitions(const std::optional<int>& repetitions, Suite& suite) {

@@ -7,10 +7,8 @@ namespace tcsb {
 
 std::unique_ptr<Controller> make_controller(const FeedbackSettings& settings, int target_nodes, std::uint64_t seed) {
   switch (settings.policy) {
-    case PolicyKind::kRandom:
-      return std::make_unique<RandomController>(target_nodes, settings.max_ops_per_step, seed);
-    case PolicyKind::kSaliency:
-      return std::make_unique<SaliencyController>(settings, target_nodes);
+    case PolicyKind::kRandom: return std::make_unique<RandomController>(target_nodes, settings.max_ops_per_step, seed);
+    case PolicyKind::kSaliency: return std::make_unique<SaliencyController>(settings, target_nodes);
   }
   return nullptr;
 }

@@ -7,9 +7,7 @@ CutView cut_view(const TcSoftBody& body) {
 }
 
 FinestCut::FinestCut(const Net& net)
-    : tree_(&net.lod()),
-      state_(tree_->size(), CutState::kOff),
-      index_(tree_->size(), -1),
+    : tree_(&net.lod()), state_(tree_->size(), CutState::kOff), index_(tree_->size(), -1),
       tree_of_(tree_->leaf_count()) {
   for (std::size_t leaf = 0; leaf < tree_->leaf_count(); ++leaf) {
     state_[leaf] = CutState::kActive;

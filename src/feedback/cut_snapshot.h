@@ -19,10 +19,10 @@ namespace tcsb {
 /// A cut through a LOD tree as flat arrays (borrowed, not owned).
 struct CutView {
   const LodTree* tree = nullptr;
-  std::span<const CutState> state;    ///< per tree node
+  std::span<const CutState> state;      ///< per tree node
   std::span<const std::int32_t> index;  ///< per tree node: simulated node index, or -1
-  std::span<const TreeId> tree_of;    ///< per simulated node
-  std::span<const CutLink> links;     ///< the simulated links (those with joins_committed() are the cut's adjacency)
+  std::span<const TreeId> tree_of;      ///< per simulated node
+  std::span<const CutLink> links;       ///< the simulated links (those with joins_committed() are the cut's adjacency)
 
   bool committed(TreeId id) const {
     const CutState s = state[static_cast<std::size_t>(id)];

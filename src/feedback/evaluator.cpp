@@ -44,8 +44,8 @@ void rank_candidates(const CutSnapshot& snapshot, std::span<const float> salienc
     if (snapshot.cut.state[id] != CutState::kActive) continue;
     const LodNode& node = nodes[id];
     const float s = saliency[static_cast<std::size_t>(snapshot.cut.index[id])];
-    if (!node.is_leaf()) out.refine.push_back({(s + kSaliencyFloor) * static_cast<double>(1u << node.level),
-                                               static_cast<TreeId>(id)});
+    if (!node.is_leaf())
+      out.refine.push_back({(s + kSaliencyFloor) * static_cast<double>(1u << node.level), static_cast<TreeId>(id)});
     // Each parent once: from its first child (the even-even corner of the block, so the parent is read only for a
     // quarter of the nodes), when every child is active.
     const TreeId parent = node.parent;

@@ -14,15 +14,15 @@ enum class PolicyKind {
 /// Feedback stage parameters. Defaults are documented in docs/design.md ("The feedback loop").
 struct FeedbackSettings {
   PolicyKind policy = PolicyKind::kSaliency;
-  double threshold = 0.05;            ///< hysteresis: a refine must beat the coarse it forces by this much
-  int max_ops_per_step = 32;          ///< operations begun per step at most
-  int evaluation_interval = 1;        ///< evaluate saliency every this many steps (its result applies one step later)
-  double global_motion_scale = 1.0;   ///< m/s; saliency cap = 1 / (1 + |v_global| / scale)
-  bool illumination = false;          ///< multiply by a Lambertian factor max(0, n . l)
+  double threshold = 0.05;           ///< hysteresis: a refine must beat the coarse it forces by this much
+  int max_ops_per_step = 32;         ///< operations begun per step at most
+  int evaluation_interval = 1;       ///< evaluate saliency every this many steps (its result applies one step later)
+  double global_motion_scale = 1.0;  ///< m/s; saliency cap = 1 / (1 + |v_global| / scale)
+  bool illumination = false;         ///< multiply by a Lambertian factor max(0, n . l)
   std::array<double, 3> light_direction{0.0, 1.0, 0.0};  ///< direction towards the light
-  bool parallel = false;              ///< evaluate on worker threads while Bullet steps
-  int threads = 1;                    ///< worker threads when parallel
-  double max_step_ms = 0.0;           ///< time budget per step; 0 disables it
+  bool parallel = false;                                 ///< evaluate on worker threads while Bullet steps
+  int threads = 1;                                       ///< worker threads when parallel
+  double max_step_ms = 0.0;                              ///< time budget per step; 0 disables it
 };
 
 /// Name used in suites and reports: "saliency" or "random".

@@ -55,10 +55,8 @@ int target_node_count(const Net& net, const CaseKey& key) {
 std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key, SoftBodyWorld& world,
                                          std::shared_ptr<const Net> net, std::uint64_t seed) {
   switch (key.method) {
-    case Method::kPlain:
-      return std::make_unique<StockBody>(make_plain_softbody(world, *net, suite.solver));
-    case Method::kBulletPatch:
-      return std::make_unique<StockBody>(make_bullet_patch(world, *net, suite.solver));
+    case Method::kPlain: return std::make_unique<StockBody>(make_plain_softbody(world, *net, suite.solver));
+    case Method::kBulletPatch: return std::make_unique<StockBody>(make_bullet_patch(world, *net, suite.solver));
     case Method::kTcsb: {
       const int target = target_node_count(*net, key);
       auto body = std::make_unique<TcSoftBody>(world, net, suite.solver, suite.tcsb);

@@ -67,8 +67,6 @@ std::string case_label(const Suite& suite, const CaseKey& key) {
   return label;
 }
 
-std::uint64_t case_seed(const Suite& suite, std::size_t case_index) {
-  return suite.seed * 1000003ULL + case_index;
-}
+std::uint64_t case_seed(const Suite& suite, std::size_t case_index) { return suite.seed * 1000003ULL + case_index; }
 
 }  // namespace tcsb

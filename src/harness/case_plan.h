@@ -14,9 +14,9 @@ namespace tcsb {
 
 /// One case: a net, a method, and (TC-SB only) a compression target.
 struct CaseKey {
-  std::size_t net = 0;                 ///< index into Suite::nets
+  std::size_t net = 0;  ///< index into Suite::nets
   Method method = Method::kPlain;
-  std::optional<double> compression;   ///< TC-SB node budget as a fraction of the initial count; empty otherwise
+  std::optional<double> compression;  ///< TC-SB node budget as a fraction of the initial count; empty otherwise
 };
 
 /// Per net, in suite order: each method in suite order; tcsb expands to one case per compression target (in suite

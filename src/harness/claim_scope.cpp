@@ -13,8 +13,8 @@ ClaimScope merged(const ClaimScope& a, const ClaimScope& b) {
   m.every_tcsb = a.every_tcsb || b.every_tcsb;
   m.operations = a.operations || b.operations;
   for (const double t : b.tcsb_targets) {
-    const bool known = std::any_of(m.tcsb_targets.begin(), m.tcsb_targets.end(),
-                                   [&](double x) { return same_compression(x, t); });
+    const bool known =
+        std::any_of(m.tcsb_targets.begin(), m.tcsb_targets.end(), [&](double x) { return same_compression(x, t); });
     if (!known) m.tcsb_targets.push_back(t);
   }
   return m;

@@ -204,8 +204,8 @@ bool is_optimized_build(std::string_view build_type, std::string_view cxx_flags,
   std::istringstream tokens{std::string(cxx_flags)};
   for (std::string token; tokens >> token;) {
     if (!token.starts_with("-O")) continue;
-    optimising_flag = std::any_of(std::begin(kOptimising), std::end(kOptimising),
-                                  [&](const char* o) { return token == o; });
+    optimising_flag =
+        std::any_of(std::begin(kOptimising), std::end(kOptimising), [&](const char* o) { return token == o; });
   }
   return optimising_flag;
 }
@@ -224,14 +224,12 @@ std::vector<std::string> context_warnings(const Context& c) {
     warnings.push_back("timing a sanitizer build (-fsanitize): numbers are not representative");
   }
   if (!c.cpu_governor.empty() && c.cpu_governor != "performance") {
-    warnings.push_back("CPU frequency scaling is active (governor '" + c.cpu_governor +
-                       "'): expect extra variance");
+    warnings.push_back("CPU frequency scaling is active (governor '" + c.cpu_governor + "'): expect extra variance");
   }
   // cores == 0 means unknown: no basis for calling the machine loaded.
   if (c.cores > 0 && c.load_average_1m > 0.5 * c.cores) {
     warnings.push_back("machine is loaded (1-min load " + format_number(c.load_average_1m) + " on " +
-                       std::to_string(c.cores) + (c.cores == 1 ? " core" : " cores") +
-                       "): expect extra variance");
+                       std::to_string(c.cores) + (c.cores == 1 ? " core" : " cores") + "): expect extra variance");
   }
   return warnings;
 }

@@ -16,22 +16,22 @@ namespace tcsb {
 
 /// One CPU cache as seen from cpu0 (/sys/devices/system/cpu/cpu0/cache/index*).
 struct CacheInfo {
-  int level = 0;               ///< 1, 2, 3, ...
-  std::string type;            ///< "Data", "Instruction" or "Unified"
+  int level = 0;     ///< 1, 2, 3, ...
+  std::string type;  ///< "Data", "Instruction" or "Unified"
   std::int64_t size_bytes = 0;
-  int num_sharing = 0;         ///< logical CPUs sharing this cache (0 if unknown)
+  int num_sharing = 0;  ///< logical CPUs sharing this cache (0 if unknown)
 };
 
 /// Everything a result file records about where and how it was produced.
 struct Context {
-  std::string date_utc;               ///< ISO 8601 UTC, e.g. 2026-11-22T01:02:03Z
-  std::string host;                   ///< gethostname(), "unknown" if it fails
-  std::string cpu_model;              ///< first /proc/cpuinfo "model name", "unknown" if absent
-  int cores = 0;                      ///< std::thread::hardware_concurrency (0: unknown)
-  double mhz = 0;                     ///< /proc/cpuinfo "cpu MHz" of cpu0, 0 if unknown
-  std::vector<CacheInfo> caches;      ///< cpu0's caches in index order; empty if /sys does not say
-  std::string cpu_governor;           ///< cpu0 scaling_governor, "" if absent (VMs, containers)
-  double load_average_1m = 0;         ///< /proc/loadavg first field at gather time
+  std::string date_utc;           ///< ISO 8601 UTC, e.g. 2026-11-22T01:02:03Z
+  std::string host;               ///< gethostname(), "unknown" if it fails
+  std::string cpu_model;          ///< first /proc/cpuinfo "model name", "unknown" if absent
+  int cores = 0;                  ///< std::thread::hardware_concurrency (0: unknown)
+  double mhz = 0;                 ///< /proc/cpuinfo "cpu MHz" of cpu0, 0 if unknown
+  std::vector<CacheInfo> caches;  ///< cpu0's caches in index order; empty if /sys does not say
+  std::string cpu_governor;       ///< cpu0 scaling_governor, "" if absent (VMs, containers)
+  double load_average_1m = 0;     ///< /proc/loadavg first field at gather time
   /// Transparent huge pages mode (the bracketed choice of /sys/kernel/mm/transparent_hugepage/enabled, e.g.
   /// "madvise"), "" if absent; and the GLIBC_TUNABLES environment variable, "" if unset. Operations on large nets
   /// run 10-17 % faster with glibc.malloc.hugetlb=1 (docs/methodology.md, "Huge pages"): numbers are only

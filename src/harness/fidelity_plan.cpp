@@ -27,9 +27,8 @@ std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
   targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
   for (const double c : targets) plan.push_back({FidelityMethod::kTcsb, c});
   if (!suite.fidelity.ablations) return plan;
-  for (const FidelityMethod m :
-       {FidelityMethod::kUniform, FidelityMethod::kSwitch, FidelityMethod::kTcsbRandom, FidelityMethod::kTcsbRigid,
-        FidelityMethod::kTcsbNoGeomorph})
+  for (const FidelityMethod m : {FidelityMethod::kUniform, FidelityMethod::kSwitch, FidelityMethod::kTcsbRandom,
+                                 FidelityMethod::kTcsbRigid, FidelityMethod::kTcsbNoGeomorph})
     for (const double c : suite.compression)
       if (c < 1.0) plan.push_back({m, c});
   return plan;

@@ -13,12 +13,12 @@ namespace tcsb {
 
 /// The ways the fidelity pass can simulate a net at a node budget.
 enum class FidelityMethod {
-  kTcsb,        ///< TC-SB as the suite configures it (the method under test)
-  kUniform,     ///< a static coarse grid of about the budget's node count, same size, mass and pins (ablation)
-  kSwitch,      ///< full resolution, then a new coarse btSoftBody built from its state when the budget applies (the
-                ///< paper's stated alternative: "a new SoftBody has to be created", §6) (ablation)
-  kTcsbRandom,  ///< TC-SB driven by seeded random operations instead of saliency (ablation)
-  kTcsbRigid,   ///< TC-SB with the paper's rigid-offset child placement instead of the affine fit (ablation)
+  kTcsb,            ///< TC-SB as the suite configures it (the method under test)
+  kUniform,         ///< a static coarse grid of about the budget's node count, same size, mass and pins (ablation)
+  kSwitch,          ///< full resolution, then a new coarse btSoftBody built from its state when the budget applies (the
+                    ///< paper's stated alternative: "a new SoftBody has to be created", §6) (ablation)
+  kTcsbRandom,      ///< TC-SB driven by seeded random operations instead of saliency (ablation)
+  kTcsbRigid,       ///< TC-SB with the paper's rigid-offset child placement instead of the affine fit (ablation)
   kTcsbNoGeomorph,  ///< TC-SB, the same body, its surface switched at once instead of geomorphed (ablation;
                     ///< harness/surface_morph.h)
 };

@@ -36,11 +36,11 @@ constexpr int kBlockSteps = 20;
 
 /// The reference's trajectory over one block of steps. Positions are Bullet's floats, kept as floats.
 struct ReferenceBlock {
-  int first_step = 0;                                       // step of frame 0
+  int first_step = 0;  // step of frame 0
   std::size_t nodes = 0;
-  std::vector<std::array<float, 3>> positions;              // frame f: [f * nodes, (f + 1) * nodes)
-  std::vector<float> saliency;                              // same layout
-  std::vector<double> energy;                               // per frame
+  std::vector<std::array<float, 3>> positions;  // frame f: [f * nodes, (f + 1) * nodes)
+  std::vector<float> saliency;                  // same layout
+  std::vector<double> energy;                   // per frame
 
   void frame(int step, std::vector<Eigen::Vector3d>& x) const {
     const std::size_t f = static_cast<std::size_t>(step - first_step);

@@ -1,6 +1,7 @@
 // FidelitySubject: a body the fidelity pass compares with the full-resolution reference — TC-SB (saliency, random,
-// rigid placement; its surface geomorphed or not), a uniform coarse grid, or a body switched to a coarse btSoftBody — behind one interface, so the
-// fidelity loop is the same code for all of them. Each can reconstruct a surface with one point per grid node.
+// rigid placement; its surface geomorphed or not), a uniform coarse grid, or a body switched to a coarse btSoftBody —
+// behind one interface, so the fidelity loop is the same code for all of them. Each can reconstruct a surface with one
+// point per grid node.
 #pragma once
 
 #include <BulletSoftBody/btSoftBody.h>

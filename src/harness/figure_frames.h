@@ -36,8 +36,8 @@ struct FigureFrames {
   std::string net;
   int width = 0, height = 0;
   double compression = 1.0;
-  std::vector<FigureFrame> frames;       ///< one per requested step that was reached, in step order
-  std::optional<int> diverged_step;      ///< a body diverged after this step; later frames are missing
+  std::vector<FigureFrame> frames;   ///< one per requested step that was reached, in step order
+  std::optional<int> diverged_step;  ///< a body diverged after this step; later frames are missing
   std::string diverged_reason;
 };
 

@@ -15,12 +15,12 @@ namespace tcsb {
 struct GateOutcome {
   ResultComparison comparison;
   GateSettings settings;
-  bool absolute_gated = false;                 ///< --absolute: step times gate too (one Holm family with the ratios)
+  bool absolute_gated = false;                  ///< --absolute: step times gate too (one Holm family with the ratios)
   std::vector<TimingDecision> ratio_decisions;  ///< parallel to comparison.ratios
   std::vector<TimingDecision> step_decisions;   ///< parallel to comparison.step_ms
-  std::size_t gated_metrics = 0;               ///< reliable metrics in the gated family (the Holm family size)
-  std::size_t regressions = 0;                 ///< gated metrics that regressed
-  std::size_t warnings = 0;                    ///< step times that would have regressed had they been gated
+  std::size_t gated_metrics = 0;                ///< reliable metrics in the gated family (the Holm family size)
+  std::size_t regressions = 0;                  ///< gated metrics that regressed
+  std::size_t warnings = 0;                     ///< step times that would have regressed had they been gated
 
   /// Behaviour changed: a deterministic quantity differs, or a case or repetition is not matched one to one.
   bool behaviour_changed() const { return !comparison.changes.empty(); }

@@ -55,16 +55,21 @@ class PathTracker {
   void value_done() {
     if (stack_.empty()) return;
     Frame& f = stack_.back();
-    if (f.is_array) ++f.index;
-    else f.in_member = false;
+    if (f.is_array)
+      ++f.index;
+    else
+      f.in_member = false;
   }
   /// Where the parser is: down to the member whose value is being read (not one already complete).
   std::string path() const {
     std::string p;
     for (const Frame& f : stack_) {
-      if (f.is_array) p += "[" + std::to_string(f.index) + "]";
-      else if (f.in_member) p += (p.empty() ? "" : ".") + f.key;
-      else break;
+      if (f.is_array)
+        p += "[" + std::to_string(f.index) + "]";
+      else if (f.in_member)
+        p += (p.empty() ? "" : ".") + f.key;
+      else
+        break;
     }
     return p;
   }
@@ -137,16 +142,16 @@ Json parse_json_text(const std::string& text, const std::string& file, int max_d
     throw SuiteError(file, "", "not valid JSON: a NUL byte at byte " + std::to_string(nul + 1));
   }
   PathTracker tracker;
-  const typename Json::parser_callback_t callback = [&](int depth, nlohmann::json::parse_event_t event,
-                                                        Json& parsed) {
+  const typename Json::parser_callback_t callback = [&](int depth, nlohmann::json::parse_event_t event, Json& parsed) {
     using Event = nlohmann::json::parse_event_t;
     switch (event) {
       case Event::object_start:
       case Event::array_start:
         // `depth` counts the containers around this one: refuse before nesting further.
         if (depth >= max_depth) {
-          throw SuiteError(file, "", "not valid JSON: arrays and objects nested deeper than " +
-                                         std::to_string(max_depth) + " levels, the most tcsb reads");
+          throw SuiteError(file, "",
+                           "not valid JSON: arrays and objects nested deeper than " + std::to_string(max_depth) +
+                               " levels, the most tcsb reads");
         }
         tracker.open(event == Event::array_start);
         break;

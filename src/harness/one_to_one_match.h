@@ -16,9 +16,9 @@ namespace tcsb {
 /// How often one key occurs in each list.
 template <typename Key>
 struct KeyOccurrences {
-  Key key;                ///< the key
-  std::size_t base = 0;   ///< occurrences in the base list
-  std::size_t next = 0;   ///< occurrences in the new list
+  Key key;               ///< the key
+  std::size_t base = 0;  ///< occurrences in the base list
+  std::size_t next = 0;  ///< occurrences in the new list
 };
 
 /// Two lists matched by key.

@@ -13,8 +13,8 @@ namespace tcsb {
 
 /// One count of one operation over many calls.
 struct OpWorkStat {
-  std::int32_t max = 0;  ///< the largest count of one call (0 when there was no call)
-  double mean = 0;       ///< the mean count per call (0 when there was no call)
+  std::int32_t max = 0;      ///< the largest count of one call (0 when there was no call)
+  double mean = 0;           ///< the mean count per call (0 when there was no call)
   double interior_mean = 0;  ///< the mean over interior calls (OpWork::interior; 0 when there was none)
 };
 

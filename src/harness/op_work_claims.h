@@ -22,9 +22,9 @@ inline constexpr double kOpWorkSpreadTolerance = 0.05;
 /// The counts whose maximum must be within its bound: every OpWork count the cut's invariants bound. The DBVT
 /// ancestors walk is left out: its length depends on where a new node lies relative to its neighbours' boxes, not
 /// on the cut (OpWork); it is reported, not judged.
-inline constexpr OpWorkCount kOpWorkBoundedCounts[] = {
-    OpWorkCount::kNodes,           OpWorkCount::kLinks,           OpWorkCount::kTreeRecords,
-    OpWorkCount::kDbvtLeaves,      OpWorkCount::kRelocationNodes, OpWorkCount::kRelocationLinks};
+inline constexpr OpWorkCount kOpWorkBoundedCounts[] = {OpWorkCount::kNodes,           OpWorkCount::kLinks,
+                                                       OpWorkCount::kTreeRecords,     OpWorkCount::kDbvtLeaves,
+                                                       OpWorkCount::kRelocationNodes, OpWorkCount::kRelocationLinks};
 
 /// The block-local counts: those that measure the operation's block and its neighbourhood only, whose maximum and
 /// interior mean must agree across nets. The relocation counts depend on which node or link is last in Bullet's

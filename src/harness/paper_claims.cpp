@@ -46,8 +46,9 @@ std::vector<Claim> paper_claims(const PaperReference& paper, const std::vector<T
   for (const double target : kSpeedTargets) {
     const std::string p = compression_percent(target);
     claims.push_back(repeated(speed_claim_id(target),
-                              "TC-SB at " + p + "% costs at most the paper's share of plain Bullet's step time "
-                              "(Table 2)",
+                              "TC-SB at " + p +
+                                  "% costs at most the paper's share of plain Bullet's step time "
+                                  "(Table 2)",
                               Comparison::kAtMost, paper.time_ratio(p + "%"), 0.0, ratio_of(table2, target)));
   }
   claims.push_back(repeated(kNoCompressionId,
@@ -80,16 +81,17 @@ std::vector<Claim> paper_claims(const PaperReference& paper, const std::vector<T
     if (paper_begin) {
       claims.push_back(repeated(op_claim_id(begin),
                                 begin + ": one operation costs at most the paper's mean complete time, in ms "
-                                "(Table 1; ours: mean over every sample of the run)",
+                                        "(Table 1; ours: mean over every sample of the run)",
                                 Comparison::kAtMost, *paper_begin, 0.0, ours_begin));
     }
     if (paper_begin && paper_end) {
       std::optional<double> cycle;
       if (ours_begin && ours_end) cycle = *ours_begin + *ours_end;
       claims.push_back(repeated(op_claim_id(end),
-                                end + ": the whole cycle " + begin + " + " + end + " costs at most the paper's, in ms "
-                                "(Table 1, means; the paper timed its end operations without their lazily deferred "
-                                "link deletions, ours include them)",
+                                end + ": the whole cycle " + begin + " + " + end +
+                                    " costs at most the paper's, in ms "
+                                    "(Table 1, means; the paper timed its end operations without their lazily deferred "
+                                    "link deletions, ours include them)",
                                 Comparison::kAtMost, *paper_begin + *paper_end, 0.0, cycle));
     }
   }

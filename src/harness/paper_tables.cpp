@@ -30,9 +30,8 @@ std::vector<Group> groups_of(const RunResult& result) {
   std::vector<Group> groups;
   for (std::size_t i = 0; i < result.cases.size(); ++i) {
     const CaseKey& key = result.cases[i].key;
-    auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
-      return g.method == key.method && g.compression == key.compression;
-    });
+    auto it = std::find_if(groups.begin(), groups.end(),
+                           [&](const Group& g) { return g.method == key.method && g.compression == key.compression; });
     if (it == groups.end()) it = groups.insert(groups.end(), Group{key.method, key.compression, {}});
     it->cases.push_back(i);
   }

@@ -17,27 +17,27 @@ namespace tcsb {
 
 /// One row of Table 2: a (method, compression) group averaged over its nets.
 struct Table2Row {
-  std::string method;                        ///< "plain", "bullet_patch" or "tcsb"
-  std::optional<double> compression;         ///< TC-SB target; nullopt for the other methods
-  std::string compression_label;             ///< "-", "NoCompression" (1.0) or a percentage such as "75%"
-  std::optional<double> N, L, I;             ///< mean over the group's ok cases of mean nodes / links / interpolations
-  std::optional<double> total_ms;            ///< mean over the group's ok cases of the median step time
-  std::optional<double> time_ratio_vs_plain; ///< mean ms / plain mean ms over the nets both have ok
-  std::optional<double> node_ratio;          ///< N / plain N over the nets both have ok
-  int nets = 0;                              ///< ok cases averaged (one per net)
-  std::string status = "ok";                 ///< "ok", "partial" (some nets diverged, left out) or "diverged" (none ok)
+  std::string method;                         ///< "plain", "bullet_patch" or "tcsb"
+  std::optional<double> compression;          ///< TC-SB target; nullopt for the other methods
+  std::string compression_label;              ///< "-", "NoCompression" (1.0) or a percentage such as "75%"
+  std::optional<double> N, L, I;              ///< mean over the group's ok cases of mean nodes / links / interpolations
+  std::optional<double> total_ms;             ///< mean over the group's ok cases of the median step time
+  std::optional<double> time_ratio_vs_plain;  ///< mean ms / plain mean ms over the nets both have ok
+  std::optional<double> node_ratio;           ///< N / plain N over the nets both have ok
+  int nets = 0;                               ///< ok cases averaged (one per net)
+  std::string status = "ok";  ///< "ok", "partial" (some nets diverged, left out) or "diverged" (none ok)
 };
 
 /// One row of Table 1: every sample of one operation kind, pooled over the ok TC-SB cases.
 struct Table1Row {
-  std::string operation;        ///< "refine", "end-refine", "coarse", "end-coarse"
-  double N = 0, L = 0;          ///< mean Bullet nodes / links present when the operation ran
-  double node_ops_ms = 0;       ///< mean time on nodes
-  double link_ops_ms = 0;       ///< mean time on links
-  double complete_ms = 0;       ///< mean of node + link time
-  double node_ops_pct = 0;      ///< 100 * node / (node + link), from the means
-  double link_ops_pct = 0;      ///< 100 * link / (node + link), from the means
-  std::size_t count = 0;        ///< samples (0: the kind never ran; all numbers are then 0)
+  std::string operation;          ///< "refine", "end-refine", "coarse", "end-coarse"
+  double N = 0, L = 0;            ///< mean Bullet nodes / links present when the operation ran
+  double node_ops_ms = 0;         ///< mean time on nodes
+  double link_ops_ms = 0;         ///< mean time on links
+  double complete_ms = 0;         ///< mean of node + link time
+  double node_ops_pct = 0;        ///< 100 * node / (node + link), from the means
+  double link_ops_pct = 0;        ///< 100 * link / (node + link), from the means
+  std::size_t count = 0;          ///< samples (0: the kind never ran; all numbers are then 0)
   double p50_us = 0, p99_us = 0;  ///< percentiles of the complete time, microseconds
 };
 
@@ -51,11 +51,11 @@ struct ScalingPoint {
 struct StepFit {
   std::string method;
   std::optional<double> compression;
-  bool valid = false;                          ///< false when the points do not define a line (then numbers are null)
+  bool valid = false;  ///< false when the points do not define a line (then numbers are null)
   std::optional<double> slope_ms_per_node, intercept_ms, r2;
   /// Slope of log(ms) against log(nodes): 1 for a straight line through the origin, above 1 for superlinear growth.
   std::optional<double> loglog_exponent;
-  std::vector<ScalingPoint> points;            ///< ascending nodes
+  std::vector<ScalingPoint> points;  ///< ascending nodes
 };
 
 /// Operation time against node count for one operation kind (Figure 4), one point per net.
@@ -66,7 +66,7 @@ struct OpFit {
   /// slope * (max nodes - min nodes) / median ms: how much the fitted cost changes across the sizes measured,
   /// relative to the typical cost; "flat in N" means < kFlatnessTarget.
   std::optional<double> flatness;
-  std::vector<ScalingPoint> points;            ///< ascending nodes
+  std::vector<ScalingPoint> points;  ///< ascending nodes
 };
 
 /// The "constant in N" criterion for operation costs: the fitted change across the measured sizes stays under 20 %

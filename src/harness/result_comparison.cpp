@@ -54,8 +54,8 @@ void check_same_suite(const ResultView& base, const ResultView& next) {
     if (seed(base) != seed(next)) difference = "context.seed: " + brief(seed(base)) + " vs " + brief(seed(next));
   }
   if (!difference.empty()) {
-    throw SuiteMismatch(base.file + " and " + next.file + " are runs of different suites or settings (" +
-                        difference + "); compare runs of the same suite and settings, or refresh the baseline "
+    throw SuiteMismatch(base.file + " and " + next.file + " are runs of different suites or settings (" + difference +
+                        "); compare runs of the same suite and settings, or refresh the baseline "
                         "(scripts/refresh-baseline.sh)");
   }
 }
@@ -143,8 +143,9 @@ std::vector<std::string> machine_differences(const ResultView& base, const Resul
   // What makes absolute times incomparable; the host name and date differ between any two runs and say nothing.
   // Huge pages change large nets' step and operation times by 10-17 % (docs/methodology.md, "Huge pages").
   static const char* const kMachineKeys[] = {
-      "cpu_model", "cores",          "compiler",         "cxx_flags",             "build_type",    "optimized",
-      "sanitized", "bullet_version", "bullet_precision", "transparent_hugepages", "glibc_tunables"};
+      "cpu_model",     "cores",     "compiler",       "cxx_flags",        "build_type",
+      "optimized",     "sanitized", "bullet_version", "bullet_precision", "transparent_hugepages",
+      "glibc_tunables"};
   std::vector<std::string> out;
   for (const char* key : kMachineKeys) {
     const ojson a = base.context.contains(key) ? base.context[key] : ojson();

@@ -25,17 +25,17 @@ inline constexpr const char* kPresenceMetric = "presence";
 
 /// One deterministic quantity that differs between the runs.
 struct BehaviourChange {
-  std::string case_label;          ///< the case's label
+  std::string case_label;  ///< the case's label
   /// "N", "L", "I", "final_state_hash", "operations", "status" or kPresenceMetric
   std::string metric;
-  std::optional<int> repetition;   ///< the repetition, or nullopt for the case-level value
-  std::string base, next;          ///< the two values as text
+  std::optional<int> repetition;  ///< the repetition, or nullopt for the case-level value
+  std::string base, next;         ///< the two values as text
 };
 
 /// One timing metric of one case, in both runs.
 struct TimingSeries {
   std::string case_label;
-  std::string metric;              ///< kRatioMetric or kStepMsMetric
+  std::string metric;  ///< kRatioMetric or kStepMsMetric
   TimingSamples samples;
 };
 
@@ -48,15 +48,15 @@ inline constexpr const char* kStepMsMetric = "step ms";
 struct ResultComparison {
   std::string suite_name;
   std::string suite_sha256;
-  std::size_t cases = 0;                      ///< cases matched one to one (by label)
-  std::size_t repetitions = 0;                ///< repetitions of those matched one to one (by number)
+  std::size_t cases = 0;        ///< cases matched one to one (by label)
+  std::size_t repetitions = 0;  ///< repetitions of those matched one to one (by number)
   /// False when a per-step time budget (feedback.max_step_ms > 0) lets timing steer the node budget: N, L, I and
   /// the final state then depend on the machine, so their differences are listed but cannot mean changed code.
   bool deterministic = true;
   /// Deterministic differences (changed behaviour), including every case or repetition not matched one to one.
   std::vector<BehaviourChange> changes;
-  std::vector<TimingSeries> ratios;           ///< one per TC-SB case that has a plain case on its net
-  std::vector<TimingSeries> step_ms;          ///< one per case
+  std::vector<TimingSeries> ratios;              ///< one per TC-SB case that has a plain case on its net
+  std::vector<TimingSeries> step_ms;             ///< one per case
   std::vector<std::string> machine_differences;  ///< context fields that differ, e.g. "cpu_model: \"A\" vs \"B\""
 };
 

@@ -24,9 +24,9 @@ class ResultFileError : public std::runtime_error {
 /// One repetition of one case as the file records it.
 struct RepetitionView {
   int repetition = 0;
-  std::string status;                        ///< "ok" or "diverged"
+  std::string status;  ///< "ok" or "diverged"
   std::optional<int> diverged_step;
-  std::optional<double> mean_step_ms;        ///< > 0; null in the file (diverged) -> nullopt, never when "ok"
+  std::optional<double> mean_step_ms;  ///< > 0; null in the file (diverged) -> nullopt, never when "ok"
   std::optional<double> mean_nodes, mean_links, mean_interpolations;
   std::int64_t operations = 0;
   std::string final_state_hash;
@@ -34,24 +34,24 @@ struct RepetitionView {
 
 /// One case as the file records it (the fields the comparison and the exports use).
 struct CaseView {
-  std::string label, net, method;            ///< e.g. "n33/tcsb@0.3", "n33", "tcsb"
+  std::string label, net, method;  ///< e.g. "n33/tcsb@0.3", "n33", "tcsb"
   std::optional<double> compression;
   std::string status;
   std::optional<double> mean_nodes, mean_links, mean_interpolations;
-  std::optional<double> median_step_ms;      ///< step_ms.median
-  std::optional<double> stddev_step_ms;      ///< step_ms.stddev
-  std::optional<double> cv_step_ms;          ///< step_ms.cv
+  std::optional<double> median_step_ms;  ///< step_ms.median
+  std::optional<double> stddev_step_ms;  ///< step_ms.stddev
+  std::optional<double> cv_step_ms;      ///< step_ms.cv
   std::vector<RepetitionView> repetitions;
 };
 
 /// A whole result file.
 struct ResultView {
-  std::string file;                          ///< the name used in errors
+  std::string file;  ///< the name used in errors
   int schema_version = 0;
-  nlohmann::ordered_json context;            ///< as recorded (an object)
-  nlohmann::ordered_json suite;              ///< as recorded (an object)
-  int steps = 0;                             ///< suite.steps: timed steps per repetition
-  int repetitions = 0;                       ///< suite.repetitions
+  nlohmann::ordered_json context;  ///< as recorded (an object)
+  nlohmann::ordered_json suite;    ///< as recorded (an object)
+  int steps = 0;                   ///< suite.steps: timed steps per repetition
+  int repetitions = 0;             ///< suite.repetitions
   std::vector<CaseView> cases;
 };
 

@@ -99,8 +99,8 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
     }
     const std::optional<std::string> diverged = divergence_after_step(b, net->extent(), s, total);  // untimed
     if (diverged) {
-      const Divergence first = first_divergence(suite, key, net, seed, last_full_check_before(s),
-                                                {s, *diverged, state_hash(b)});
+      const Divergence first =
+          first_divergence(suite, key, net, seed, last_full_check_before(s), {s, *diverged, state_hash(b)});
       rep.status = "diverged";
       rep.diverged_step = first.step;
       rep.diverged_reason = first.reason;
@@ -143,9 +143,10 @@ void run_plan(RunResult& result, const std::vector<PlannedRun>& plan, const std:
     // machine's, and N, L, I and the final state are exact, gateable numbers.
     const std::uint64_t seed = case_seed(result.suite, run.case_index);
     const int repetition = first_repetition[run.case_index] + run.repetition;
-    c.repetitions.push_back(naming_out_of_memory(
-        "suite " + result.suite.name + ", case " + c.label + " (net " + c.net_name + ")",
-        [&] { return run_repetition(result.suite, c.key, repetition, nets[c.key.net], seed, c.ops.samples); }));
+    c.repetitions.push_back(
+        naming_out_of_memory("suite " + result.suite.name + ", case " + c.label + " (net " + c.net_name + ")", [&] {
+          return run_repetition(result.suite, c.key, repetition, nets[c.key.net], seed, c.ops.samples);
+        }));
     ++done;
     if (options.progress) options.progress(done, total, c.label);
   }

@@ -60,9 +60,9 @@ Look judge(RunResult& result, const std::vector<TrackedClaim*>& judged, int look
   std::map<std::string, Claim> fresh;
   for (const Claim& c : all_claims(result, hooks)) fresh.emplace(c.id, c);
   const RunResult subset = subset_for_bootstrap(result, cases, scope.operations);
-  const ClaimReplicates replicates =
-      bootstrap_claims(subset, [&](const RunResult& r) { return all_claims(r, hooks); }, record.resamples,
-                       settings.seed + static_cast<std::uint64_t>(look - 1));
+  const ClaimReplicates replicates = bootstrap_claims(
+      subset, [&](const RunResult& r) { return all_claims(r, hooks); }, record.resamples,
+      settings.seed + static_cast<std::uint64_t>(look - 1));
   for (TrackedClaim* t : judged) {
     if (const auto it = fresh.find(t->claim.id); it != fresh.end()) t->claim.measured = it->second.measured;
     std::vector<Claim> one{t->claim};

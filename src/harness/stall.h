@@ -16,10 +16,10 @@ namespace tcsb {
 inline constexpr double kStallFactor = 3.0;
 
 struct Stall {
-  std::string label;        ///< the case
+  std::string label;  ///< the case
   int repetition = 0;
   double mean_over_median = 0;  ///< the repetition's mean step / median step
-  double lost_s = 0;        ///< (mean - median) x timed steps: about how long the pause lasted
+  double lost_s = 0;            ///< (mean - median) x timed steps: about how long the pause lasted
 };
 
 /// Every ok repetition whose mean step exceeds kStallFactor x its median step, in case order.

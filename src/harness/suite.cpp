@@ -8,8 +8,8 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "harness/json_file.h"
 #include "harness/case_plan.h"
+#include "harness/json_file.h"
 #include "harness/sha256.h"
 #include "harness/suite_fields.h"
 #include "harness/suite_memory.h"
@@ -52,8 +52,10 @@ NetSpec parse_net(const Reader& r, const json& j, const std::string& path) {
       net.pinned_corners = 0;
       for (std::size_t i = 0; i < pinned->size(); ++i) {
         const unsigned bit = r.choice<unsigned>((*pinned)[i], index_path(p, i),
-                                                {{"min_min", kCornerMinMin}, {"max_min", kCornerMaxMin},
-                                                 {"min_max", kCornerMinMax}, {"max_max", kCornerMaxMax}});
+                                                {{"min_min", kCornerMinMin},
+                                                 {"max_min", kCornerMaxMin},
+                                                 {"min_max", kCornerMinMax},
+                                                 {"max_max", kCornerMaxMax}});
         if (net.pinned_corners & bit) r.fail(index_path(p, i), "duplicate corner " + (*pinned)[i].dump());
         net.pinned_corners |= bit;
       }
@@ -152,8 +154,9 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   const Reader r(file);
   const json doc = parse_json_text<json>(text, file);
   if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
-  const Object root(r, doc, "", {"name", "description", "nets", "methods", "compression", "dt", "gravity", "steps",
-                                 "warmup_steps", "repetitions", "seed", "solver", "tcsb", "feedback", "fidelity"});
+  const Object root(r, doc, "",
+                    {"name", "description", "nets", "methods", "compression", "dt", "gravity", "steps", "warmup_steps",
+                     "repetitions", "seed", "solver", "tcsb", "feedback", "fidelity"});
   Suite s;
   s.path = file;
   s.sha256 = sha256_hex(text);
@@ -166,15 +169,16 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
     s.nets.push_back(parse_net(r, nets[i], index_path("nets", i)));
     for (std::size_t k = 0; k < i; ++k) {
       if (s.nets[k].name != s.nets[i].name) continue;
-      r.fail(index_path("nets", i) + ".name", "duplicate net name \"" + s.nets[i].name + "\" (also nets[" +
-                                                  std::to_string(k) + "])");
+      r.fail(index_path("nets", i) + ".name",
+             "duplicate net name \"" + s.nets[i].name + "\" (also nets[" + std::to_string(k) + "])");
     }
   }
 
   const json& methods = r.array(root.need("methods"), "methods");
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    const Method m = r.choice<Method>(methods[i], index_path("methods", i),
-        {{"plain", Method::kPlain}, {"bullet_patch", Method::kBulletPatch}, {"tcsb", Method::kTcsb}});
+    const Method m =
+        r.choice<Method>(methods[i], index_path("methods", i),
+                         {{"plain", Method::kPlain}, {"bullet_patch", Method::kBulletPatch}, {"tcsb", Method::kTcsb}});
     if (std::find(s.methods.begin(), s.methods.end(), m) != s.methods.end()) {
       r.fail(index_path("methods", i), "duplicate method \"" + std::string(method_name(m)) + "\"");
     }

@@ -26,10 +26,10 @@ enum class Method {
 
 /// Fidelity measurement settings (reference run in lockstep, error metrics).
 struct FidelitySettings {
-  bool enabled = false;                 ///< run the full-resolution reference beside each TC-SB case
-  double rms_threshold_pct = 1.0;       ///< maximal compression: smallest budget whose RMS error stays under this
-  std::vector<double> pareto_targets;   ///< extra compression targets for the Pareto sweep (empty: none)
-  bool ablations = false;               ///< run the equal-budget ablations
+  bool enabled = false;                ///< run the full-resolution reference beside each TC-SB case
+  double rms_threshold_pct = 1.0;      ///< maximal compression: smallest budget whose RMS error stays under this
+  std::vector<double> pareto_targets;  ///< extra compression targets for the Pareto sweep (empty: none)
+  bool ablations = false;              ///< run the equal-budget ablations
 };
 
 /// A validated suite.
@@ -39,14 +39,14 @@ inline constexpr int kMaxRepetitions = 1000;
 struct Suite {
   std::string name;
   std::string description;
-  std::filesystem::path path;             ///< where it was read from
-  std::string sha256;                     ///< SHA-256 of the file's bytes
+  std::filesystem::path path;  ///< where it was read from
+  std::string sha256;          ///< SHA-256 of the file's bytes
   std::vector<NetSpec> nets;
-  std::vector<Method> methods;            ///< in the order repetitions interleave them
-  std::vector<double> compression;        ///< TC-SB node budgets as fractions of the initial count; 1.0 = none
+  std::vector<Method> methods;      ///< in the order repetitions interleave them
+  std::vector<double> compression;  ///< TC-SB node budgets as fractions of the initial count; 1.0 = none
   WorldSettings world;
-  int steps = 300;                        ///< timed steps per repetition
-  int warmup_steps = 30;                  ///< untimed steps before them
+  int steps = 300;        ///< timed steps per repetition
+  int warmup_steps = 30;  ///< untimed steps before them
   int repetitions = 5;
   std::uint64_t seed = 1;
   SolverSettings solver;
@@ -59,8 +59,8 @@ struct Suite {
 class SuiteError : public std::runtime_error {
  public:
   SuiteError(const std::string& file, const std::string& field, const std::string& problem)
-      : std::runtime_error(file + ": " + (field.empty() ? std::string() : field + ": ") + problem),
-        file_(file), field_(field) {}
+      : std::runtime_error(file + ": " + (field.empty() ? std::string() : field + ": ") + problem), file_(file),
+        field_(field) {}
   const std::string& file() const { return file_; }
   const std::string& field() const { return field_; }
 

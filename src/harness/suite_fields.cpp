@@ -12,10 +12,14 @@ std::string fmt_number(double v) {
 
 std::string describe(const json& j) {
   std::string text;
-  if (j.is_string()) text = "string " + j.dump();
-  else if (j.is_object()) text = "an object";
-  else if (j.is_array()) text = "an array";
-  else text = j.dump();
+  if (j.is_string())
+    text = "string " + j.dump();
+  else if (j.is_object())
+    text = "an object";
+  else if (j.is_array())
+    text = "an array";
+  else
+    text = j.dump();
   if (text.size() > 60) text = text.substr(0, 57) + "...";
   return text;
 }

@@ -48,9 +48,7 @@ double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
   for (const Method m : suite.methods) {
     switch (m) {
       case Method::kPlain: bytes += plain; break;
-      case Method::kBulletPatch:
-        bytes += plain + 2.0 * (spec.width - 1) * (spec.height - 1) * kBulletFaceBytes;
-        break;
+      case Method::kBulletPatch: bytes += plain + 2.0 * (spec.width - 1) * (spec.height - 1) * kBulletFaceBytes; break;
       case Method::kTcsb:
         has_tcsb = true;
         bytes += tcsb_body;
@@ -83,8 +81,10 @@ std::size_t peak_net_index(const Suite& suite) {
 
 std::string format_bytes(double bytes) {
   char buf[48];
-  if (bytes >= 1024.0 * 1024 * 1024) std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / (1024.0 * 1024 * 1024));
-  else std::snprintf(buf, sizeof buf, "%.1f MiB", bytes / (1024.0 * 1024));
+  if (bytes >= 1024.0 * 1024 * 1024)
+    std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / (1024.0 * 1024 * 1024));
+  else
+    std::snprintf(buf, sizeof buf, "%.1f MiB", bytes / (1024.0 * 1024));
   return buf;
 }
 

@@ -22,11 +22,11 @@ double recorder_peak_bytes(const Suite& suite);
 
 /// A suite that would not fit: what is too large, and the figures for the error message.
 struct MemoryShortfall {
-  std::size_t net = 0;        ///< index into suite.nets of the net with the largest peak
-  bool recorder = false;      ///< the step recorder (steps x cases x repetitions), not a net, needs most
-  double needed = 0;          ///< estimate_peak_bytes(suite)
-  double usable = 0;          ///< 80 % of the headroom: what a run may take
-  MemoryHeadroom headroom;    ///< the smallest of memory_headrooms() (harness/memory_limits.h)
+  std::size_t net = 0;      ///< index into suite.nets of the net with the largest peak
+  bool recorder = false;    ///< the step recorder (steps x cases x repetitions), not a net, needs most
+  double needed = 0;        ///< estimate_peak_bytes(suite)
+  double usable = 0;        ///< 80 % of the headroom: what a run may take
+  MemoryHeadroom headroom;  ///< the smallest of memory_headrooms() (harness/memory_limits.h)
 };
 
 /// The shortfall when the suite needs more than 80 % of the smallest headroom in `headrooms`; nothing when it fits,

@@ -4,8 +4,8 @@
 
 namespace tcsb {
 
-LodTree::LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_rest,
-                 std::span<const double> leaf_mass, std::span<const std::uint8_t> leaf_pinned) {
+LodTree::LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_rest, std::span<const double> leaf_mass,
+                 std::span<const std::uint8_t> leaf_pinned) {
   if (width < 1 || height < 1) throw std::invalid_argument("LodTree: grid must be at least 1x1");
   const std::size_t leaves = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   if (leaf_rest.size() != leaves || leaf_mass.size() != leaves || leaf_pinned.size() != leaves)

@@ -21,16 +21,16 @@ inline constexpr TreeId kNoTreeNode = -1;
 /// node and its children's, scattered over two rows of a level; at 64 bytes each costs one line where 112 cost
 /// two, and lines are what an operation's time grows with on a large net (src/softbody/tc_prefetch.cpp).
 struct alignas(64) LodNode {
-  std::int16_t level = 0;                  ///< 0 for leaves
-  std::int8_t child_count = 0;             ///< 0 for leaves, 1..4 otherwise
-  std::int8_t pinned_leaf_count = 0;       ///< pinned grid nodes inside this block
-  std::int32_t gx = 0, gy = 0;             ///< coordinates in its level's grid
-  TreeId parent = kNoTreeNode;             ///< kNoTreeNode for the root
-  double mass = 0.0;                       ///< sum of the leaves' masses
+  std::int16_t level = 0;             ///< 0 for leaves
+  std::int8_t child_count = 0;        ///< 0 for leaves, 1..4 otherwise
+  std::int8_t pinned_leaf_count = 0;  ///< pinned grid nodes inside this block
+  std::int32_t gx = 0, gy = 0;        ///< coordinates in its level's grid
+  TreeId parent = kNoTreeNode;        ///< kNoTreeNode for the root
+  double mass = 0.0;                  ///< sum of the leaves' masses
   std::array<TreeId, 4> children{kNoTreeNode, kNoTreeNode, kNoTreeNode, kNoTreeNode};
-  std::int32_t leaf_x0 = 0, leaf_y0 = 0;   ///< covered leaves: [leaf_x0, leaf_x1) x [leaf_y0, leaf_y1)
+  std::int32_t leaf_x0 = 0, leaf_y0 = 0;  ///< covered leaves: [leaf_x0, leaf_x1) x [leaf_y0, leaf_y1)
   std::int32_t leaf_x1 = 0, leaf_y1 = 0;
-  TreeId anchor_leaf = kNoTreeNode;        ///< the pinned leaf inside, when exactly one; else kNoTreeNode
+  TreeId anchor_leaf = kNoTreeNode;  ///< the pinned leaf inside, when exactly one; else kNoTreeNode
 
   bool is_leaf() const { return child_count == 0; }
   bool pinned() const { return pinned_leaf_count > 0; }

@@ -19,17 +19,17 @@ enum class MassMode { kTotal, kPerNode };
 
 /// One regular W x H cloth net lying flat in the x-z plane at height `elevation`, gravity along -y.
 struct NetSpec {
-  std::string name = "net";        ///< label used in reports
-  int width = 65;                  ///< nodes along x (>= 2)
-  int height = 65;                 ///< nodes along z (>= 2)
-  double size_x = 8.0;             ///< physical extent along x, metres
-  double size_z = 8.0;             ///< physical extent along z, metres
-  double elevation = 8.0;          ///< y of the rest plane, metres
+  std::string name = "net";  ///< label used in reports
+  int width = 65;            ///< nodes along x (>= 2)
+  int height = 65;           ///< nodes along z (>= 2)
+  double size_x = 8.0;       ///< physical extent along x, metres
+  double size_z = 8.0;       ///< physical extent along z, metres
+  double elevation = 8.0;    ///< y of the rest plane, metres
   MassMode mass_mode = MassMode::kTotal;
-  double mass = 1.0;               ///< total mass (kTotal) or per-node mass (kPerNode), kg
+  double mass = 1.0;                      ///< total mass (kTotal) or per-node mass (kPerNode), kg
   unsigned pinned_corners = kAllCorners;  ///< PinnedCorner bits
-  bool shear_links = false;        ///< add both diagonals of every grid cell
-  bool bend_links = false;         ///< add links skipping one node along x and z
+  bool shear_links = false;               ///< add both diagonals of every grid cell
+  bool bend_links = false;                ///< add links skipping one node along x and z
 
   /// Number of grid nodes (leaves of the LOD tree).
   long long node_count() const { return static_cast<long long>(width) * height; }

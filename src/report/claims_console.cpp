@@ -15,9 +15,8 @@ void print_table(const char* title, const std::vector<Claim>& claims, const std:
   using Align = TextTable::Align;
   // The interval columns only when some claim has an interval (the reproduction's timing claims do).
   const bool intervals = std::any_of(claims.begin(), claims.end(), [](const Claim& c) { return c.interval; });
-  const bool looks = tracked && std::any_of(tracked->begin(), tracked->end(), [](const TrackedClaim& t) {
-                       return t.look > 0;
-                     });
+  const bool looks =
+      tracked && std::any_of(tracked->begin(), tracked->end(), [](const TrackedClaim& t) { return t.look > 0; });
   std::vector<TextTable::Column> columns{{"id", Align::kLeft}, {"check", Align::kLeft}, {"expected"}, {"measured"}};
   if (intervals) columns.push_back({tracked ? "interval" : "95% interval"});
   columns.push_back({"verdict", Align::kLeft});
@@ -31,8 +30,7 @@ void print_table(const char* title, const std::vector<Claim>& claims, const std:
     std::vector<std::string> row{c.id, comparison_name(c.comparison), general(c.expected, 4), general(c.measured, 4)};
     if (c.comparison == Comparison::kWithin)
       row[2] = general(c.expected - c.tolerance, 4) + " - " + general(c.expected + c.tolerance, 4);
-    if (intervals)
-      row.push_back(c.interval ? general(c.interval->low, 4) + " - " + general(c.interval->high, 4) : "-");
+    if (intervals) row.push_back(c.interval ? general(c.interval->low, 4) + " - " + general(c.interval->high, 4) : "-");
     row.push_back(verdict_text(verdict(c)));
     if (looks) {
       const TrackedClaim& k = (*tracked)[i];

@@ -12,7 +12,6 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
-
 std::string or_dash(const std::optional<double>& v, const char* pattern) { return v ? formatted(pattern, *v) : "–"; }
 
 std::string plural(std::size_t n, const char* one, const char* many) {
@@ -23,8 +22,10 @@ std::string plural(std::size_t n, const char* one, const char* many) {
 std::string cell(const std::string& text) {
   std::string out;
   for (const char c : terminal_safe(text)) {  // labels carry net names from the suite; the summary may go to stderr
-    if (c == '|') out += "\\|";
-    else if (c != '\n') out += c;
+    if (c == '|')
+      out += "\\|";
+    else if (c != '\n')
+      out += c;
   }
   return out;
 }
@@ -57,9 +58,8 @@ void timing_rows(std::ostream& out, const std::vector<TimingSeries>& series,
   for (std::size_t i = 0; i < series.size() && i < decisions.size(); ++i) {
     const TimingDecision& d = decisions[i];
     const std::string change = d.change ? formatted("%+.1f", 100.0 * *d.change) : "–";
-    out << "| " << cell(series[i].case_label) << " | " << series[i].metric << " | "
-        << or_dash(d.base_median, "%.4g") << " | " << or_dash(d.next_median, "%.4g") << " | "
-        << change << " | " << or_dash(d.p_value, "%.2g") << " | "
+    out << "| " << cell(series[i].case_label) << " | " << series[i].metric << " | " << or_dash(d.base_median, "%.4g")
+        << " | " << or_dash(d.next_median, "%.4g") << " | " << change << " | " << or_dash(d.p_value, "%.2g") << " | "
         << verdict_cell(d, gated, min_samples) << " |\n";
   }
 }
@@ -74,12 +74,13 @@ void change_rows(std::ostream& out, const std::vector<BehaviourChange>& changes)
     try {
       std::size_t used_a = 0, used_b = 0;
       const double a = std::stod(c.base, &used_a), b = std::stod(c.next, &used_b);
-      if (used_a == c.base.size() && used_b == c.next.size() && a != 0.0) change = formatted("%+.2f", 100.0 * (b - a) / a);
+      if (used_a == c.base.size() && used_b == c.next.size() && a != 0.0)
+        change = formatted("%+.2f", 100.0 * (b - a) / a);
     } catch (const std::exception&) {
       // Not numbers (a hash, a status): no percentage.
     }
-    out << "| " << cell(c.case_label) << " | " << cell(metric) << " | "
-        << cell(c.base) << " | " << cell(c.next) << " | " << change << " | – | **changed behaviour** |\n";
+    out << "| " << cell(c.case_label) << " | " << cell(metric) << " | " << cell(c.base) << " | " << cell(c.next)
+        << " | " << change << " | – | **changed behaviour** |\n";
   }
   if (changes.size() > shown) {
     out << "\n…and " << plural(changes.size() - shown, "more behaviour change", "more behaviour changes")
@@ -99,8 +100,8 @@ std::string comparison_verdict_line(const GateOutcome& o) {
   if (const std::size_t unreliable = o.unreliable_metrics(); unreliable > 0) {
     line += "; " + std::to_string(unreliable) + " unreliable, not gated";
   }
-  if (o.warnings > 0) line += "; " + plural(o.warnings, "absolute step time slower", "absolute step times slower") +
-                              ", not gated";
+  if (o.warnings > 0)
+    line += "; " + plural(o.warnings, "absolute step time slower", "absolute step times slower") + ", not gated";
   if (!o.timings_decided()) line += "; timings undecided: " + undecided_reason(o);
   return line + ")";
 }
@@ -135,8 +136,8 @@ std::string comparison_summary_markdown(const GateOutcome& o, const ResultView& 
   out << "## tcsb compare: " << (o.pass() ? "PASS" : "FAIL") << "\n\n";
   out << "- Base: " << describe_run(base) << "\n";
   out << "- New: " << describe_run(next) << "\n";
-  out << "- Suite `" << terminal_safe(c.suite_name) << "` (sha256 `" << c.suite_sha256.substr(0, 12) << "…`): "
-      << plural(c.cases, "case", "cases") << ", " << plural(c.repetitions, "repetition", "repetitions")
+  out << "- Suite `" << terminal_safe(c.suite_name) << "` (sha256 `" << c.suite_sha256.substr(0, 12)
+      << "…`): " << plural(c.cases, "case", "cases") << ", " << plural(c.repetitions, "repetition", "repetitions")
       << " compared.\n\n";
   out << "**" << plural(o.regressions, "regression", "regressions") << ", "
       << plural(c.changes.size(), "behaviour change", "behaviour changes");
@@ -151,11 +152,12 @@ std::string comparison_summary_markdown(const GateOutcome& o, const ResultView& 
       << " gated metrics; p-values below are Holm-adjusted) and its median grows by more than "
       << formatted("%g", 100.0 * o.settings.threshold) << " %; with fewer than " << o.settings.min_samples
       << " repetitions on a side a metric is unreliable and never fails, and with no reliable gated metric the gate "
-         "cannot pass. Gated: `" << kRatioMetric
-      << "` (TC-SB step time / plain step time of the same net, per repetition, same run)"
+         "cannot pass. Gated: `"
+      << kRatioMetric << "` (TC-SB step time / plain step time of the same net, per repetition, same run)"
       << (o.absolute_gated ? " and absolute `" + std::string(kStepMsMetric) + "`."
-                           : "; absolute `" + std::string(kStepMsMetric) + "` is only reported (`--absolute` gates "
-                             "it).")
+                           : "; absolute `" + std::string(kStepMsMetric) +
+                                 "` is only reported (`--absolute` gates "
+                                 "it).")
       << "\n\n";
 
   if (!c.deterministic) {

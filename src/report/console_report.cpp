@@ -18,8 +18,15 @@ std::optional<double> measured(const Summary& s, double v) {
 }
 
 void print_cases(const RunResult& r, std::ostream& out) {
-  TextTable t({{"case", Align::kLeft}, {"status", Align::kLeft}, {"N"}, {"L"}, {"I"}, {"median ms"}, {"CV %"},
-               {"vs plain"}, {"reps", Align::kRight}});
+  TextTable t({{"case", Align::kLeft},
+               {"status", Align::kLeft},
+               {"N"},
+               {"L"},
+               {"I"},
+               {"median ms"},
+               {"CV %"},
+               {"vs plain"},
+               {"reps", Align::kRight}});
   for (std::size_t i = 0; i < r.cases.size(); ++i) {
     const CaseResult& c = r.cases[i];
     std::optional<double> ratio;
@@ -38,8 +45,17 @@ void print_cases(const RunResult& r, std::ostream& out) {
 }
 
 void print_table1(const RunResult& r, std::ostream& out) {
-  TextTable t({{"operation", Align::kLeft}, {"N"}, {"L"}, {"node ms"}, {"node %"}, {"link ms"}, {"link %"},
-               {"complete ms"}, {"p50 us"}, {"p99 us"}, {"count"}});
+  TextTable t({{"operation", Align::kLeft},
+               {"N"},
+               {"L"},
+               {"node ms"},
+               {"node %"},
+               {"link ms"},
+               {"link %"},
+               {"complete ms"},
+               {"p50 us"},
+               {"p99 us"},
+               {"count"}});
   const std::vector<Table1Row> rows = table1(r);
   const bool none = std::all_of(rows.begin(), rows.end(), [](const Table1Row& row) { return row.count == 0; });
   for (const Table1Row& row : none ? std::vector<Table1Row>{} : rows) {
@@ -51,13 +67,23 @@ void print_table1(const RunResult& r, std::ostream& out) {
                std::to_string(row.count)});
   }
   out << "Table 1: TreeCut operations (mean per operation over the TC-SB cases):\n";
-  if (t.empty()) out << "  (no TC-SB operations were recorded)\n";
-  else t.print(out);
+  if (t.empty())
+    out << "  (no TC-SB operations were recorded)\n";
+  else
+    t.print(out);
 }
 
 void print_table2(const RunResult& r, std::ostream& out) {
-  TextTable t({{"method", Align::kLeft}, {"compression", Align::kLeft}, {"N"}, {"L"}, {"I"}, {"total ms"},
-               {"time/plain"}, {"N/plain"}, {"nets"}, {"status", Align::kLeft}});
+  TextTable t({{"method", Align::kLeft},
+               {"compression", Align::kLeft},
+               {"N"},
+               {"L"},
+               {"I"},
+               {"total ms"},
+               {"time/plain"},
+               {"N/plain"},
+               {"nets"},
+               {"status", Align::kLeft}});
   for (const Table2Row& row : table2(r)) {
     t.add_row({row.method, row.compression_label, fixed(row.N, 0), fixed(row.L, 0), fixed(row.I, 1),
                general(row.total_ms, 4), fixed(row.time_ratio_vs_plain, 3), fixed(row.node_ratio, 3),
@@ -68,18 +94,23 @@ void print_table2(const RunResult& r, std::ostream& out) {
 }
 
 void print_fits(const RunResult& r, std::ostream& out) {
-  TextTable steps({{"method", Align::kLeft}, {"compression", Align::kLeft}, {"slope ms/node"}, {"intercept ms"},
-                   {"R2"}, {"points"}});
+  TextTable steps({{"method", Align::kLeft},
+                   {"compression", Align::kLeft},
+                   {"slope ms/node"},
+                   {"intercept ms"},
+                   {"R2"},
+                   {"points"}});
   for (const StepFit& f : step_ms_vs_nodes(r)) {
     steps.add_row({f.method, compression_label(f.compression), general(f.slope_ms_per_node, 4),
                    fixed(f.intercept_ms, 4), fixed(f.r2, 4), std::to_string(f.points.size())});
   }
   out << "Step time vs nodes (linear fit, one point per net):\n";
-  if (steps.empty()) out << "  (no method has 2 or more ok nets)\n";
-  else steps.print(out);
+  if (steps.empty())
+    out << "  (no method has 2 or more ok nets)\n";
+  else
+    steps.print(out);
 
-  TextTable ops({{"operation", Align::kLeft}, {"slope ms/node"}, {"intercept ms"}, {"R2"}, {"flatness"},
-                 {"points"}});
+  TextTable ops({{"operation", Align::kLeft}, {"slope ms/node"}, {"intercept ms"}, {"R2"}, {"flatness"}, {"points"}});
   for (const OpFit& f : op_ms_vs_nodes(r)) {
     ops.add_row({f.operation, general(f.slope_ms_per_node, 4), general(f.intercept_ms, 4), fixed(f.r2, 4),
                  fixed(f.flatness, 3), std::to_string(f.points.size())});
@@ -92,9 +123,8 @@ void print_fits(const RunResult& r, std::ostream& out) {
 
 void print_console_report(const RunResult& result, std::ostream& out) {
   out << "Suite " << terminal_safe(result.suite.name) << " (" << terminal_safe(result.suite.path.string()) << "), "
-      << result.cases.size()
-      << " cases, " << result.suite.repetitions << " repetitions x " << result.suite.steps << " steps, wall "
-      << fixed(result.wall_s, 2) << " s\n\n";
+      << result.cases.size() << " cases, " << result.suite.repetitions << " repetitions x " << result.suite.steps
+      << " steps, wall " << fixed(result.wall_s, 2) << " s\n\n";
   print_cases(result, out);
   out << '\n';
   print_table1(result, out);

@@ -16,8 +16,18 @@ using Align = TextTable::Align;
 std::optional<double> value(const MetricSummary& s, double v) { return s.count > 0 ? std::optional(v) : std::nullopt; }
 
 void print_rows(const std::vector<FidelityRow>& rows, std::ostream& out) {
-  TextTable t({{"method", Align::kLeft}, {"compression", Align::kLeft}, {"N"}, {"RMS %"}, {"RMS p95 %"}, {"max %"},
-               {"w-RMS %"}, {"pop max %"}, {"E drift %"}, {"time/plain"}, {"switch ms"}, {"nets"},
+  TextTable t({{"method", Align::kLeft},
+               {"compression", Align::kLeft},
+               {"N"},
+               {"RMS %"},
+               {"RMS p95 %"},
+               {"max %"},
+               {"w-RMS %"},
+               {"pop max %"},
+               {"E drift %"},
+               {"time/plain"},
+               {"switch ms"},
+               {"nets"},
                {"status", Align::kLeft}});
   for (const FidelityRow& r : rows) {
     t.add_row({r.method, compression_label(r.compression), fixed(r.N, 0), fixed(value(r.rms_pct, r.rms_pct.mean), 3),
@@ -33,7 +43,11 @@ void print_rows(const std::vector<FidelityRow>& rows, std::ostream& out) {
 }
 
 void print_sweep(const std::vector<ParetoPoint>& sweep, const MaxCompression& m, std::ostream& out) {
-  TextTable t({{"compression", Align::kLeft}, {"N"}, {"time/plain"}, {"RMS %"}, {"worst net RMS %"},
+  TextTable t({{"compression", Align::kLeft},
+               {"N"},
+               {"time/plain"},
+               {"RMS %"},
+               {"worst net RMS %"},
                {"Pareto front", Align::kLeft}});
   for (const ParetoPoint& p : sweep)
     t.add_row({compression_label(p.compression), fixed(p.N, 0), fixed(p.time_ratio_vs_plain, 3), fixed(p.rms_pct, 3),

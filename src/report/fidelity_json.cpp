@@ -16,8 +16,12 @@ ojson metric_json(const MetricSummary& s) {
 }
 
 ojson claim_json(const Claim& c) {
-  return {{"id", c.id},           {"description", c.description}, {"comparison", comparison_name(c.comparison)},
-          {"expected", json_number(c.expected)}, {"measured", json_number(c.measured)}, {"verdict", verdict_name(verdict(c))}};
+  return {{"id", c.id},
+          {"description", c.description},
+          {"comparison", comparison_name(c.comparison)},
+          {"expected", json_number(c.expected)},
+          {"measured", json_number(c.measured)},
+          {"verdict", verdict_name(verdict(c))}};
 }
 
 ojson row_json(const FidelityRow& r) {

@@ -64,12 +64,8 @@ ojson context_json(const ResultView& r) {
 /// The fields every entry of one case shares, in Google Benchmark's order.
 ojson entry_head(const std::string& name, const CaseView& c, std::size_t family, const char* run_type,
                  int repetitions) {
-  return {{"name", name},
-          {"family_index", family},
-          {"per_family_instance_index", 0},
-          {"run_name", c.label},
-          {"run_type", run_type},
-          {"repetitions", repetitions}};
+  return {{"name", name},        {"family_index", family}, {"per_family_instance_index", 0},
+          {"run_name", c.label}, {"run_type", run_type},   {"repetitions", repetitions}};
 }
 
 struct OkSamples {

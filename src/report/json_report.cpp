@@ -75,10 +75,9 @@ namespace {
 ojson summary_json(const Summary& s) {
   // An empty sample has no median: null, not a misleading 0 (the case's status says why).
   const auto value = [&](double v) { return s.count > 0 ? json_number(v) : ojson(nullptr); };
-  return {{"count", s.count},         {"median", value(s.median)}, {"mean", value(s.mean)},
-          {"stddev", value(s.stddev)}, {"cv", value(s.cv)},         {"p95", value(s.p95)},
-          {"p99", value(s.p99)},       {"min", value(s.min)},       {"max", value(s.max)},
-          {"unstable", s.unstable}};
+  return {{"count", s.count},    {"median", value(s.median)}, {"mean", value(s.mean)}, {"stddev", value(s.stddev)},
+          {"cv", value(s.cv)},   {"p95", value(s.p95)},       {"p99", value(s.p99)},   {"min", value(s.min)},
+          {"max", value(s.max)}, {"unstable", s.unstable}};
 }
 
 ojson repetition_json(const RepetitionResult& r) {

@@ -10,12 +10,12 @@ namespace {
 using ojson = nlohmann::ordered_json;
 
 // Keywords that only annotate: allowed anywhere, never checked.
-const std::set<std::string> kAnnotations = {"$schema", "$id", "$comment", "title", "description", "examples",
-                                            "default"};
+const std::set<std::string> kAnnotations = {"$schema",     "$id",      "$comment", "title",
+                                            "description", "examples", "default"};
 // Keywords this validator implements.
-const std::set<std::string> kKeywords = {"$defs",     "$ref",  "type",     "enum",      "const",     "properties",
-                                         "required",  "items", "minItems", "minimum",   "maximum",   "minLength",
-                                         "maxLength", "additionalProperties"};
+const std::set<std::string> kKeywords = {
+    "$defs", "$ref",     "type",    "enum",    "const",     "properties", "required",
+    "items", "minItems", "minimum", "maximum", "minLength", "maxLength",  "additionalProperties"};
 const std::set<std::string> kTypes = {"object", "array", "string", "number", "integer", "boolean", "null"};
 // A $ref that leads to a $ref ... without descending into the document: a cycle in the schema.
 constexpr int kMaxRefChain = 32;
@@ -189,8 +189,10 @@ class Validator {
       if (properties != schema.end() && properties->contains(key)) {
         validate(value, (*properties)[key], sub);
       } else if (additional != schema.end()) {
-        if (additional->is_boolean() && !additional->get<bool>()) fail(sub, "unexpected key");
-        else validate(value, *additional, sub);
+        if (additional->is_boolean() && !additional->get<bool>())
+          fail(sub, "unexpected key");
+        else
+          validate(value, *additional, sub);
       }
     }
   }

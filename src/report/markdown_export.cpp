@@ -82,23 +82,18 @@ std::string object_text(const ojson& object) {
 /// Any JSON value as cell text: numbers by markdown_number, booleans yes/no, null as an empty cell.
 std::string text_of(const ojson& value) {
   switch (value.type()) {
-    case ojson::value_t::string:
-      return escaped(value.get_ref<const std::string&>());
-    case ojson::value_t::boolean:
-      return value.get<bool>() ? "yes" : "no";
+    case ojson::value_t::string: return escaped(value.get_ref<const std::string&>());
+    case ojson::value_t::boolean: return value.get<bool>() ? "yes" : "no";
     case ojson::value_t::number_integer:
     case ojson::value_t::number_unsigned:
-    case ojson::value_t::number_float:
-      return markdown_number(value);
+    case ojson::value_t::number_float: return markdown_number(value);
     case ojson::value_t::array: {
       std::string out;
       for (const ojson& v : value) out += (out.empty() ? "" : ", ") + text_of(v);
       return out;
     }
-    case ojson::value_t::object:
-      return escaped(object_text(value));
-    default:
-      return "";
+    case ojson::value_t::object: return escaped(object_text(value));
+    default: return "";
   }
 }
 
@@ -294,17 +289,15 @@ std::string table2_section(const ojson& doc) {
     columns.push_back({"pop max %", error("popping_pct")});
   }
   std::string out = "### Table 2\n\n";
-  out +=
-      "Mean over nets of N (nodes), L (links), I (interpolations) and the mean step time in ms; ratio: step time "
-      "to plain Bullet's, same run.";
+  out += "Mean over nets of N (nodes), L (links), I (interpolations) and the mean step time in ms; ratio: step time "
+         "to plain Bullet's, same run.";
   if (with_paper) {
     const std::string hardware = text_of(at(reproduction, "paper_hardware"));
     out += " Paper" + (hardware.empty() ? std::string() : " (" + hardware + ")") + " beside ours.";
   }
   if (with_error)
-    out +=
-        " RMS: error against full-resolution plain Bullet in % of the net's extent, mean over steps and nets; "
-        "max and pop: max over steps and nets.";
+    out += " RMS: error against full-resolution plain Bullet in % of the net's extent, mean over steps and nets; "
+           "max and pop: max over steps and nets.";
   return out + "\n\n" + table(columns, rows);
 }
 
@@ -362,9 +355,8 @@ std::string scaling_section(const ojson& doc) {
   const ojson& steps = at(scaling, "step_ms_vs_nodes");
   const ojson& ops = at(scaling, "op_ms_vs_nodes");
   if (!non_empty_array(steps) && !non_empty_array(ops)) return "";
-  std::string out =
-      "### Scaling\n\nLeast-squares lines through one point per net (mean nodes, median step or "
-      "operation time in ms); flatness: how far an operation's cost moves across the nets' sizes.\n";
+  std::string out = "### Scaling\n\nLeast-squares lines through one point per net (mean nodes, median step or "
+                    "operation time in ms); flatness: how far an operation's cost moves across the nets' sizes.\n";
   if (non_empty_array(steps)) {
     out += "\nStep time against nodes:\n\n" +
            table({field("method", "method"),
@@ -378,8 +370,9 @@ std::string scaling_section(const ojson& doc) {
   }
   if (non_empty_array(ops)) {
     // An operation costs microseconds: in ms its intercept would need an exponent.
-    const Column intercept_us{
-        "intercept µs", [](const ojson& row) { return markdown_number(scaled(at(row, "intercept_ms"), 1000.0)); }};
+    const Column intercept_us{"intercept µs", [](const ojson& row) {
+                                return markdown_number(scaled(at(row, "intercept_ms"), 1000.0));
+                              }};
     out += "\nOperations against nodes:\n\n" +
            table({field("operation", "operation"), slope_column("µs", 1000.0), intercept_us, field("r²", "r2"),
                   field("flatness", "flatness"), points_column(), field("valid", "valid")},
@@ -449,9 +442,8 @@ std::string claims_section(const ojson& doc) {
   const ojson& claims = at(reproduction, "claims");
   const ojson& targets = at(reproduction, "targets");
   if (!non_empty_array(claims) && !non_empty_array(targets)) return "";
-  std::string out =
-      "### Claims\n\nInterval: where the measured value could lie had the run been repeated "
-      "(percentile bootstrap of the repetitions), when the run has enough repetitions.";
+  std::string out = "### Claims\n\nInterval: where the measured value could lie had the run been repeated "
+                    "(percentile bootstrap of the repetitions), when the run has enough repetitions.";
   if (const ojson& v = at(reproduction, "verdict"); !v.is_null()) {
     out += " Verdict of the reproduction: **" + text_of(v) + "**.";
   } else if (const ojson& pass = at(reproduction, "pass"); pass.is_boolean()) {
@@ -476,11 +468,10 @@ std::string fidelity_section(const ojson& doc) {
   const ojson& pareto = at(doc, "pareto");
   const ojson& best = at(doc, "max_compression");
   if (!non_empty_array(rows) && !non_empty_array(pareto) && !best.is_object()) return "";
-  std::string out =
-      "### Fidelity\n\nError against full-resolution plain Bullet, in % of the net's extent (energy "
-      "drift: in % of the reference's initial energy); rows combine nets as mean of means and p95s, max "
-      "of maxima. Time ratio: the subject's mean step to the reference's, both timed in the fidelity "
-      "pass.\n";
+  std::string out = "### Fidelity\n\nError against full-resolution plain Bullet, in % of the net's extent (energy "
+                    "drift: in % of the reference's initial energy); rows combine nets as mean of means and p95s, max "
+                    "of maxima. Time ratio: the subject's mean step to the reference's, both timed in the fidelity "
+                    "pass.\n";
   if (non_empty_array(rows)) {
     std::vector<Column> columns{field("method", "method"), {"compression", [](const ojson& row) {
                                                               return compression_text(at(row, "compression"));

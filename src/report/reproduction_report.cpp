@@ -43,7 +43,8 @@ nlohmann::ordered_json claim_json(const TrackedClaim& t) {
   const Claim& c = t.claim;
   nlohmann::ordered_json interval = nullptr;
   if (c.interval)
-    interval = {{"low", json_number(c.interval->low)}, {"high", json_number(c.interval->high)},
+    interval = {{"low", json_number(c.interval->low)},
+                {"high", json_number(c.interval->high)},
                 {"confidence", json_number(t.confidence)}};
   return {{"id", c.id},
           {"description", c.description},
@@ -59,9 +60,14 @@ nlohmann::ordered_json claim_json(const TrackedClaim& t) {
 }
 
 nlohmann::ordered_json look_json(const Look& l) {
-  return {{"look", l.look},           {"extra_repetitions", l.extra}, {"cases", l.cases},
-          {"repetitions", l.repetitions}, {"confidence", json_number(l.confidence)},
-          {"resamples", l.resamples}, {"judged", l.judged},          {"undecided", l.undecided},
+  return {{"look", l.look},
+          {"extra_repetitions", l.extra},
+          {"cases", l.cases},
+          {"repetitions", l.repetitions},
+          {"confidence", json_number(l.confidence)},
+          {"resamples", l.resamples},
+          {"judged", l.judged},
+          {"undecided", l.undecided},
           {"seconds", json_number(l.seconds)}};
 }
 
@@ -71,10 +77,14 @@ nlohmann::ordered_json fit_json(const StepFit& f) {
     return f.points.empty() ? nlohmann::ordered_json(nullptr)
                             : json_number(last ? f.points.back().nodes : f.points.front().nodes);
   };
-  return {{"method", f.method},          {"points", f.points.size()},
-          {"min_nodes", nodes(false)},   {"max_nodes", nodes(true)},
-          {"r2", json_number(f.r2)},     {"slope_ms_per_node", json_number(f.slope_ms_per_node)},
-          {"intercept_ms", json_number(f.intercept_ms)}, {"loglog_exponent", json_number(f.loglog_exponent)}};
+  return {{"method", f.method},
+          {"points", f.points.size()},
+          {"min_nodes", nodes(false)},
+          {"max_nodes", nodes(true)},
+          {"r2", json_number(f.r2)},
+          {"slope_ms_per_node", json_number(f.slope_ms_per_node)},
+          {"intercept_ms", json_number(f.intercept_ms)},
+          {"loglog_exponent", json_number(f.loglog_exponent)}};
 }
 
 /// The deterministic targets: judged on their values, once, after the looks.
@@ -99,14 +109,21 @@ std::vector<FidelityRow> fidelity_rows_of(const RunResult& result) {
 
 /// The looks taken, and what the verdicts rest on.
 void print_looks(const Reproduction& reproduction, std::ostream& out) {
-  TextTable t({{"look"}, {"extra reps"}, {"cases"}, {"reps"}, {"confidence"}, {"resamples"}, {"judged"},
-               {"undecided"}, {"seconds"}});
+  TextTable t({{"look"},
+               {"extra reps"},
+               {"cases"},
+               {"reps"},
+               {"confidence"},
+               {"resamples"},
+               {"judged"},
+               {"undecided"},
+               {"seconds"}});
   for (const Look& l : reproduction.looks)
     t.add_row({std::to_string(l.look), std::to_string(l.extra), std::to_string(l.cases), std::to_string(l.repetitions),
                fixed(100.0 * l.confidence, 2) + "%", std::to_string(l.resamples), std::to_string(l.judged),
                std::to_string(l.undecided), fixed(l.seconds, 1)});
-  out << "Looks (budget " << fixed(reproduction.budget_s, 0) << " s; ended: "
-      << looks_ended_name(reproduction.ended) << "):\n";
+  out << "Looks (budget " << fixed(reproduction.budget_s, 0) << " s; ended: " << looks_ended_name(reproduction.ended)
+      << "):\n";
   t.print(out);
   out << "A claim measured from repetitions passes when its whole interval satisfies it, fails when none of it does, "
          "and is undecided otherwise (percentile bootstrap of the repetitions, a net's cases drawn together so "
@@ -138,10 +155,10 @@ Reproduction check_reproduction(RunResult& result, PaperReference paper, const R
   };
   hooks.targets_of = [](const RunResult& run) { return project_targets(table2(run)); };
   hooks.scope_of = scope_of;
-  hooks.run_more = options.run_more ? options.run_more
-                                    : [](RunResult& run, const std::vector<std::size_t>& cases, int extra) {
-                                        run_more_repetitions(run, cases, extra);
-                                      };
+  hooks.run_more =
+      options.run_more ? options.run_more : [](RunResult& run, const std::vector<std::size_t>& cases, int extra) {
+        run_more_repetitions(run, cases, extra);
+      };
   const StepClock::time_point start = StepClock::now();
   hooks.now_s = [start] { return ms_between(start, StepClock::now()) / 1000.0; };
   hooks.on_look = options.on_look;
@@ -176,20 +193,28 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
   for (const Table2Row& row : table2(result)) {
     const PaperTable2Row* p = paper_row(reproduction.paper, row);
     nlohmann::ordered_json paper = nullptr;
-    if (p) paper = {{"N", p->N}, {"L", p->L}, {"I", p->I}, {"total_ms", p->total_ms},
-                    {"time_ratio_vs_plain", json_number(reproduction.paper.time_ratio(p->compression))}};
+    if (p)
+      paper = {{"N", p->N},
+               {"L", p->L},
+               {"I", p->I},
+               {"total_ms", p->total_ms},
+               {"time_ratio_vs_plain", json_number(reproduction.paper.time_ratio(p->compression))}};
     if (p && p->method != "TC-SB") paper["time_ratio_vs_plain"] = 1.0;
     t2.push_back({{"method", row.method},
                   {"compression", row.compression_label},
                   {"paper", paper},
-                  {"ours", {{"N", json_number(row.N)}, {"L", json_number(row.L)}, {"I", json_number(row.I)},
-                            {"total_ms", json_number(row.total_ms)},
-                            {"time_ratio_vs_plain", json_number(row.time_ratio_vs_plain)},
-                            {"node_ratio", json_number(row.node_ratio)}}}});
+                  {"ours",
+                   {{"N", json_number(row.N)},
+                    {"L", json_number(row.L)},
+                    {"I", json_number(row.I)},
+                    {"total_ms", json_number(row.total_ms)},
+                    {"time_ratio_vs_plain", json_number(row.time_ratio_vs_plain)},
+                    {"node_ratio", json_number(row.node_ratio)}}}});
     // What the speed costs, from the fidelity pass (the `fidelity` section has every statistic).
     nlohmann::ordered_json error = nullptr;
     if (const FidelityRow* f = fidelity_row(fidelity, row))
-      error = {{"rms_pct", json_number(f->rms_pct.mean)}, {"max_pct", json_number(f->max_pct.max)},
+      error = {{"rms_pct", json_number(f->rms_pct.mean)},
+               {"max_pct", json_number(f->max_pct.max)},
                {"weighted_rms_pct", json_number(f->weighted_rms_pct.mean)},
                {"popping_pct", json_number(f->popping_pct.max)},
                {"energy_drift_pct", json_number(f->energy_drift_pct.mean)}};
@@ -199,15 +224,25 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
   for (const Table1Row& row : table1(result)) {
     const PaperTable1Row* p = paper_row(reproduction.paper, row.operation);
     nlohmann::ordered_json paper = nullptr;
-    if (p) paper = {{"N", p->N}, {"L", p->L}, {"node_ops_ms", p->node_ops_ms}, {"link_ops_ms", p->link_ops_ms},
-                    {"complete_ms", p->complete_ms}};
+    if (p)
+      paper = {{"N", p->N},
+               {"L", p->L},
+               {"node_ops_ms", p->node_ops_ms},
+               {"link_ops_ms", p->link_ops_ms},
+               {"complete_ms", p->complete_ms}};
     const bool any = row.count > 0;
     const auto v = [&](double x) { return any ? json_number(x) : nlohmann::ordered_json(nullptr); };
     t1.push_back({{"operation", row.operation},
                   {"paper", paper},
-                  {"ours", {{"N", v(row.N)}, {"L", v(row.L)}, {"node_ops_ms", v(row.node_ops_ms)},
-                            {"link_ops_ms", v(row.link_ops_ms)}, {"complete_ms", v(row.complete_ms)},
-                            {"p50_us", v(row.p50_us)}, {"p99_us", v(row.p99_us)}, {"count", row.count}}}});
+                  {"ours",
+                   {{"N", v(row.N)},
+                    {"L", v(row.L)},
+                    {"node_ops_ms", v(row.node_ops_ms)},
+                    {"link_ops_ms", v(row.link_ops_ms)},
+                    {"complete_ms", v(row.complete_ms)},
+                    {"p50_us", v(row.p50_us)},
+                    {"p99_us", v(row.p99_us)},
+                    {"count", row.count}}}});
   }
   nlohmann::ordered_json claims = nlohmann::ordered_json::array(), targets = nlohmann::ordered_json::array(),
                          looks = nlohmann::ordered_json::array();
@@ -218,28 +253,39 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
           {"paper_hardware", reproduction.paper.hardware},
           {"table1", t1},
           {"table2", t2},
-          {"figure5", {{"description", "step time against simulated nodes, one least-squares line per method through "
-                                       "every usable case (TC-SB: all budgets); plain's is reported, not claimed"},
-                       {"plain", fit_json(step_fit_of_method(result, Method::kPlain))},
-                       {"tcsb", fit_json(step_fit_of_method(result, Method::kTcsb))}}},
+          {"figure5",
+           {{"description", "step time against simulated nodes, one least-squares line per method through "
+                            "every usable case (TC-SB: all budgets); plain's is reported, not claimed"},
+            {"plain", fit_json(step_fit_of_method(result, Method::kPlain))},
+            {"tcsb", fit_json(step_fit_of_method(result, Method::kTcsb))}}},
           {"claims", claims},
           {"targets", targets},
           {"verdict", verdict_name(reproduction.verdict())},
-          {"sequential", {{"alpha", json_number(kSequentialAlpha)},
-                          {"correction", "look k spends alpha / 2^k: a central 1 - 2 alpha_k percentile bootstrap "
-                                         "interval, ceil(10 / alpha_k) resamples"},
-                          {"budget_s", json_number(reproduction.budget_s)},
-                          {"ended", looks_ended_name(reproduction.ended)},
-                          {"looks", looks}}},
+          {"sequential",
+           {{"alpha", json_number(kSequentialAlpha)},
+            {"correction", "look k spends alpha / 2^k: a central 1 - 2 alpha_k percentile bootstrap "
+                           "interval, ceil(10 / alpha_k) resamples"},
+            {"budget_s", json_number(reproduction.budget_s)},
+            {"ended", looks_ended_name(reproduction.ended)},
+            {"looks", looks}}},
           {"bootstrap_s", json_number(reproduction.bootstrap_s)},
           {"wall_s", json_number(reproduction.wall_s)}};
 }
 
 void print_reproduction(const RunResult& result, const Reproduction& reproduction, std::ostream& out) {
   const std::vector<FidelityRow> fidelity = fidelity_rows_of(result);
-  std::vector<TextTable::Column> columns{{"method", Align::kLeft}, {"compression", Align::kLeft}, {"paper N"},
-                                         {"ours N"}, {"paper L"}, {"ours L"}, {"paper I"}, {"ours I"}, {"paper ms"},
-                                         {"ours ms"}, {"paper ratio"}, {"ours ratio"}};
+  std::vector<TextTable::Column> columns{{"method", Align::kLeft},
+                                         {"compression", Align::kLeft},
+                                         {"paper N"},
+                                         {"ours N"},
+                                         {"paper L"},
+                                         {"ours L"},
+                                         {"paper I"},
+                                         {"ours I"},
+                                         {"paper ms"},
+                                         {"ours ms"},
+                                         {"paper ratio"},
+                                         {"ours ratio"}};
   if (result.fidelity) {  // the paper reports no error; ours, beside the speed it buys
     columns.push_back({"RMS %"});
     columns.push_back({"max %"});
@@ -251,10 +297,18 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
     const auto pv = [&](double x) { return p ? std::optional(x) : std::nullopt; };
     std::optional<double> paper_ratio;
     if (p) paper_ratio = p->method == "TC-SB" ? reproduction.paper.time_ratio(p->compression) : 1.0;
-    std::vector<std::string> cells{row.method, row.compression_label, fixed(pv(p ? p->N : 0), 0), fixed(row.N, 0),
-                                   fixed(pv(p ? p->L : 0), 0), fixed(row.L, 0), fixed(pv(p ? p->I : 0), 1),
-                                   fixed(row.I, 1), fixed(pv(p ? p->total_ms : 0), 2), general(row.total_ms, 4),
-                                   fixed(paper_ratio, 3), fixed(row.time_ratio_vs_plain, 3)};
+    std::vector<std::string> cells{row.method,
+                                   row.compression_label,
+                                   fixed(pv(p ? p->N : 0), 0),
+                                   fixed(row.N, 0),
+                                   fixed(pv(p ? p->L : 0), 0),
+                                   fixed(row.L, 0),
+                                   fixed(pv(p ? p->I : 0), 1),
+                                   fixed(row.I, 1),
+                                   fixed(pv(p ? p->total_ms : 0), 2),
+                                   general(row.total_ms, 4),
+                                   fixed(paper_ratio, 3),
+                                   fixed(row.time_ratio_vs_plain, 3)};
     if (const FidelityRow* f = fidelity_row(fidelity, row)) {
       cells.push_back(fixed(f->rms_pct.mean, 3));
       cells.push_back(fixed(f->max_pct.max, 3));
@@ -269,8 +323,16 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
   out << "):\n";
   t2.print(out);
 
-  TextTable t1({{"operation", Align::kLeft}, {"paper N"}, {"ours N"}, {"paper us"}, {"ours us"}, {"ours p50 us"},
-                {"ours p99 us"}, {"paper node %"}, {"ours node %"}, {"count"}});
+  TextTable t1({{"operation", Align::kLeft},
+                {"paper N"},
+                {"ours N"},
+                {"paper us"},
+                {"ours us"},
+                {"ours p50 us"},
+                {"ours p99 us"},
+                {"paper node %"},
+                {"ours node %"},
+                {"count"}});
   for (const Table1Row& row : table1(result)) {
     const PaperTable1Row* p = paper_row(reproduction.paper, row.operation);
     const auto pv = [&](double x) { return p ? std::optional(x) : std::nullopt; };
@@ -294,8 +356,8 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
   print_claims("Claims of the paper (any FAIL: exit 1; else any undecided: exit 4):", reproduction.claims, out);
   print_claims("Targets of this project (reported, not gating):", reproduction.targets, out);
   print_looks(reproduction, out);
-  out << "Reproduction: " << verdict_text(reproduction.verdict()) << " (" << fixed(reproduction.wall_s, 1)
-      << " s, " << reproduction.looks.size() << " look(s))\n";
+  out << "Reproduction: " << verdict_text(reproduction.verdict()) << " (" << fixed(reproduction.wall_s, 1) << " s, "
+      << reproduction.looks.size() << " look(s))\n";
 }
 
 }  // namespace tcsb

@@ -31,13 +31,13 @@ struct ReproductionOptions {
 /// A run checked against the paper.
 struct Reproduction {
   PaperReference paper;
-  std::vector<TrackedClaim> claims;   ///< the paper's claims (decide the exit code)
-  std::vector<TrackedClaim> targets;  ///< this project's stricter targets (reported only)
-  std::vector<Look> looks;            ///< the looks taken, the first being the run's own repetitions
+  std::vector<TrackedClaim> claims;         ///< the paper's claims (decide the exit code)
+  std::vector<TrackedClaim> targets;        ///< this project's stricter targets (reported only)
+  std::vector<Look> looks;                  ///< the looks taken, the first being the run's own repetitions
   LooksEnded ended = LooksEnded::kDecided;  ///< why the looks ended
-  double budget_s = 0;                ///< the budget the looks had
-  double bootstrap_s = 0;             ///< computing the claims' intervals, over all looks
-  double wall_s = 0;                  ///< the whole reproduction: the run, fidelity pass, extra repetitions, intervals
+  double budget_s = 0;                      ///< the budget the looks had
+  double bootstrap_s = 0;                   ///< computing the claims' intervals, over all looks
+  double wall_s = 0;  ///< the whole reproduction: the run, fidelity pass, extra repetitions, intervals
   /// Over the paper's claims: kFail if any failed, else kUndecided if any is undecided, else kPass.
   Verdict verdict() const;
 };

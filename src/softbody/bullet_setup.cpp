@@ -27,8 +27,9 @@ void init_net_nodes(btSoftBody& body, const Net& net, int capacity) {
     const Eigen::Vector3d& r = net.rest_positions()[static_cast<std::size_t>(i)];
     node.m_x = to_bullet(r);
     node.m_q = node.m_x;
-    const btScalar mass = net.pinned()[static_cast<std::size_t>(i)] ? btScalar(0)
-                                                                      : static_cast<btScalar>(net.masses()[static_cast<std::size_t>(i)]);
+    const btScalar mass = net.pinned()[static_cast<std::size_t>(i)]
+                              ? btScalar(0)
+                              : static_cast<btScalar>(net.masses()[static_cast<std::size_t>(i)]);
     node.m_im = mass > 0 ? 1 / mass : 0;
     node.m_material = body.m_materials[0];
     body.m_X[i] = node.m_x;

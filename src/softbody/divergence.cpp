@@ -28,8 +28,8 @@ std::optional<std::string> full_divergence_check(const btSoftBody& body, double 
     const btSoftBody::Link& l = body.m_links[i];
     const double length = (l.m_n[0]->m_x - l.m_n[1]->m_x).length();
     if (!(length <= max_link_length))
-      return "link " + std::to_string(i) + " is " + std::to_string(length) + " m long (rest " +
-             std::to_string(l.m_rl) + " m), beyond the sane bound " + std::to_string(max_link_length) + " m";
+      return "link " + std::to_string(i) + " is " + std::to_string(length) + " m long (rest " + std::to_string(l.m_rl) +
+             " m), beyond the sane bound " + std::to_string(max_link_length) + " m";
   }
   return std::nullopt;
 }

@@ -20,9 +20,9 @@ std::optional<std::string> quick_divergence_check(const btSoftBody& body, double
 std::optional<std::string> full_divergence_check(const btSoftBody& body, double max_link_length);
 
 /// A body exploding is a result, not a crash: these bounds are generous enough never to trip on a sane cloth.
-inline constexpr double kMaxExtentFactor = 10.0;  ///< bounds larger than 10x the net's size
+inline constexpr double kMaxExtentFactor = 10.0;     ///< bounds larger than 10x the net's size
 inline constexpr double kMaxLinkLengthFactor = 2.0;  ///< a link longer than twice the net's size
-inline constexpr int kFullCheckEvery = 50;        ///< steps between O(N + L) checks
+inline constexpr int kFullCheckEvery = 50;           ///< steps between O(N + L) checks
 
 /// The check a timed run makes after step `step` (0-based) of `total`: the quick check every step, the full check
 /// every kFullCheckEvery steps and after the last, with the bounds above scaled by the net's extent. A divergence

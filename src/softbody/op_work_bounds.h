@@ -21,7 +21,8 @@
 // Counts per primitive (tc_softbody.cpp), as OpWork defines them:
 //   add_node:    nodes 2, tree_records 2, dbvt_leaves 1
 //   remove_node: nodes 1, tree_records 1, dbvt_leaves 1;
-//                relocation_nodes 1 and relocation_links <= 12 (the node moved into the hole, its links re-pointed, (D))
+//                relocation_nodes 1 and relocation_links <= 12 (the node moved into the hole, its links re-pointed,
+//                (D))
 //   add_link:    links 1, tree_records 2
 //   remove_link: links 1, tree_records 2; relocation_links 1 (the last link moved into its place)
 //   refresh of a link constant: links 1, tree_records 2
@@ -46,11 +47,11 @@
 
 namespace tcsb::op_work_bounds {
 
-inline constexpr int kMaxChildren = 4;                                ///< (C)
-inline constexpr int kMaxSteadyDegree = 8;                            ///< (B): two neighbours per side
-inline constexpr int kMaxDegree = IncidenceList::kCapacity;           ///< (D): 12
-inline constexpr int kMaxWalkProbes = 16;                             ///< (W)
-inline constexpr int kMaxWalkVisits = kMaxSteadyDegree;               ///< (W), (B)
+inline constexpr int kMaxChildren = 4;                       ///< (C)
+inline constexpr int kMaxSteadyDegree = 8;                   ///< (B): two neighbours per side
+inline constexpr int kMaxDegree = IncidenceList::kCapacity;  ///< (D): 12
+inline constexpr int kMaxWalkProbes = 16;                    ///< (W)
+inline constexpr int kMaxWalkVisits = kMaxSteadyDegree;      ///< (W), (B)
 /// (A): one cut neighbour per side of a child of the block (refine's new children, coarse's old ones).
 inline constexpr int kMaxChildDegree = 4;
 /// (A), refine: a child's walk finds the node across at its own level (1 probe) or, failing that, p's neighbour one
@@ -62,24 +63,24 @@ inline constexpr int kMaxRefineChildProbes = 2 * 4;
 /// so this overcounts), plus one tether per child.
 inline constexpr int kRefineLinksAdded = kMaxChildren * (kMaxChildDegree + 1);  // 20
 inline constexpr OpWork kRefine{
-    .nodes = 1                         // p's position and velocity
-             + kMaxSteadyDegree        // the affine fit reads each neighbour's position
-             + kMaxChildren * 2        // add_node per child
-             + 1,                      // p's mass halved
-    .links = kMaxSteadyDegree          // the affine fit visits p's links
-             + kMaxSteadyDegree        // p's links start fading: constants refreshed
-             + kRefineLinksAdded,      // add_link
-    .tree_records = 1                                         // p
-                    + kMaxSteadyDegree                        // the fit's neighbours
-                    + kMaxChildren * (1 + 2)                  // each child, and add_node's two records
-                    + 1                                       // p's mass
-                    + 2 * kMaxSteadyDegree                    // refreshing p's links
+    .nodes = 1                                                    // p's position and velocity
+             + kMaxSteadyDegree                                   // the affine fit reads each neighbour's position
+             + kMaxChildren * 2                                   // add_node per child
+             + 1,                                                 // p's mass halved
+    .links = kMaxSteadyDegree                                     // the affine fit visits p's links
+             + kMaxSteadyDegree                                   // p's links start fading: constants refreshed
+             + kRefineLinksAdded,                                 // add_link
+    .tree_records = 1                                             // p
+                    + kMaxSteadyDegree                            // the fit's neighbours
+                    + kMaxChildren * (1 + 2)                      // each child, and add_node's two records
+                    + 1                                           // p's mass
+                    + 2 * kMaxSteadyDegree                        // refreshing p's links
                     + kMaxChildren * (1 + kMaxRefineChildProbes)  // the children's walks
-                    + 2 * kRefineLinksAdded,                  // add_link
-    .dbvt_leaves = kMaxChildren,                              // one leaf per child
-    .relocation_nodes = 0,                                    // nothing removed
+                    + 2 * kRefineLinksAdded,                      // add_link
+    .dbvt_leaves = kMaxChildren,                                  // one leaf per child
+    .relocation_nodes = 0,                                        // nothing removed
     .relocation_links = 0,
-    .dbvt_ancestors = 0,                                      // not bounded by the cut (OpWork::dbvt_ancestors)
+    .dbvt_ancestors = 0,  // not bounded by the cut (OpWork::dbvt_ancestors)
 };
 
 // ---- end-refine(p): removes p, its <= 8 faded links and <= 4 tethers -------------------------------------------
@@ -89,22 +90,22 @@ inline constexpr int kEndRefineLinksRemoved = kMaxSteadyDegree + kMaxChildren;  
 /// Links the children hold once the tethers are gone: <= kMaxChildDegree each, visited once per endpoint.
 inline constexpr int kEndRefineChildLinkVisits = kMaxChildren * kMaxChildDegree;  // 16
 inline constexpr OpWork kEndRefine{
-    .nodes = 1                    // p's velocity
-             + kMaxChildren * 2   // each child's velocity, and its full mass
-             + 1,                 // remove_node(p)
-    .links = kEndRefineLinksRemoved          // remove_link
-             + kEndRefineChildLinkVisits     // faded-in links made steady
-             + kEndRefineChildLinkVisits,    // the children's constants refreshed
-    .tree_records = 1                                // p
-                    + 2 * kEndRefineLinksRemoved     // remove_link
-                    + kMaxChildren * (1 + 1)         // each child, and its mass
-                    + 1                              // remove_node(p)
+    .nodes = 1                                        // p's velocity
+             + kMaxChildren * 2                       // each child's velocity, and its full mass
+             + 1,                                     // remove_node(p)
+    .links = kEndRefineLinksRemoved                   // remove_link
+             + kEndRefineChildLinkVisits              // faded-in links made steady
+             + kEndRefineChildLinkVisits,             // the children's constants refreshed
+    .tree_records = 1                                 // p
+                    + 2 * kEndRefineLinksRemoved      // remove_link
+                    + kMaxChildren * (1 + 1)          // each child, and its mass
+                    + 1                               // remove_node(p)
                     + 2 * kEndRefineChildLinkVisits,  // refreshing the children's links
-    .dbvt_leaves = 1,                                // p's leaf removed
-    .relocation_nodes = 1,                           // remove_node(p): the node moved into its place
-    .relocation_links = kEndRefineLinksRemoved       // remove_link: the last link moved into each hole
-                        + kMaxDegree,                // remove_node(p) re-points the moved node's links
-    .dbvt_ancestors = 0,                             // nothing inserted
+    .dbvt_leaves = 1,                                 // p's leaf removed
+    .relocation_nodes = 1,                            // remove_node(p): the node moved into its place
+    .relocation_links = kEndRefineLinksRemoved        // remove_link: the last link moved into each hole
+                        + kMaxDegree,                 // remove_node(p) re-points the moved node's links
+    .dbvt_ancestors = 0,                              // nothing inserted
 };
 
 // ---- coarse(p): p off, its <= 4 children active with <= 4 links each; adds p -------------------------------------
@@ -113,22 +114,22 @@ inline constexpr int kCoarseChildLinkVisits = kMaxChildren * kMaxChildDegree;  /
 /// Links a coarse adds: one to each cut neighbour of p (the walk visits <= 8), one tether per child.
 inline constexpr int kCoarseLinksAdded = kMaxWalkVisits + kMaxChildren;  // 12
 inline constexpr OpWork kCoarse{
-    .nodes = kMaxChildren         // each child's position and velocity
-             + 2                  // add_node(p)
-             + kMaxChildren,      // each child's mass halved
-    .links = kCoarseChildLinkVisits  // the children's links: role set, constant refreshed
-             + kCoarseLinksAdded,    // add_link
-    .tree_records = 1                              // p
-                    + kMaxChildren                 // each child
-                    + 2                            // add_node(p)
-                    + kMaxChildren                 // each child's mass
-                    + 2 * kCoarseChildLinkVisits   // refreshing the children's links
-                    + 1 + kMaxWalkProbes           // p's walk
-                    + 2 * kCoarseLinksAdded,       // add_link
-    .dbvt_leaves = 1,                              // p's leaf
-    .relocation_nodes = 0,                         // nothing removed
+    .nodes = kMaxChildren                         // each child's position and velocity
+             + 2                                  // add_node(p)
+             + kMaxChildren,                      // each child's mass halved
+    .links = kCoarseChildLinkVisits               // the children's links: role set, constant refreshed
+             + kCoarseLinksAdded,                 // add_link
+    .tree_records = 1                             // p
+                    + kMaxChildren                // each child
+                    + 2                           // add_node(p)
+                    + kMaxChildren                // each child's mass
+                    + 2 * kCoarseChildLinkVisits  // refreshing the children's links
+                    + 1 + kMaxWalkProbes          // p's walk
+                    + 2 * kCoarseLinksAdded,      // add_link
+    .dbvt_leaves = 1,                             // p's leaf
+    .relocation_nodes = 0,                        // nothing removed
     .relocation_links = 0,
-    .dbvt_ancestors = 0,                           // not bounded by the cut (OpWork::dbvt_ancestors)
+    .dbvt_ancestors = 0,  // not bounded by the cut (OpWork::dbvt_ancestors)
 };
 
 // ---- end-coarse(p): removes the <= 4 children, their links and the tethers ---------------------------------------
@@ -136,24 +137,24 @@ inline constexpr OpWork kCoarse{
 /// removed link is incident to a child, so this bounds the removals.
 inline constexpr int kEndCoarseLinksRemoved = kMaxChildren * (kMaxChildDegree + 1);  // 20
 inline constexpr OpWork kEndCoarse{
-    .nodes = 1                    // p's velocity
-             + kMaxChildren       // each child's velocity
-             + 1                  // p's full mass
-             + kMaxChildren,      // remove_node per child
-    .links = kEndCoarseLinksRemoved      // remove_link
-             + kMaxWalkVisits            // p's faded-in links made steady
-             + kMaxWalkVisits,           // p's constants refreshed
-    .tree_records = 1                                // p
-                    + kMaxChildren                   // each child's incidence list
-                    + 2 * kEndCoarseLinksRemoved     // remove_link
-                    + 1                              // p's mass
-                    + kMaxChildren                   // remove_node per child
-                    + 2 * kMaxWalkVisits,            // refreshing p's links
-    .dbvt_leaves = kMaxChildren,                     // each child's leaf removed
-    .relocation_nodes = kMaxChildren,                // remove_node per child: a node moved into each hole
-    .relocation_links = kEndCoarseLinksRemoved       // remove_link: the last link moved into each hole
+    .nodes = 1                                        // p's velocity
+             + kMaxChildren                           // each child's velocity
+             + 1                                      // p's full mass
+             + kMaxChildren,                          // remove_node per child
+    .links = kEndCoarseLinksRemoved                   // remove_link
+             + kMaxWalkVisits                         // p's faded-in links made steady
+             + kMaxWalkVisits,                        // p's constants refreshed
+    .tree_records = 1                                 // p
+                    + kMaxChildren                    // each child's incidence list
+                    + 2 * kEndCoarseLinksRemoved      // remove_link
+                    + 1                               // p's mass
+                    + kMaxChildren                    // remove_node per child
+                    + 2 * kMaxWalkVisits,             // refreshing p's links
+    .dbvt_leaves = kMaxChildren,                      // each child's leaf removed
+    .relocation_nodes = kMaxChildren,                 // remove_node per child: a node moved into each hole
+    .relocation_links = kEndCoarseLinksRemoved        // remove_link: the last link moved into each hole
                         + kMaxChildren * kMaxDegree,  // remove_node re-points each moved node's links
-    .dbvt_ancestors = 0,                             // nothing inserted
+    .dbvt_ancestors = 0,                              // nothing inserted
 };
 
 /// The bound of one operation.

@@ -23,8 +23,8 @@ std::unique_ptr<btSoftBody> make_bullet_patch(SoftBodyWorld& world, const Net& n
   const btScalar hx = static_cast<btScalar>(0.5 * s.size_x), hz = static_cast<btScalar>(0.5 * s.size_z);
   const btScalar y = static_cast<btScalar>(s.elevation);
   std::unique_ptr<btSoftBody> body(btSoftBodyHelpers::CreatePatch(
-      world.info, btVector3(-hx, y, -hz), btVector3(hx, y, -hz), btVector3(-hx, y, hz), btVector3(hx, y, hz),
-      s.width, s.height, static_cast<int>(s.pinned_corners), /*gendiags=*/false));
+      world.info, btVector3(-hx, y, -hz), btVector3(hx, y, -hz), btVector3(-hx, y, hz), btVector3(hx, y, hz), s.width,
+      s.height, static_cast<int>(s.pinned_corners), /*gendiags=*/false));
   apply_solver_settings(*body, settings);
   // The paper's mass-spring model has nodes and links only, and so do the plain baseline and TC-SB; CreatePatch's
   // faces would add per-step face work (normals, aero no-ops, areas: ~15% at these sizes) that no compared body
@@ -33,7 +33,8 @@ std::unique_ptr<btSoftBody> make_bullet_patch(SoftBodyWorld& world, const Net& n
   // CreatePatch gives every node mass 1; scale to the net's masses so both bodies are the same cloth (uniform
   // masses: only the ratio of inverse masses enters the link solver, so this changes no position).
   for (int i = 0; i < body->m_nodes.size(); ++i)
-    if (body->m_nodes[i].m_im > 0) body->m_nodes[i].m_im = static_cast<btScalar>(1.0 / net.masses()[static_cast<std::size_t>(i)]);
+    if (body->m_nodes[i].m_im > 0)
+      body->m_nodes[i].m_im = static_cast<btScalar>(1.0 / net.masses()[static_cast<std::size_t>(i)]);
   body->updateConstants();
   body->m_bUpdateRtCst = false;
   return body;

@@ -34,7 +34,7 @@ OpCheck TcSoftBody::can_refine(TreeId id) const {
   const bool balanced = for_each_cut_neighbour(
       tree(), id, [this](TreeId n) { return committed(n); },
       [&](TreeId n) {
-        if (state(n) != CutState::kActive) neighbours_ready = false;  // an operation is blending next door
+        if (state(n) != CutState::kActive) neighbours_ready = false;    // an operation is blending next door
         if (tree().node(n).level > node.level) check.refine_first = n;  // children would be two levels apart
       });
   check.ok = balanced && neighbours_ready && check.refine_first == kNoTreeNode;
@@ -281,7 +281,7 @@ void TcSoftBody::end_refine(const Op& op) {
   const LodNode& pn = tree().node(p);
   prefetch_link_removals(std::span<const TreeId>(&p, 1));
   work_ = {.interior = neighbourhood_inside_net(tree(), p)};
-  ++work_.tree_records;  // p's LOD node, record and incidence list
+  ++work_.tree_records;                                       // p's LOD node, record and incidence list
   while (incidence_[static_cast<std::size_t>(p)].size() > 0)  // faded-out links and tethers
     remove_link(incidence_[static_cast<std::size_t>(p)][0]);
   for (int i = 0; i < pn.child_count; ++i) make_faded_in_links_steady(pn.children[static_cast<std::size_t>(i)]);
@@ -318,7 +318,7 @@ void TcSoftBody::end_coarse(const Op& op) {
   ++work_.tree_records;  // p's LOD node and record
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
-    ++work_.tree_records;  // c's incidence list and record
+    ++work_.tree_records;                                       // c's incidence list and record
     while (incidence_[static_cast<std::size_t>(c)].size() > 0)  // faded-out, doomed and tether links
       remove_link(incidence_[static_cast<std::size_t>(c)][0]);
   }

@@ -11,7 +11,7 @@ enum class Placement {
 
 /// Settings of the TreeCut soft body's operations.
 struct TcSettings {
-  int blend_steps = 5;                  ///< K: steps over which leaving links fade out and arriving links fade in
+  int blend_steps = 5;  ///< K: steps over which leaving links fade out and arriving links fade in
   Placement placement = Placement::kAffine;
 };
 

@@ -26,9 +26,7 @@ void touch_reserved(Array& array, const T& fill) {
 
 TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, const SolverSettings& solver,
                        const TcSettings& settings)
-    : btSoftBody(&world.info, 0, nullptr, nullptr),
-      net_(std::move(net)),
-      settings_(settings) {
+    : btSoftBody(&world.info, 0, nullptr, nullptr), net_(std::move(net)), settings_(settings) {
   if (settings_.blend_steps < 1) throw std::invalid_argument("TcSoftBody: blend_steps must be >= 1");
   for (const NetLink& l : net_->links())
     if (l.kind != LinkKind::kStructural)
@@ -106,9 +104,9 @@ int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, Tree
   r.inv_mass = added.m_im = inverse_mass(id, r.sim_mass);
   added.m_material = m_materials[0];
   btDbvtNode* beside_leaf = m_nodes[record(beside).bullet].m_leaf;
-  added.m_leaf = insert_leaf_beside(m_ndbvt, dbvt_nodes_, beside_leaf,
-                                    btDbvtVolume::FromCR(x, getCollisionShape()->getMargin()), &added,
-                                    &work_.dbvt_ancestors);
+  added.m_leaf =
+      insert_leaf_beside(m_ndbvt, dbvt_nodes_, beside_leaf, btDbvtVolume::FromCR(x, getCollisionShape()->getMargin()),
+                         &added, &work_.dbvt_ancestors);
   tree_of_.push_back(id);
   set_bullet_index(id, index);
   work_.nodes += 2;         // the appended node, and the node beside whose leaf it goes

@@ -60,7 +60,7 @@ enum class LinkRole : std::uint8_t {
 struct CutLink {
   TreeId a = kNoTreeNode, b = kNoTreeNode;  ///< endpoints, as Bullet's m_n[0], m_n[1]
   LinkRole role = LinkRole::kSteady;
-  std::int32_t op = -1;                     ///< owning operation while not steady
+  std::int32_t op = -1;  ///< owning operation while not steady
   /// Links that join two nodes of the committed cut as neighbours (not the old cut's, not tethers).
   bool joins_committed() const { return role == LinkRole::kSteady || role == LinkRole::kFadeIn; }
   /// The endpoint that is not `end` (one of the two).
@@ -172,11 +172,11 @@ class TcSoftBody : public btSoftBody {
     /// Bullet's m_im of the node while simulated (0 when pinned), kept equal to it so that link constants are
     /// computed from here instead of from a neighbour's Bullet node, which is one more line per neighbour.
     btScalar inv_mass = 0;
-    std::int32_t op = -1;      ///< operation it is a subject of, or -1
+    std::int32_t op = -1;  ///< operation it is a subject of, or -1
     /// Bullet index, or -1: the same as bullet_[id], which stays as a flat array for the feedback stage's readers
     /// (CutView); validate() checks that the two agree.
     std::int32_t bullet = -1;
-    double sim_mass = 0;       ///< carried mass while simulated, kg
+    double sim_mass = 0;  ///< carried mass while simulated, kg
     btVector3 rest_position() const { return {rest[0], rest[1], rest[2]}; }
   };
   static_assert(sizeof(NodeRecord) == 32, "two records per cache line");
@@ -244,11 +244,11 @@ class TcSoftBody : public btSoftBody {
   std::vector<IncidenceList> incidence_;  // per tree node
   std::vector<NodeRecord> record_;        // per tree node
   std::vector<TreeId> tree_of_;           // per Bullet node
-  std::vector<CutLink> link_meta_;       // per Bullet link
+  std::vector<CutLink> link_meta_;        // per Bullet link
   DbvtNodeCache dbvt_nodes_;              // spare nodes for the node DBVT's local edits
   std::vector<Op> ops_;                   // operation pool
   std::vector<std::int32_t> free_ops_;
-  std::vector<std::int32_t> inflight_;    // operations blending
+  std::vector<std::int32_t> inflight_;  // operations blending
   int committed_count_ = 0;
   int link_reallocations_ = 0;
   OpSink* sink_ = nullptr;

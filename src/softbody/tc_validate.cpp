@@ -69,8 +69,8 @@ Validation TcSoftBody::validate() const {
   std::size_t incidence_total = 0;
   for (std::size_t id = 0; id < tree_size; ++id) incidence_total += static_cast<std::size_t>(incidence_[id].size());
   if (incidence_total != 2 * static_cast<std::size_t>(m_links.size()))
-    fail("incidence lists hold " + std::to_string(incidence_total) + " entries for " +
-         std::to_string(m_links.size()) + " links");
+    fail("incidence lists hold " + std::to_string(incidence_total) + " entries for " + std::to_string(m_links.size()) +
+         " links");
   for (int li = 0; li < m_links.size() && li < static_cast<int>(link_meta_.size()); ++li) {
     const Link& l = m_links[li];
     const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
@@ -121,7 +121,8 @@ Validation TcSoftBody::validate() const {
     const bool balanced = for_each_cut_neighbour(
         lod, t, [this](TreeId n) { return committed(n); },
         [&](TreeId n) {
-          if (std::abs(lod.node(n).level - level) > 1) fail("tree " + std::to_string(t) + ": neighbour two levels apart");
+          if (std::abs(lod.node(n).level - level) > 1)
+            fail("tree " + std::to_string(t) + ": neighbour two levels apart");
           bool linked = false;
           for (std::int32_t li : incidence_[id]) {
             const CutLink& m = link_meta_[static_cast<std::size_t>(li)];

@@ -59,7 +59,7 @@ TEST(SurfaceError, WeightsPickOutWhereTheErrorIsSeen) {
   off[5] = 0.0f;
   EXPECT_NEAR(surface_error(moved, ref, on).weighted_rms, 0.2, 1e-12);  // all weight where the error is
   EXPECT_EQ(surface_error(moved, ref, off).weighted_rms, 0.0);          // no weight there
-  EXPECT_NEAR(surface_error(moved, ref).rms, 0.2 / 4.0, 1e-12);          // sqrt(0.04 / 16)
+  EXPECT_NEAR(surface_error(moved, ref).rms, 0.2 / 4.0, 1e-12);         // sqrt(0.04 / 16)
 }
 
 TEST(SurfaceError, RejectsMismatchesAndBadWeights) {

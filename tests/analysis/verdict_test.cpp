@@ -66,7 +66,7 @@ TEST(Verdict, ANearMeasurementIsDecidedAfterMoreRepetitions) {
 TEST(SequentialLooks, EachLookSpendsHalfTheRestAndAllStayBelowAlpha) {
   EXPECT_DOUBLE_EQ(look_alpha(0.05, 1), 0.025);
   EXPECT_DOUBLE_EQ(look_alpha(0.05, 2), 0.0125);
-  EXPECT_DOUBLE_EQ(look_confidence(0.05, 1), 0.95);   // the first look is the familiar 95 % interval
+  EXPECT_DOUBLE_EQ(look_confidence(0.05, 1), 0.95);  // the first look is the familiar 95 % interval
   EXPECT_DOUBLE_EQ(look_confidence(0.05, 3), 0.9875);
   double spent = 0;
   for (int k = 1; k <= 30; ++k) spent += look_alpha(0.05, k);

@@ -42,7 +42,8 @@ inline int count_lines(const std::string& text) {
 /// Tests edit its text ("steps": 20, "seed") to make bad or different suites.
 inline std::string nine_by_nine_suite(const std::string& name, int repetitions) {
   return R"({
-  "name": ")" + name + R"(", "description": "one 9x9 net for the CLI tests",
+  "name": ")" +
+         name + R"(", "description": "one 9x9 net for the CLI tests",
   "nets": [{"name": "n9", "width": 9, "height": 9, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0},
             "pinned": "corners"}],
   "methods": ["plain", "tcsb"], "compression": [1.0, 0.5],
@@ -56,9 +57,8 @@ inline std::string nine_by_nine_suite(const std::string& name, int repetitions) 
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("tcsb_cli_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("tcsb_cli_test_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -71,8 +71,7 @@ class Cli : public ::testing::Test {
 
   /// Runs a shell command in the temp directory, capturing its output like tcsb().
   Outcome shell(const std::string& command_line) const {
-    const std::string command =
-        "cd '" + dir_.string() + "' && " + command_line + " >stdout.txt 2>stderr.txt";
+    const std::string command = "cd '" + dir_.string() + "' && " + command_line + " >stdout.txt 2>stderr.txt";
     const int status = std::system(command.c_str());
     Outcome o;
     o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

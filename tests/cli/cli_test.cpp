@@ -126,8 +126,8 @@ TEST_F(Cli, TinyRunWritesACompleteReport) {
   for (const char* bad : {"NaN", "Infinity"}) EXPECT_EQ(text.find(bad), std::string::npos) << bad;
   const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
   ASSERT_FALSE(doc.is_discarded());
-  for (const char* key : {"schema_version", "tool", "context", "suite", "cases", "table1", "table2", "scaling",
-                          "status", "wall_s"}) {
+  for (const char* key :
+       {"schema_version", "tool", "context", "suite", "cases", "table1", "table2", "scaling", "status", "wall_s"}) {
     EXPECT_TRUE(doc.contains(key)) << key;
   }
   EXPECT_EQ(doc["schema_version"], 2);
@@ -192,8 +192,8 @@ TEST_F(Cli, RepetitionsFlagOverridesTheSuiteForRunAndReproduce) {
 TEST_F(Cli, BadRepetitionsAreUsageErrors) {
   write_file(dir_ / "tiny.json", kTinySuite);
   for (const char* command : {"run tiny.json", "reproduce --suite tiny.json"}) {
-    for (const char* flag : {"--repetitions 0", "--repetitions 1001", "--repetitions=-2", "--repetitions 2.5",
-                             "--repetitions many"}) {
+    for (const char* flag :
+         {"--repetitions 0", "--repetitions 1001", "--repetitions=-2", "--repetitions 2.5", "--repetitions many"}) {
       const std::string line = std::string(command) + " --out out.json " + flag;
       const Outcome o = tcsb(line);
       EXPECT_EQ(o.exit_code, 2) << line;
@@ -231,7 +231,7 @@ TEST_F(Cli, ReproduceGivesEveryClaimAVerdictAndExitsByThem) {
       EXPECT_EQ(c["evidence"], "deterministic") << c["id"];
       continue;
     }
-    EXPECT_EQ(c["evidence"], "repeated") << c["id"];  // the paper's other claims are judged on intervals ...
+    EXPECT_EQ(c["evidence"], "repeated") << c["id"];        // the paper's other claims are judged on intervals ...
     EXPECT_TRUE(c["look"].is_number_integer()) << c["id"];  // ... at a look
   }
   const std::string overall = r["verdict"];

@@ -105,12 +105,26 @@ class Mutator {
   }
 
   ojson replacement() {
-    static const std::vector<ojson> kTame = {
-        nullptr, true, false, 0, -1, 1, 2, 0.5, -0.5, 1e-300, "", "x", ojson::array(), ojson::object(),
-        ojson::array({ojson::array()}), "\x1b[31mred\x07\r\nnext", std::string(3000, 'k')};
+    static const std::vector<ojson> kTame = {nullptr,
+                                             true,
+                                             false,
+                                             0,
+                                             -1,
+                                             1,
+                                             2,
+                                             0.5,
+                                             -0.5,
+                                             1e-300,
+                                             "",
+                                             "x",
+                                             ojson::array(),
+                                             ojson::object(),
+                                             ojson::array({ojson::array()}),
+                                             "\x1b[31mred\x07\r\nnext",
+                                             std::string(3000, 'k')};
     static const std::vector<ojson> kExtreme = {
         2147483647, 2147483648LL, -2147483649LL, 9223372036854775807LL, 18446744073709551615ULL, 1e308, -1e308,
-        4.9e-324, 1e15, 123456789.5};
+        4.9e-324,   1e15,         123456789.5};
     return extremes_ && chance(0.4) ? one_of(kExtreme) : one_of(kTame);
   }
 
@@ -216,7 +230,8 @@ class Mutator {
       }
       case 3: {  // nesting far deeper than any parser's stack should allow
         const int depth = chance(0.5) ? 100000 : pick(100, 5000);
-        text = std::string(static_cast<std::size_t>(depth), '[') + text + std::string(static_cast<std::size_t>(depth), ']');
+        text = std::string(static_cast<std::size_t>(depth), '[') + text +
+               std::string(static_cast<std::size_t>(depth), ']');
         log += " nested " + std::to_string(depth) + " deep;";
         return;
       }
@@ -337,9 +352,8 @@ TEST_F(Fuzz, CompareAndExportReadMutatedResultsOrRefuseThemInOneLine) {
     std::string log;
     write_file(dir_ / "new.json", mutator.mutate(base, log));
     // Both orders: a broken baseline must be refused as surely as a broken new run.
-    const std::vector<std::string> compare =
-        i % 2 == 0 ? std::vector<std::string>{"compare", "base.json", "new.json"}
-                   : std::vector<std::string>{"compare", "new.json", "base.json"};
+    const std::vector<std::string> compare = i % 2 == 0 ? std::vector<std::string>{"compare", "base.json", "new.json"}
+                                                        : std::vector<std::string>{"compare", "new.json", "base.json"};
     // compare prints its Markdown summary on stderr when it decides, so only its refusals must be one line.
     if (const std::string why = problem(run_tcsb(dir_, compare), /*judges=*/true); !why.empty())
       record("compare", i, log, why);

@@ -36,11 +36,11 @@ void expect_one_line_exit_2(const Outcome& o, const std::string& needle, const s
 TEST_F(Cli, SuiteBeyondUlimitIsRefusedNotCrashed) {
   // 1025 x 1025 plain nodes need about 0.7 GiB; the limit leaves the process far less.
   std::string suite = replaced(kTinySuite, "\"width\": 9, \"height\": 9", "\"width\": 1025, \"height\": 1025");
-  suite = replaced(suite, "\"methods\": [\"plain\", \"tcsb\"], \"compression\": [1.0, 0.5]",
-                   "\"methods\": [\"plain\"]");
+  suite =
+      replaced(suite, "\"methods\": [\"plain\", \"tcsb\"], \"compression\": [1.0, 0.5]", "\"methods\": [\"plain\"]");
   write_file(dir_ / "big.json", suite);
-  const Outcome o = shell("sh -c 'ulimit -v 150000; exec \"" + std::string(TCSB_BINARY) +
-                          "\" run big.json --quiet --out out.json'");
+  const Outcome o =
+      shell("sh -c 'ulimit -v 150000; exec \"" + std::string(TCSB_BINARY) + "\" run big.json --quiet --out out.json'");
   expect_one_line_exit_2(o, "ulimit -v", "run under ulimit -v");
   EXPECT_NE(o.err.find("nets[0]"), std::string::npos) << o.err;
   EXPECT_FALSE(fs::exists(dir_ / "out.json"));
@@ -68,8 +68,8 @@ TEST_F(Cli, AllocationFailureIsExit2NamingSuiteAndNet) {
 TEST_F(Cli, ThreadsThatCannotStartAreExit2) {
   write_file(dir_ / "par.json",
              replaced(kTinySuite, "\"solver\"", "\"feedback\": {\"parallel\": true, \"threads\": 8}, \"solver\""));
-  const Outcome o = shell("sh -c 'ulimit -v 40000; exec \"" + std::string(TCSB_BINARY) +
-                          "\" run par.json --quiet --out out.json'");
+  const Outcome o =
+      shell("sh -c 'ulimit -v 40000; exec \"" + std::string(TCSB_BINARY) + "\" run par.json --quiet --out out.json'");
   EXPECT_EQ(o.exit_code, 2) << o.err;
   // The run has started, so the machine's warnings (a loaded machine) may precede the one error line.
   const std::size_t error = o.err.find("tcsb: error: ");

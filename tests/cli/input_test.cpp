@@ -36,13 +36,12 @@ class Input : public Cli {
   /// Every command that reads `file` in its role (suite, result, paper) refuses it: exit 2, one line naming it,
   /// containing `problem`.
   void expect_refused_everywhere(const std::string& file, const std::string& problem) const {
-    const std::vector<std::string> commands{
-        "validate " + file,
-        "run " + file + " --quiet --out out.json",
-        "export " + file + " --format gbench",
-        "compare " + file + " result.json",
-        "compare result.json " + file,
-        "reproduce --suite small.json --paper " + file + " --quiet --out out.json"};
+    const std::vector<std::string> commands{"validate " + file,
+                                            "run " + file + " --quiet --out out.json",
+                                            "export " + file + " --format gbench",
+                                            "compare " + file + " result.json",
+                                            "compare result.json " + file,
+                                            "reproduce --suite small.json --paper " + file + " --quiet --out out.json"};
     for (const std::string& args : commands) {
       const Outcome o = bounded(args);
       EXPECT_EQ(o.exit_code, 2) << args << "\n" << o.err;

@@ -70,7 +70,8 @@ TEST_F(Output, AFullOutOrSummaryFileIsExit3WithoutInternalError) {
     const Outcome o = tcsb(args);
     EXPECT_EQ(o.exit_code, 3) << args << "\n" << o.err;
     EXPECT_NE(o.err.find("tcsb: error: cannot write /dev/full: No space left on device"), std::string::npos)
-        << args << "\n" << o.err;
+        << args << "\n"
+        << o.err;
     EXPECT_EQ(o.err.find("internal error"), std::string::npos) << args << "\n" << o.err;
   }
 }
@@ -127,8 +128,10 @@ TEST_F(Output, PlantedSymlinksAtTheOldProbeAndTemporaryNamesAreNotFollowed) {
   // Only the planted links (two per run) and the report: no probe or temporary file left behind.
   std::size_t links = 0;
   for (const auto& e : fs::directory_iterator(dir_ / "outdir")) {
-    if (fs::is_symlink(e.symlink_status())) ++links;
-    else EXPECT_EQ(e.path().filename(), "out.json");
+    if (fs::is_symlink(e.symlink_status()))
+      ++links;
+    else
+      EXPECT_EQ(e.path().filename(), "out.json");
   }
   EXPECT_EQ(links, 4u);
   EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir_ / "outdir" / "out.json")));
@@ -156,8 +159,8 @@ TEST_F(Output, OutEqualToAnInputIsRefusedHoweverItIsSpelled) {
            "run small.json --quiet --out link.json", "run link.json --quiet --out small.json",
            "run small.json --quiet --out " + (dir_ / "small.json").string(),
            "export result.json --format gbench --out ./result.json",
-           "export result.json --format gbench --out hard.json",
-           "compare result.json hard.json --summary result.json", "compare result.json hard.json --summary hard.json",
+           "export result.json --format gbench --out hard.json", "compare result.json hard.json --summary result.json",
+           "compare result.json hard.json --summary hard.json",
            "reproduce --suite small.json --paper paper.json --quiet --out paper.json",
            "reproduce --suite small.json --paper paper.json --quiet --out ./small.json",
            "frames --suite small.json --steps 1 --out link.json"}) {

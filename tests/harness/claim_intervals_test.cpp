@@ -71,7 +71,7 @@ TEST(ClaimIntervals, ResampleDrawsOneSetOfRepetitionsPerNetAndCarriesTheirOperat
         EXPECT_EQ(t.mean_step_ms, code(net, 1, rep));  // ... paired with the TC-SB one measured beside it
         EXPECT_EQ(p.repetition, i);                    // renumbered, so pairing by index still works
         EXPECT_EQ(t.repetition, i);
-        EXPECT_TRUE(p.series.step_ms.empty());         // series are not carried
+        EXPECT_TRUE(p.series.step_ms.empty());  // series are not carried
         EXPECT_EQ(t.operations, rep + 1);
         means.push_back(t.mean_step_ms);
         for (int k = 0; k <= rep; ++k)
@@ -118,7 +118,7 @@ TEST(ClaimIntervals, IntervalsSpanTheRepetitionsAndRepeatForASeed) {
   EXPECT_LE(claims[0].interval->high, 14.0);
   EXPECT_LT(claims[0].interval->low, claims[0].interval->high);
   EXPECT_TRUE(claims[0].interval->contains(*claims[0].measured));
-  EXPECT_FALSE(claims[1].interval.has_value());  // undefined on every resample
+  EXPECT_FALSE(claims[1].interval.has_value());   // undefined on every resample
   EXPECT_EQ(verdict(claims[0]), Verdict::kFail);  // 10..14 > 3: a decided FAIL
   EXPECT_EQ(verdict(claims[1]), Verdict::kFail);  // never measured
 
@@ -131,7 +131,10 @@ TEST(ClaimIntervals, IdenticalRepetitionsGiveAPointInterval) {
   for (RepetitionResult& x : run.cases[0].repetitions) x.mean_step_ms = 2.5;
   summarize_case(run.cases[0]);
   std::vector<Claim> claims = claims_on(run, 0);
-  attach_intervals(claims, bootstrap_claims(run, [](const RunResult& r) { return claims_on(r, 0); }, 100, 3), 0.95);
+  attach_intervals(claims,
+                   bootstrap_claims(
+                       run, [](const RunResult& r) { return claims_on(r, 0); }, 100, 3),
+                   0.95);
   ASSERT_TRUE(claims[0].interval.has_value());
   EXPECT_EQ(claims[0].interval->low, 2.5);
   EXPECT_EQ(claims[0].interval->high, 2.5);

@@ -119,9 +119,9 @@ TEST(ContextOptimized, BuildTypeNdebugAndLastOFlag) {
 }
 
 TEST(ContextParsers, Cpuinfo) {
-  const auto info = context_detail::parse_cpuinfo(
-      "processor\t: 0\nmodel name\t: Test CPU @ 3.00GHz\ncpu MHz\t\t: 2999.5\n\n"
-      "processor\t: 1\nmodel name\t: Other\ncpu MHz\t\t: 800.0\n");
+  const auto info =
+      context_detail::parse_cpuinfo("processor\t: 0\nmodel name\t: Test CPU @ 3.00GHz\ncpu MHz\t\t: 2999.5\n\n"
+                                    "processor\t: 1\nmodel name\t: Other\ncpu MHz\t\t: 800.0\n");
   EXPECT_EQ(info.model, "Test CPU @ 3.00GHz");
   EXPECT_DOUBLE_EQ(info.mhz, 2999.5);
 
@@ -192,9 +192,9 @@ TEST(ContextJson, HasEveryKeyWithItsTypeAndNoNaN) {
   c.load_average_1m = std::numeric_limits<double>::infinity();
   const nlohmann::json j = to_json(c);
   ASSERT_TRUE(j.is_object());
-  for (const char* key : {"date_utc", "host", "cpu_model", "cpu_governor", "compiler", "cxx_flags", "build_type",
-                          "bullet_version", "bullet_precision", "tcsb_version", "git_commit", "transparent_hugepages",
-                          "glibc_tunables"}) {
+  for (const char* key :
+       {"date_utc", "host", "cpu_model", "cpu_governor", "compiler", "cxx_flags", "build_type", "bullet_version",
+        "bullet_precision", "tcsb_version", "git_commit", "transparent_hugepages", "glibc_tunables"}) {
     ASSERT_TRUE(j.contains(key)) << key;
     EXPECT_TRUE(j[key].is_string()) << key;
   }

@@ -29,11 +29,21 @@ TEST(FidelityPlan, TcsbAtEveryTargetOnceAscendingThenTheAblationsBelowOne) {
   const std::vector<FidelitySubjectSpec> plan = fidelity_plan(suite_with_fidelity(true));
   std::vector<std::pair<std::string, double>> got;
   for (const FidelitySubjectSpec& s : plan) got.emplace_back(fidelity_method_name(s.method), s.compression);
-  const std::vector<std::pair<std::string, double>> want{
-      {"tcsb", 0.1},          {"tcsb", 0.3},        {"tcsb", 0.5},         {"tcsb", 0.75},      {"tcsb", 1.0},
-      {"uniform_grid", 0.75}, {"uniform_grid", 0.3}, {"switch_body", 0.75}, {"switch_body", 0.3}, {"tcsb_random", 0.75},
-      {"tcsb_random", 0.3},   {"tcsb_rigid", 0.75},  {"tcsb_rigid", 0.3},  {"tcsb_no_geomorph", 0.75},
-      {"tcsb_no_geomorph", 0.3}};
+  const std::vector<std::pair<std::string, double>> want{{"tcsb", 0.1},
+                                                         {"tcsb", 0.3},
+                                                         {"tcsb", 0.5},
+                                                         {"tcsb", 0.75},
+                                                         {"tcsb", 1.0},
+                                                         {"uniform_grid", 0.75},
+                                                         {"uniform_grid", 0.3},
+                                                         {"switch_body", 0.75},
+                                                         {"switch_body", 0.3},
+                                                         {"tcsb_random", 0.75},
+                                                         {"tcsb_random", 0.3},
+                                                         {"tcsb_rigid", 0.75},
+                                                         {"tcsb_rigid", 0.3},
+                                                         {"tcsb_no_geomorph", 0.75},
+                                                         {"tcsb_no_geomorph", 0.3}};
   EXPECT_EQ(got, want);
 }
 
@@ -49,12 +59,12 @@ TEST(FidelityPlan, EmptyWhenDisabledOrWithoutTcsb) {
 }
 
 TEST(FidelityPlan, CoarseGridHoldsAboutTheBudgetWithTheNetsAspect) {
-  EXPECT_EQ(coarse_grid_for(81, 81, 1968).width, 44);  // round(sqrt(1968)) = 44: 1936 nodes
+  EXPECT_EQ(coarse_grid_for(81, 81, 1968).width, 44);   // round(sqrt(1968)) = 44: 1936 nodes
   EXPECT_EQ(coarse_grid_for(81, 81, 1968).height, 45);  // round(1968 / 44) = 45: 1980 nodes, nearer the budget
   const CoarseGrid wide = coarse_grid_for(100, 25, 625);
   EXPECT_EQ(wide.width, 50);
   EXPECT_EQ(wide.height, 13);
-  EXPECT_EQ(coarse_grid_for(17, 17, 1).width, 2);  // never below 2 x 2
+  EXPECT_EQ(coarse_grid_for(17, 17, 1).width, 2);        // never below 2 x 2
   EXPECT_EQ(coarse_grid_for(17, 17, 100000).width, 17);  // never above the net
 }
 

@@ -99,8 +99,8 @@ TEST(FidelityPass, EveryMethodReproducesANetAtRest) {
     const std::string what =
         std::string(fidelity_method_name(c.subject.method)) + "@" + std::to_string(c.subject.compression);
     EXPECT_EQ(c.status, "ok") << what;
-    EXPECT_LT(c.max_pct.max, 1e-4) << what;      // % of the extent: under 8 um
-    EXPECT_LT(c.popping_pct.max, 1e-4) << what;  // operations and the switch on a resting net do not pop
+    EXPECT_LT(c.max_pct.max, 1e-4) << what;           // % of the extent: under 8 um
+    EXPECT_LT(c.popping_pct.max, 1e-4) << what;       // operations and the switch on a resting net do not pop
     EXPECT_EQ(c.energy_drift_pct.count, 0u) << what;  // no gravity: initial energy 0, drift undefined, left out
   }
   const std::vector<FidelityRow> rows = fidelity_rows(*run.fidelity);

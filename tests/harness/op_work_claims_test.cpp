@@ -19,8 +19,8 @@ OpSample sample(OpKind kind, OpWork work) {
 /// Work well inside every bound, scaled by `f` (1 keeps it unchanged), of an interior call. No relocation: refine and
 /// coarse remove nothing, so their bound on it is 0.
 OpWork typical(int f = 1) {
-  return {.nodes = 5 * f, .links = 10 * f, .tree_records = 30 * f, .dbvt_leaves = 1, .dbvt_ancestors = 2,
-          .interior = true};
+  return {
+      .nodes = 5 * f, .links = 10 * f, .tree_records = 30 * f, .dbvt_leaves = 1, .dbvt_ancestors = 2, .interior = true};
 }
 
 /// A TC-SB case on `net` whose every operation did `work` and `other` (so maxima and means are both exercised).

@@ -41,8 +41,9 @@ class TallySink final : public OpSink {
 
 /// Drives the body with RandomPolicy for 60 steps: 20 coarsening as far as it goes, 20 refining back, 20 coarsening
 /// again, at most N/32 operations begun per step but never more than 1024, so that the small nets reach every level
-/// and the largest sees about 120 000 operations (a share of it) and the test stays fast. Operations only: no Bullet step
-/// (the counts do not depend on positions, except the DBVT walk, which this test reports but the bounds leave out).
+/// and the largest sees about 120 000 operations (a share of it) and the test stays fast. Operations only: no Bullet
+/// step (the counts do not depend on positions, except the DBVT walk, which this test reports but the bounds leave
+/// out).
 OpWorkTally drive(const NetSpec& spec, const Suite& suite) {
   auto net = std::make_shared<const Net>(spec);
   SoftBodyWorld world(suite.world);
@@ -110,9 +111,9 @@ TEST(OpWorkScaling, EveryCountIsBoundedAndTheBlockLocalOnesAreTheSameOnEverySize
       // Interior means are reported, not asserted, here: this driver does not give every size the same workload.
       // With at most 1024 operations begun per step, 513^2 and 1025^2 never coarsen past the first levels (40 x 1024
       // coarse calls, the cap, where 257^2 ran out at 28927), so their interior blocks mostly sit in a uniform fine
-      // cut (inferred from the call counts, not broken down by level here): coarse's interior links mean is 25.9 on 33^2..257^2
-      // (within 0.3 %) and 27.0 / 27.7 on 513^2 / 1025^2. The runs the claim judges (paper, ci) drive every net with
-      // the same budgets, and there the interior means agree within 2.3 %.
+      // cut (inferred from the call counts, not broken down by level here): coarse's interior links mean is 25.9 on
+      // 33^2..257^2 (within 0.3 %) and 27.0 / 27.7 on 513^2 / 1025^2. The runs the claim judges (paper, ci) drive every
+      // net with the same budgets, and there the interior means agree within 2.3 %.
       std::cout << "  interior-mean spread " << relative_spread(interior_means) * 100 << " %\n";
     }
   }

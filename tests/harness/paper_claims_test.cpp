@@ -67,8 +67,8 @@ std::vector<Claim> judged_on_points(std::vector<Claim> claims) {
 }
 
 TEST(PaperClaims, ThresholdsComeFromThePapersTables) {
-  const std::vector<Claim> claims = paper_claims(paper_with_table1(), {tcsb_row(0.3, 0.40, 0.3)}, tcsb_fit(0.99),
-                                                 table1_at(0.001));
+  const std::vector<Claim> claims =
+      paper_claims(paper_with_table1(), {tcsb_row(0.3, 0.40, 0.3)}, tcsb_fit(0.99), table1_at(0.001));
   EXPECT_NEAR(find(claims, "tcsb_30_vs_plain").expected, 4.80 / 11.09, 1e-12);
   EXPECT_NEAR(find(claims, "tcsb_75_vs_plain").expected, 8.40 / 11.09, 1e-12);
   const Claim& same = find(claims, "tcsb_nocompression_vs_plain");
@@ -77,7 +77,7 @@ TEST(PaperClaims, ThresholdsComeFromThePapersTables) {
   EXPECT_DOUBLE_EQ(same.tolerance, 0.03);
   EXPECT_DOUBLE_EQ(find(claims, "step_linear_tcsb").expected, 0.95);
   EXPECT_DOUBLE_EQ(find(claims, "op_time_refine").expected, 0.0180);
-  EXPECT_DOUBLE_EQ(find(claims, "op_time_end-coarse").expected, 0.0327 + 0.0025);  // the cycle coarse + end-coarse
+  EXPECT_DOUBLE_EQ(find(claims, "op_time_end-coarse").expected, 0.0327 + 0.0025);    // the cycle coarse + end-coarse
   for (const Claim& c : claims) EXPECT_EQ(c.evidence, Evidence::kRepeated) << c.id;  // all judged on intervals
 }
 
@@ -95,10 +95,10 @@ TEST(PaperClaims, AClaimThatShouldFailDoesFail) {
   // TC-SB at 30% as slow as half of plain, no compression 10% slower, a bent step curve, a slow end-refine.
   std::vector<Table1Row> t1 = table1_at(0.001);
   t1[1].complete_ms = 0.020;  // end-refine 20 us: with refine's 1 us the cycle exceeds the paper's 18.0 + 1.8 us
-  const std::vector<Claim> claims = judged_on_points(
-      paper_claims(paper_with_table1(),
-                   {tcsb_row(1.0, 1.10, 1.0), tcsb_row(0.75, 0.70, 0.75), tcsb_row(0.3, 0.50, 0.3)}, tcsb_fit(0.90),
-                   t1));
+  const std::vector<Claim> claims =
+      judged_on_points(paper_claims(paper_with_table1(),
+                                    {tcsb_row(1.0, 1.10, 1.0), tcsb_row(0.75, 0.70, 0.75), tcsb_row(0.3, 0.50, 0.3)},
+                                    tcsb_fit(0.90), t1));
   EXPECT_EQ(verdict(find(claims, "tcsb_30_vs_plain")), Verdict::kFail);
   EXPECT_EQ(verdict(find(claims, "tcsb_75_vs_plain")), Verdict::kPass);
   EXPECT_EQ(verdict(find(claims, "tcsb_nocompression_vs_plain")), Verdict::kFail);
@@ -114,9 +114,9 @@ TEST(PaperClaims, AnEndOperationIsJudgedWithItsBeginAsOneCycle) {
   // and a cycle dearer than the paper's fails however the time is split.
   std::vector<Table1Row> t1 = table1_at(0.001);
   t1[1].complete_ms = 0.004;
-  EXPECT_EQ(verdict(find(judged_on_points(paper_claims(paper_with_table1(), {}, tcsb_fit(0.99), t1)),
-                         "op_time_end-refine")),
-            Verdict::kPass);
+  EXPECT_EQ(
+      verdict(find(judged_on_points(paper_claims(paper_with_table1(), {}, tcsb_fit(0.99), t1)), "op_time_end-refine")),
+      Verdict::kPass);
   t1[0].complete_ms = 0.0170;  // refine within the paper's 18 us, but 17 + 4 > 19.8
   const std::vector<Claim> dear = judged_on_points(paper_claims(paper_with_table1(), {}, tcsb_fit(0.99), t1));
   EXPECT_EQ(verdict(find(dear, "op_time_refine")), Verdict::kPass);

@@ -13,9 +13,9 @@ using ojson = nlohmann::ordered_json;
 
 /// A repetition with the given mean step time and deterministic quantities.
 inline ojson repetition_doc(int index, double ms, double nodes, const std::string& hash = "h") {
-  return {{"repetition", index},   {"status", "ok"},     {"diverged_step", nullptr}, {"mean_step_ms", ms},
-          {"mean_nodes", nodes},   {"mean_links", 2 * nodes}, {"mean_interpolations", 1.5},
-          {"operations", 7},       {"final_state_hash", hash + std::to_string(index)}};
+  return {{"repetition", index},        {"status", "ok"},      {"diverged_step", nullptr},
+          {"mean_step_ms", ms},         {"mean_nodes", nodes}, {"mean_links", 2 * nodes},
+          {"mean_interpolations", 1.5}, {"operations", 7},     {"final_state_hash", hash + std::to_string(index)}};
 }
 
 /// A case whose repetitions take `ms[r]` each.
@@ -23,9 +23,14 @@ inline ojson case_doc(const std::string& net, const std::string& method, double 
   ojson reps = ojson::array();
   for (std::size_t r = 0; r < ms.size(); ++r) reps.push_back(repetition_doc(static_cast<int>(r), ms[r], nodes));
   const std::string label = net + "/" + method;
-  return {{"label", label},        {"net", net},          {"method", method == "plain" ? "plain" : "tcsb"},
-          {"compression", nullptr}, {"status", "ok"},      {"mean_nodes", nodes},
-          {"mean_links", 2 * nodes}, {"mean_interpolations", 1.5},
+  return {{"label", label},
+          {"net", net},
+          {"method", method == "plain" ? "plain" : "tcsb"},
+          {"compression", nullptr},
+          {"status", "ok"},
+          {"mean_nodes", nodes},
+          {"mean_links", 2 * nodes},
+          {"mean_interpolations", 1.5},
           {"step_ms", {{"median", ms.empty() ? 0.0 : ms[ms.size() / 2]}, {"stddev", 0.0}, {"cv", 0.0}}},
           {"repetitions", std::move(reps)}};
 }
@@ -47,11 +52,21 @@ inline ojson result_doc(int repetitions = 9) {
   return {{"schema_version", 2},
           {"tool", "tcsb"},
           {"context",
-           {{"cpu_model", "Test CPU"}, {"cores", 2}, {"build_type", "Release"}, {"bullet_version", "3.24"},
-            {"git_commit", "abc"}, {"warnings", ojson::array()}, {"seed", 1}}},
+           {{"cpu_model", "Test CPU"},
+            {"cores", 2},
+            {"build_type", "Release"},
+            {"bullet_version", "3.24"},
+            {"git_commit", "abc"},
+            {"warnings", ojson::array()},
+            {"seed", 1}}},
           {"suite",
-           {{"name", "tiny"}, {"path", "/somewhere/tiny.json"}, {"sha256", std::string(64, 'a')}, {"steps", 20},
-            {"repetitions", repetitions}, {"feedback", {{"max_step_ms", 0.0}}}, {"methods", {"plain", "tcsb"}}}},
+           {{"name", "tiny"},
+            {"path", "/somewhere/tiny.json"},
+            {"sha256", std::string(64, 'a')},
+            {"steps", 20},
+            {"repetitions", repetitions},
+            {"feedback", {{"max_step_ms", 0.0}}},
+            {"methods", {"plain", "tcsb"}}}},
           {"cases", std::move(cases)}};
 }
 

@@ -45,7 +45,7 @@ TEST(Runner, MoreRepetitionsOfChosenCasesContinueTheirNumberingAndRepeatTheirWor
     }
     std::size_t ops = 0;
     for (const RepetitionResult& r : c.repetitions) ops += static_cast<std::size_t>(r.operations);
-    EXPECT_EQ(c.ops.samples.size(), ops) << c.label;  // samples still add up per repetition
+    EXPECT_EQ(c.ops.samples.size(), ops) << c.label;              // samples still add up per repetition
     EXPECT_EQ(c.step_ms.count, c.repetitions.size()) << c.label;  // the summary covers the new repetitions
   }
   EXPECT_GE(run.wall_s, wall_before);

@@ -15,8 +15,8 @@ namespace {
 /// repetition of a case costs ms seconds by repetition_cost_s.
 struct Fixture {
   RunResult run;
-  double clock_s = 0;                 ///< the fake clock
-  std::deque<double> next_tcsb_ms;    ///< step times of the extra TC-SB@0.5 repetitions, in order (then 0.9)
+  double clock_s = 0;               ///< the fake clock
+  std::deque<double> next_tcsb_ms;  ///< step times of the extra TC-SB@0.5 repetitions, in order (then 0.9)
   std::vector<std::vector<std::size_t>> runs_of;  ///< the cases of each run_more call
   std::vector<int> extras;
 

@@ -246,10 +246,12 @@ TEST(SuiteReject, NetTooLargeForMemory) {
 TEST(SuiteReject, HugeStepsBlamesSteps) {
   if (!meminfo_readable()) GTEST_SKIP() << "/proc/meminfo unreadable: the memory check is skipped by design";
   // 2e9 steps x 1000 repetitions x 32 B: about 64 TB of samples, on any machine.
-  const std::string msg = rejected_edit([](json& j) {
-    j["steps"] = 2000000000;
-    j["repetitions"] = 1000;
-  }, "steps");
+  const std::string msg = rejected_edit(
+      [](json& j) {
+        j["steps"] = 2000000000;
+        j["repetitions"] = 1000;
+      },
+      "steps");
   EXPECT_NE(msg.find("2000000000 steps"), std::string::npos) << msg;
   EXPECT_NE(msg.find("1000 repetitions"), std::string::npos) << msg;
 }
@@ -403,11 +405,36 @@ TEST(SuiteReject, Methods) {
 TEST(SuiteReject, Compression) {
   const auto with_tcsb = [](json& j) { j["methods"] = {"plain", "tcsb"}; };
   rejected_edit([&](json& j) { with_tcsb(j); }, "compression");  // tcsb needs targets
-  rejected_edit([&](json& j) { with_tcsb(j); j["compression"] = json::array(); }, "compression");
-  rejected_edit([&](json& j) { with_tcsb(j); j["compression"] = {1.0, 1.5}; }, "compression[1]");
-  rejected_edit([&](json& j) { with_tcsb(j); j["compression"] = {1.0, 0.0}; }, "compression[1]");
-  rejected_edit([&](json& j) { with_tcsb(j); j["compression"] = {0.3, -0.3}; }, "compression[1]");
-  rejected_edit([&](json& j) { with_tcsb(j); j["compression"] = {0.3, 0.3}; }, "compression[1]");
+  rejected_edit(
+      [&](json& j) {
+        with_tcsb(j);
+        j["compression"] = json::array();
+      },
+      "compression");
+  rejected_edit(
+      [&](json& j) {
+        with_tcsb(j);
+        j["compression"] = {1.0, 1.5};
+      },
+      "compression[1]");
+  rejected_edit(
+      [&](json& j) {
+        with_tcsb(j);
+        j["compression"] = {1.0, 0.0};
+      },
+      "compression[1]");
+  rejected_edit(
+      [&](json& j) {
+        with_tcsb(j);
+        j["compression"] = {0.3, -0.3};
+      },
+      "compression[1]");
+  rejected_edit(
+      [&](json& j) {
+        with_tcsb(j);
+        j["compression"] = {0.3, 0.3};
+      },
+      "compression[1]");
   const std::string msg = rejected_edit([](json& j) { j["compression"] = {0.5}; }, "compression");
   EXPECT_NE(msg.find("tcsb"), std::string::npos) << msg;
 }

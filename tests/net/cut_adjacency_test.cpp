@@ -148,9 +148,9 @@ TEST(CutAdjacency, FinestCutCountsOnASquare) {
     ASSERT_LE(count, 4u);
     ++by_count[count];
   }
-  EXPECT_EQ(by_count[2], 4);            // corners
-  EXPECT_EQ(by_count[3], 4 * 15);       // edges
-  EXPECT_EQ(by_count[4], 15 * 15);      // interior
+  EXPECT_EQ(by_count[2], 4);        // corners
+  EXPECT_EQ(by_count[3], 4 * 15);   // edges
+  EXPECT_EQ(by_count[4], 15 * 15);  // interior
   EXPECT_EQ(by_count[0] + by_count[1], 0);
 }
 

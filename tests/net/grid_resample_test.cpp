@@ -17,8 +17,8 @@ std::vector<Eigen::Vector3d> affine_field(GridSize g) {
   for (int j = 0; j < g.height; ++j)
     for (int i = 0; i < g.width; ++i) {
       const double x = -4.0 + 8.0 * i / (g.width - 1), z = -4.0 + 8.0 * j / (g.height - 1);
-      f[static_cast<std::size_t>(j * g.width + i)] = Eigen::Vector3d(1.1 * x + 0.2 * z + 0.5, 8.0 - 0.3 * x + 0.7 * z,
-                                                                     -0.1 * x + 0.9 * z - 1.0);
+      f[static_cast<std::size_t>(j * g.width + i)] =
+          Eigen::Vector3d(1.1 * x + 0.2 * z + 0.5, 8.0 - 0.3 * x + 0.7 * z, -0.1 * x + 0.9 * z - 1.0);
     }
   return f;
 }
@@ -30,8 +30,8 @@ TEST(GridResample, ReproducesAnAffineFieldExactlyBetweenAnyTwoGrids) {
     std::vector<Eigen::Vector3d> dst(to.count());
     resample_bilinear(from, src, to, dst);
     for (std::size_t i = 0; i < dst.size(); ++i)
-      ASSERT_LT((dst[i] - want[i]).norm(), 1e-12) << from.width << "x" << from.height << " -> " << to.width << "x"
-                                                  << to.height << " node " << i;
+      ASSERT_LT((dst[i] - want[i]).norm(), 1e-12)
+          << from.width << "x" << from.height << " -> " << to.width << "x" << to.height << " node " << i;
   }
 }
 

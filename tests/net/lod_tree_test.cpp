@@ -17,8 +17,8 @@ namespace {
 struct Size {
   int w, h;
 };
-const std::vector<Size> kSizes = {{2, 2}, {3, 3}, {2, 9}, {9, 2}, {4, 8}, {16, 16}, {5, 7},
-                                  {17, 9}, {33, 17}, {65, 65}, {64, 32}};
+const std::vector<Size> kSizes = {{2, 2}, {3, 3},  {2, 9},   {9, 2},   {4, 8},  {16, 16},
+                                  {5, 7}, {17, 9}, {33, 17}, {65, 65}, {64, 32}};
 
 std::unique_ptr<Net> make_net(int w, int h, unsigned pins = kAllCorners, MassMode mode = MassMode::kTotal) {
   NetSpec spec;
@@ -217,7 +217,8 @@ TEST(LodTree, MassIsTheSumOfTheChildrenAndTheRootHoldsItAll) {
         ASSERT_NEAR(n.mass, sum, 1e-12 * std::max(1.0, sum));
         double leaves = 0;
         for (int y = n.leaf_y0; y < n.leaf_y1; ++y)
-          for (int x = n.leaf_x0; x < n.leaf_x1; ++x) leaves += net->masses()[static_cast<std::size_t>(net->index(x, y))];
+          for (int x = n.leaf_x0; x < n.leaf_x1; ++x)
+            leaves += net->masses()[static_cast<std::size_t>(net->index(x, y))];
         ASSERT_NEAR(n.mass, leaves, 1e-12 * std::max(1.0, leaves));
       }
       for (std::size_t i = 0; i < tree.leaf_count(); ++i) ASSERT_EQ(tree.nodes()[i].mass, net->masses()[i]);

@@ -70,8 +70,8 @@ TEST(Net, LinkCountsMatchExpectedAndClosedFormulas) {
       for (const bool bend : {false, true}) {
         const NetSpec spec = spec_of(s.w, s.h, shear, bend);
         const Net net(spec);
-        const std::size_t formula = structural_formula(s.w, s.h) + (shear ? shear_formula(s.w, s.h) : 0) +
-                                    (bend ? bend_formula(s.w, s.h) : 0);
+        const std::size_t formula =
+            structural_formula(s.w, s.h) + (shear ? shear_formula(s.w, s.h) : 0) + (bend ? bend_formula(s.w, s.h) : 0);
         EXPECT_EQ(net.links().size(), formula) << label(spec);
         EXPECT_EQ(expected_link_count(spec), formula) << label(spec);
         std::size_t by_kind[3] = {0, 0, 0};

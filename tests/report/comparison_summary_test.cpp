@@ -54,8 +54,7 @@ TEST(ComparisonSummary, RegressionAndChangedBehaviourAreMarked) {
   EXPECT_NE(s.find("| **REGRESSED** |"), std::string::npos) << s;
   EXPECT_NE(s.find("| n9/tcsb@0.5 | step ms |"), std::string::npos);
   EXPECT_NE(s.find("slower (warning only)"), std::string::npos) << s;
-  EXPECT_NE(s.find("| n17/plain | N (rep 5) | 81 | 82 | +1.23 | – | **changed behaviour** |"), std::string::npos)
-      << s;
+  EXPECT_NE(s.find("| n17/plain | N (rep 5) | 81 | 82 | +1.23 | – | **changed behaviour** |"), std::string::npos) << s;
   EXPECT_EQ(comparison_verdict_line(c.outcome).rfind("FAIL: 1 regression, 1 behaviour change", 0), 0u)
       << comparison_verdict_line(c.outcome);
 }
@@ -83,10 +82,11 @@ TEST(ComparisonSummary, UnmatchedCasesAndRepetitionsAreRowsWithTheirLabel) {
   const Compared c = compare(result_doc(), next);
   const std::string s = summary(c);
   EXPECT_TRUE(s.starts_with("## tcsb compare: FAIL\n")) << s;
-  EXPECT_NE(s.find("| n17/tcsb@0.5 | presence | present | absent | – | – | **changed behaviour** |"),
-            std::string::npos) << s;
+  EXPECT_NE(s.find("| n17/tcsb@0.5 | presence | present | absent | – | – | **changed behaviour** |"), std::string::npos)
+      << s;
   EXPECT_NE(s.find("| n9/plain | presence (rep 3) | present | absent | – | – | **changed behaviour** |"),
-            std::string::npos) << s;
+            std::string::npos)
+      << s;
   EXPECT_NE(s.find("3 cases, 26 repetitions compared"), std::string::npos) << s;
   EXPECT_EQ(comparison_verdict_line(c.outcome).rfind("FAIL: 0 regressions, 2 behaviour changes", 0), 0u)
       << comparison_verdict_line(c.outcome);

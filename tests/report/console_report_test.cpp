@@ -21,11 +21,10 @@ TEST(TextTable, PadsColumnsToTheWidestCell) {
   t.add_row({"longer", "10.25"});
   std::ostringstream out;
   t.print(out, 0);
-  EXPECT_EQ(out.str(),
-            "name       ms\n"
-            "------  -----\n"
-            "a         1.5\n"
-            "longer  10.25\n");
+  EXPECT_EQ(out.str(), "name       ms\n"
+                       "------  -----\n"
+                       "a         1.5\n"
+                       "longer  10.25\n");
 }
 
 TEST(TextTable, NumberFormatting) {

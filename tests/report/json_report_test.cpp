@@ -67,8 +67,8 @@ TEST(NativeJson, ContextCarriesTheSuiteHashAndSeed) {
 TEST(NativeJson, SuiteBlock) {
   const ojson suite = native_json(small_run())["suite"];
   EXPECT_EQ(keys(suite), (std::vector<std::string>{"name", "description", "path", "sha256", "steps", "warmup_steps",
-                                                   "repetitions", "dt", "gravity", "solver", "tcsb", "feedback",
-                                                   "nets", "methods", "compression"}));
+                                                   "repetitions", "dt", "gravity", "solver", "tcsb", "feedback", "nets",
+                                                   "methods", "compression"}));
   EXPECT_EQ(keys(suite["solver"]),
             (std::vector<std::string>{"piterations", "viterations", "diterations", "damping", "stiffness"}));
   EXPECT_EQ(keys(suite["tcsb"]), (std::vector<std::string>{"blend_steps", "placement"}));
@@ -81,9 +81,9 @@ TEST(NativeJson, CaseAndRepetitionKeys) {
   ASSERT_EQ(doc["cases"].size(), 4u);
   const ojson& c = doc["cases"][1];
   EXPECT_EQ(keys(c), (std::vector<std::string>{"label", "net", "method", "compression", "target_nodes", "net_nodes",
-                                               "net_links", "status", "mean_nodes", "mean_links",
-                                               "mean_interpolations", "mean_feedback_ms", "mean_feedback_total_ms",
-                                               "step_ms", "ratio_vs_plain", "repetitions", "op_work"}));
+                                               "net_links", "status", "mean_nodes", "mean_links", "mean_interpolations",
+                                               "mean_feedback_ms", "mean_feedback_total_ms", "step_ms",
+                                               "ratio_vs_plain", "repetitions", "op_work"}));
   EXPECT_FALSE(doc["cases"][0].contains("op_work"));  // plain: no TreeCut operations
   EXPECT_EQ(c["label"], "n0/tcsb@0.3");
   EXPECT_EQ(c["compression"], 0.3);
@@ -116,7 +116,7 @@ TEST(NativeJson, OpWorkPerOperationAndCount) {
   EXPECT_EQ(work["coarse"]["interior_calls"], 1);
   EXPECT_EQ(work["coarse"]["links"]["max"], 20);
   EXPECT_EQ(work["coarse"]["links"]["mean"], 17.5);
-  EXPECT_EQ(work["coarse"]["links"]["interior_mean"], 20);  // a alone
+  EXPECT_EQ(work["coarse"]["links"]["interior_mean"], 20);          // a alone
   EXPECT_TRUE(work["refine"]["links"]["interior_mean"].is_null());  // called, but never in the interior
   EXPECT_EQ(work["coarse"]["dbvt_ancestors"]["mean"], 1.5);
   EXPECT_EQ(work["refine"]["calls"], 1);

@@ -65,9 +65,8 @@ TEST(MarkdownExport, IsARegisteredFormat) {
 TEST(MarkdownExport, HeadingAndSourceLineComeFromTheDocument) {
   const std::string md = markdown_report(synthetic_document());
   EXPECT_EQ(md.substr(0, md.find('\n')), "## Run: suite `synthetic`, 2026-01-02, abcdef0");
-  EXPECT_TRUE(has_line(md,
-                       "Source: suite `synthetic` (2 nets, 1 repetitions of 200 steps) · 2026-01-02 03:04:05 UTC · "
-                       "commit abcdef0 · Test CPU 9000, 2 cores · load 0.250 at the start · 12.3 s wall."))
+  EXPECT_TRUE(has_line(md, "Source: suite `synthetic` (2 nets, 1 repetitions of 200 steps) · 2026-01-02 03:04:05 UTC · "
+                           "commit abcdef0 · Test CPU 9000, 2 cores · load 0.250 at the start · 12.3 s wall."))
       << md;
   EXPECT_EQ(md.back(), '\n');
   EXPECT_NE(md.substr(md.size() - 2), "\n\n") << "no blank line at the end: the script joins sections";
@@ -173,18 +172,15 @@ TEST(MarkdownExport, AReproductionPutsThePaperBesideOurs) {
   const std::string md = markdown_report(doc);
   EXPECT_EQ(md.substr(0, md.find('\n')), "## Reproduction: suite `synthetic`, 2026-01-02, abcdef0");
   EXPECT_TRUE(contains(md, " · 77.9 s wall (claims' intervals 1.25 s).")) << md;
-  EXPECT_TRUE(has_line(md,
-                       "| method | compression | paper N | ours N | paper L | ours L | paper I | ours I | "
-                       "paper ms | ours ms | paper ratio | ours ratio | node ratio | nets | status | RMS % | "
-                       "max % | pop max % |"))
+  EXPECT_TRUE(has_line(md, "| method | compression | paper N | ours N | paper L | ours L | paper I | ours I | "
+                           "paper ms | ours ms | paper ratio | ours ratio | node ratio | nets | status | RMS % | "
+                           "max % | pop max % |"))
       << md;
-  EXPECT_TRUE(has_line(md,
-                       "| plain | - | 4266 | 250.0 | 8413 | 500.0 | 0 | 0 | 11.09 | 2.000 | 1.000 | 1.000 | "
-                       "1.000 | 2 | ok | | | |"))
+  EXPECT_TRUE(has_line(md, "| plain | - | 4266 | 250.0 | 8413 | 500.0 | 0 | 0 | 11.09 | 2.000 | 1.000 | 1.000 | "
+                           "1.000 | 2 | ok | | | |"))
       << md;
-  EXPECT_TRUE(has_line(md,
-                       "| tcsb | 50% | | 125.0 | | 250.0 | | 3.000 | | 1.000 | | 0.5000 | 0.5000 | 2 | ok | "
-                       "8.842 | 47.57 | 3.232 |"))
+  EXPECT_TRUE(has_line(md, "| tcsb | 50% | | 125.0 | | 250.0 | | 3.000 | | 1.000 | | 0.5000 | 0.5000 | 2 | ok | "
+                           "8.842 | 47.57 | 3.232 |"))
       << md;
   EXPECT_TRUE(contains(md, "Paper (Old PC) beside ours.")) << md;
 }
@@ -232,9 +228,8 @@ TEST(MarkdownExport, FidelitySummary) {
                     {"on_front", true}}};
   doc["max_compression"] = {{"threshold_pct", 2.0}, {"compression", nullptr}};
   const std::string md = markdown_report(doc);
-  EXPECT_TRUE(has_line(md,
-                       "| tcsb | 30% | 1279 | 1.500 | 2.500 | 4.000 | 1.500 | 4.000 | | 0.2500 | | 3.000 | 5 | "
-                       "ok |"))
+  EXPECT_TRUE(has_line(md, "| tcsb | 30% | 1279 | 1.500 | 2.500 | 4.000 | 1.500 | 4.000 | | 0.2500 | | 3.000 | 5 | "
+                           "ok |"))
       << md;
   EXPECT_FALSE(contains(md, "| grid |")) << "no row has a grid";
   EXPECT_TRUE(has_line(md, "| 30% | 1279 | 0.2500 | 1.500 | 3.000 | yes |")) << md;

@@ -155,8 +155,8 @@ TEST(Table1, SharesMeansAndPercentiles) {
   EXPECT_DOUBLE_EQ(refine.complete_ms, 0.01);
   EXPECT_DOUBLE_EQ(refine.node_ops_pct, 75);
   EXPECT_DOUBLE_EQ(refine.link_ops_pct, 25);
-  EXPECT_DOUBLE_EQ(refine.p50_us, 10);                 // between 8 and 12
-  EXPECT_DOUBLE_EQ(refine.p99_us, 12 + 0.97 * 4);      // linear interpolation at rank 2.97
+  EXPECT_DOUBLE_EQ(refine.p50_us, 10);             // between 8 and 12
+  EXPECT_DOUBLE_EQ(refine.p99_us, 12 + 0.97 * 4);  // linear interpolation at rank 2.97
 
   EXPECT_EQ(rows[1].count, 0u);
   EXPECT_EQ(rows[1].complete_ms, 0);

@@ -55,9 +55,7 @@ TEST(ResultSchema, PinsTheCurrentSchemaVersion) {
   EXPECT_EQ(result_schema()["properties"]["schema_version"]["enum"], ojson::array({kNativeJsonSchemaVersion}));
 }
 
-TEST(ResultSchema, NativeJsonConforms) {
-  EXPECT_EQ(problems(native_json(run_with_cases())), Lines{});
-}
+TEST(ResultSchema, NativeJsonConforms) { EXPECT_EQ(problems(native_json(run_with_cases())), Lines{}); }
 
 TEST(ResultSchema, DivergedAndEmptyRunsConform) {
   RunResult r = run_with_cases();
@@ -109,11 +107,10 @@ TEST(ResultSchema, RejectsWhatIsNotANativeResult) {
   doc["cases"][0]["status"] = "fine";
   doc["suite"]["sha256"] = "abc";
   doc["extra"] = 1;
-  EXPECT_EQ(problems(doc), (Lines{"schema_version: must be one of [2], got 1",
-                                  "suite.sha256: must have at least 64 characters, got 3",
-                                  "cases[0].status: must be one of [\"ok\",\"diverged\"], got \"fine\"",
-                                  "cases[1].repetitions[0].final_state_hash: missing (required)",
-                                  "extra: unexpected key"}));
+  EXPECT_EQ(problems(doc),
+            (Lines{"schema_version: must be one of [2], got 1", "suite.sha256: must have at least 64 characters, got 3",
+                   "cases[0].status: must be one of [\"ok\",\"diverged\"], got \"fine\"",
+                   "cases[1].repetitions[0].final_state_hash: missing (required)", "extra: unexpected key"}));
 }
 
 TEST(ResultSchema, TheCommittedCiBaselineConforms) {

@@ -13,7 +13,9 @@ TEST(TerminalText, ControlsAreEscaped) {
   EXPECT_EQ(terminal_safe("\x1b[2Jx"), "\\x1b[2Jx");
   EXPECT_EQ(terminal_safe(std::string("a\0b", 3)), "a\\x00b");
   EXPECT_EQ(terminal_safe("tab\there\x7f"), "tab\\x09here\\x7f");
-  EXPECT_EQ(terminal_safe("\xc2\x9b" "31m"), "\\u009b31m");  // C1 CSI, which some terminals obey like ESC [
+  EXPECT_EQ(terminal_safe("\xc2\x9b"
+                          "31m"),
+            "\\u009b31m");  // C1 CSI, which some terminals obey like ESC [
 }
 
 TEST(TerminalText, Utf8IsKeptAndInvalidBytesEscaped) {
