@@ -4,8 +4,11 @@
 # and run every test once more. Any failure stops it with a non-zero exit.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# Google Benchmark's compare.py (libbenchmark-tools, which needs SciPy) for the test that it reads our exports.
-bash scripts/install-deps.sh libbenchmark-tools python3-scipy
+# Google Benchmark's compare.py (libbenchmark-tools, which needs SciPy) for the test that it reads our exports;
+# clang-format for the format check.
+bash scripts/install-deps.sh libbenchmark-tools python3-scipy clang-format
+# Formatting first, so a format problem fails in seconds: every C++ source as .clang-format says.
+bash scripts/check-format.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build
 ctest --test-dir build --output-on-failure -j2
