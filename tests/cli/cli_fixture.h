@@ -16,6 +16,15 @@ namespace tcsb::cli_test {
 
 namespace fs = std::filesystem;
 
+/// Whether the executable under test is built with AddressSanitizer (the whole tree is, tests included). ASan
+/// reserves terabytes of shadow address space at start-up, so a sanitized process cannot start under `ulimit -v`:
+/// tests that need an address-space limit run in the Release build only.
+#ifdef __SANITIZE_ADDRESS__
+inline constexpr bool kAddressSanitized = true;
+#else
+inline constexpr bool kAddressSanitized = false;
+#endif
+
 /// What one run of the executable did.
 struct Outcome {
   int exit_code = -1;

@@ -34,6 +34,7 @@ void expect_one_line_exit_2(const Outcome& o, const std::string& needle, const s
 // Under `ulimit -v` the guard read only MemAvailable, passed a suite the limit could not hold, and the run died
 // with SIGSEGV inside Bullet's allocator. The guard reads RLIMIT_AS now and refuses the suite before it runs.
 TEST_F(Cli, SuiteBeyondUlimitIsRefusedNotCrashed) {
+  if (kAddressSanitized) GTEST_SKIP() << "no sanitized process starts under ulimit -v (cli_fixture.h)";
   // 1025 x 1025 plain nodes need about 0.7 GiB; the limit leaves the process far less.
   std::string suite = replaced(kTinySuite, "\"width\": 9, \"height\": 9", "\"width\": 1025, \"height\": 1025");
   suite =
@@ -49,6 +50,7 @@ TEST_F(Cli, SuiteBeyondUlimitIsRefusedNotCrashed) {
 // When an allocation fails anyway (here: tcsb frames keeps 800 captures of a 65 x 65 net, far more than the
 // limit), the user gets exit 2 and one line naming the suite and the net, not a signal or an internal error.
 TEST_F(Cli, AllocationFailureIsExit2NamingSuiteAndNet) {
+  if (kAddressSanitized) GTEST_SKIP() << "no sanitized process starts under ulimit -v (cli_fixture.h)";
   write_file(dir_ / "mid.json", replaced(kTinySuite, "\"width\": 9, \"height\": 9", "\"width\": 65, \"height\": 65"));
   std::string steps;
   for (int s = 0; s < 800; ++s) {
@@ -66,6 +68,7 @@ TEST_F(Cli, AllocationFailureIsExit2NamingSuiteAndNet) {
 // Feedback worker threads that cannot start under the limit (their stacks alone exceed it) threw from a constructor
 // with a started thread still joinable: std::terminate, SIGABRT. Now it is the same exit 2 as any allocation.
 TEST_F(Cli, ThreadsThatCannotStartAreExit2) {
+  if (kAddressSanitized) GTEST_SKIP() << "no sanitized process starts under ulimit -v (cli_fixture.h)";
   write_file(dir_ / "par.json",
              replaced(kTinySuite, "\"solver\"", "\"feedback\": {\"parallel\": true, \"threads\": 8}, \"solver\""));
   const Outcome o =

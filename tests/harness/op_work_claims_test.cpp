@@ -166,7 +166,8 @@ TEST(OpWorkClaims, AMaximumOverItsBoundFailsEvenWhenEveryNetAgrees) {
   over.dbvt_leaves = op_work_bounds::kCoarse.dbvt_leaves + 1;  // a coarse adds one node, so one leaf
   for (CaseResult& c : r.cases)
     if (c.key.method == Method::kTcsb) c.ops.samples[4] = sample(OpKind::kCoarse, over);
-  const Claim& coarse = find(op_work_claims(r), "op_work_coarse");
+  const std::vector<Claim> claims = op_work_claims(r);
+  const Claim& coarse = find(claims, "op_work_coarse");
   EXPECT_FALSE(passed(coarse));
   EXPECT_DOUBLE_EQ(*coarse.measured, 2.0);  // 2 leaves against a bound of 1
 }
