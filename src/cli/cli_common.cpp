@@ -5,9 +5,9 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "harness/context.h"
-#include "harness/out_of_memory.h"
-#include "harness/suite.h"
+#include "run/context.h"
+#include "run/out_of_memory.h"
+#include "suite/suite.h"
 #include "report/report_writer.h"
 #include "report/terminal_text.h"
 
@@ -41,7 +41,7 @@ std::filesystem::path resolve_suite(const std::string& argument) {
   if (std::filesystem::is_regular_file(bundled, ec)) return bundled;
   std::string known;
   for (const std::string& name : bundled_suite_names()) known += (known.empty() ? "" : ", ") + name;
-  throw SuiteError(argument, "",
+  throw InputError(argument, "",
                    "no such file, and not a bundled suite (bundled: " +
                        (known.empty() ? "none in " + suites_dir().string() : known) + ")");
 }
@@ -61,7 +61,7 @@ void print_warning(std::string_view message) { std::cerr << "tcsb: warning: " <<
 int guarded(const std::function<int()>& command) {
   try {
     return command();
-  } catch (const SuiteError& e) {
+  } catch (const InputError& e) {
     print_error(e.what());
     return kExitUsage;
   } catch (const UsageError& e) {
@@ -74,7 +74,7 @@ int guarded(const std::function<int()>& command) {
   } catch (const OutOfMemoryError& e) {
     print_error(e.what());
     return kExitUsage;
-  } catch (const std::bad_alloc&) {  // outside a run (the runner names the case: harness/out_of_memory.h)
+  } catch (const std::bad_alloc&) {  // outside a run (the runner names the case: run/out_of_memory.h)
     print_error(out_of_memory_message("tcsb"));
     return kExitUsage;
   } catch (const std::exception& e) {

@@ -38,7 +38,7 @@ std::filesystem::path suites_dir();
 std::vector<std::string> bundled_suite_names();
 
 /// A SUITE argument as a file: an existing path as is; a bare name ("paper") as suites_dir()/NAME.json. Throws
-/// SuiteError naming the argument when a bare name is neither a file nor a bundled suite.
+/// InputError naming the argument when a bare name is neither a file nor a bundled suite.
 std::filesystem::path resolve_suite(const std::string& argument);
 
 /// `text` with line breaks turned into spaces, so every error is exactly one line, made terminal_safe (control
@@ -51,7 +51,7 @@ void print_error(std::string_view message);
 /// Writes "tcsb: warning: <message>" as one line to stderr.
 void print_warning(std::string_view message);
 
-/// Runs a command, turning exceptions into one stderr line and an exit code: SuiteError, UsageError and running out
+/// Runs a command, turning exceptions into one stderr line and an exit code: InputError, UsageError and running out
 /// of memory (OutOfMemoryError, std::bad_alloc: a suite too large for this machine) -> kExitUsage; WriteError
 /// (report/report_writer.h: an output the machine refused) -> kExitInternal; any other
 /// std::exception -> "tcsb: internal error: ..." and kExitInternal.

@@ -14,7 +14,7 @@
 #include "cli/commands.h"
 #include "cli/result_file.h"
 #include "cli/run_support.h"
-#include "harness/gate_outcome.h"
+#include "gate/gate_outcome.h"
 #include "report/comparison_summary.h"
 #include "report/report_writer.h"
 

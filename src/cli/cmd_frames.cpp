@@ -8,9 +8,9 @@
 #include "cli/commands.h"
 #include "cli/flag_values.h"
 #include "cli/run_support.h"
-#include "harness/context.h"
-#include "harness/figure_frames.h"
-#include "harness/out_of_memory.h"
+#include "run/context.h"
+#include "fidelity/figure_frames.h"
+#include "run/out_of_memory.h"
 #include "report/frames_json.h"
 #include "report/json_report.h"
 

@@ -6,8 +6,8 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "harness/json_file.h"
-#include "harness/suite.h"
+#include "base/json_file.h"
+#include "suite/suite.h"
 #include "report/terminal_text.h"
 #include "report/text_table.h"
 
@@ -28,7 +28,7 @@ std::vector<std::string> describe(const std::string& name) {
   nlohmann::json j;
   try {
     j = read_json_file<nlohmann::json>(path, kSuiteJsonLimits);  // bounded: a huge or hostile file cannot stall it
-  } catch (const SuiteError&) {
+  } catch (const InputError&) {
   }
   if (!j.is_object()) return {name, "?", "?", "(not a valid suite: run `tcsb validate " + name + "`)"};
   const auto nets = j.find("nets");

@@ -8,7 +8,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/run_support.h"
-#include "harness/step_clock.h"
+#include "case/step_clock.h"
 #include "report/json_report.h"
 #include "report/report_writer.h"
 #include "report/reproduction_report.h"

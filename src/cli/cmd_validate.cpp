@@ -5,8 +5,8 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "harness/case_plan.h"
-#include "harness/suite_memory.h"
+#include "suite/case_plan.h"
+#include "suite/suite_memory.h"
 #include "report/terminal_text.h"
 
 namespace tcsb::cli {

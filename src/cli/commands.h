@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/suite.h"
+#include "suite/suite.h"
 
 namespace CLI {
 class App;
@@ -101,7 +101,7 @@ int compare_command(const CompareArgs& args);
 
 /// Registers `frames [--suite S] [--net N] [--compression C] [--steps A,B,...] [--out FILE]`.
 CLI::App* add_frames_command(CLI::App& app, FramesArgs& args);
-/// Records the frames (harness/figure_frames.h) and writes their JSON (report/frames_json.h).
+/// Records the frames (fidelity/figure_frames.h) and writes their JSON (report/frames_json.h).
 int frames_command(const FramesArgs& args);
 
 /// Registers `export RESULT --format NAME [--out FILE]`.

@@ -1,8 +1,8 @@
 #include "cli/result_file.h"
 
 #include "cli/cli_common.h"
-#include "harness/json_file.h"
-#include "harness/suite.h"
+#include "base/json_file.h"
+#include "base/input_error.h"
 #include "report/json_report.h"
 #include "report/result_schema.h"
 
@@ -12,7 +12,7 @@ LoadedResult load_result_file(const std::string& path) {
   LoadedResult result;
   try {
     result.document = read_json_file<nlohmann::ordered_json>(path, kResultJsonLimits);
-  } catch (const SuiteError& e) {
+  } catch (const InputError& e) {
     throw UsageError(e.what());
   }
   const nlohmann::ordered_json& doc = result.document;

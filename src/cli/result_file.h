@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/result_view.h"
+#include "gate/result_view.h"
 
 namespace tcsb::cli {
 

@@ -7,9 +7,9 @@
 #include <iostream>
 
 #include "cli/cli_common.h"
-#include "harness/context.h"
-#include "harness/runner.h"
-#include "harness/stall.h"
+#include "run/context.h"
+#include "run/runner.h"
+#include "run/stall.h"
 #include "report/console_report.h"
 #include "report/report_writer.h"
 #include "report/terminal_text.h"

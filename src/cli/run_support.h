@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "harness/run_result.h"
-#include "harness/suite.h"
+#include "run/run_result.h"
+#include "suite/suite.h"
 #include "report/report_format.h"
 
 namespace CLI {
@@ -41,10 +41,10 @@ void add_repetitions_option(CLI::App& command, std::optional<int>& repetitions);
 /// Applies --repetitions to the suite, within the bounds the suite file itself has (UsageError otherwise).
 void apply_repetitions(const std::optional<int>& repetitions, Suite& suite);
 
-/// Runs the suite as `run` and `reproduce` do, talking on stderr: the machine's warnings (harness/context.h), a
+/// Runs the suite as `run` and `reproduce` do, talking on stderr: the machine's warnings (run/context.h), a
 /// single updating progress line when stderr is a terminal and not `quiet`, the console report unless `quiet`, then
 /// a warning per diverged repetition (case, step, reason) and per repetition during which the machine stalled
-/// (harness/stall.h).
+/// (run/stall.h).
 RunResult run_on_console(const Suite& suite, bool quiet);
 
 /// Writes the report to stdout, or atomically to `out`. If the file cannot be written after a long run, the report

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "analysis/claim.h"
-#include "harness/sequential_claims.h"
+#include "paper/sequential_claims.h"
 
 namespace tcsb {
 

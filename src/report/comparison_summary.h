@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "harness/gate_outcome.h"
-#include "harness/result_view.h"
+#include "gate/gate_outcome.h"
+#include "gate/result_view.h"
 
 namespace tcsb {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <ostream>
 
-#include "harness/paper_tables.h"
+#include "paper/paper_tables.h"
 #include "report/fidelity_console.h"
 #include "report/terminal_text.h"
 #include "report/text_table.h"

@@ -2,8 +2,8 @@
 
 #include <ostream>
 
-#include "harness/fidelity_tables.h"
-#include "harness/paper_tables.h"
+#include "paper/fidelity_tables.h"
+#include "paper/paper_tables.h"
 #include "report/claims_console.h"
 #include "report/text_table.h"
 

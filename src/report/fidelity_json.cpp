@@ -1,6 +1,6 @@
 #include "report/fidelity_json.h"
 
-#include "harness/fidelity_tables.h"
+#include "paper/fidelity_tables.h"
 #include "report/json_report.h"
 
 namespace tcsb {

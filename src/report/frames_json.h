@@ -1,12 +1,12 @@
-// The document `tcsb frames` writes: the paper's Figure 6 as data (harness/figure_frames.h), for
+// The document `tcsb frames` writes: the paper's Figure 6 as data (fidelity/figure_frames.h), for
 // scripts/plot_figure6.py.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
-#include "harness/context.h"
-#include "harness/figure_frames.h"
-#include "harness/suite.h"
+#include "run/context.h"
+#include "fidelity/figure_frames.h"
+#include "suite/suite.h"
 
 namespace tcsb {
 

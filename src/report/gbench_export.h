@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/result_view.h"
+#include "gate/result_view.h"
 #include "report/report_format.h"
 
 namespace tcsb {

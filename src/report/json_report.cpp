@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "harness/paper_tables.h"
+#include "paper/paper_tables.h"
 #include "report/fidelity_json.h"
 #include "report/op_work_json.h"
 

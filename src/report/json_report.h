@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "harness/run_result.h"
+#include "run/run_result.h"
 #include "report/report_format.h"
 
 namespace tcsb {
@@ -31,7 +31,7 @@ nlohmann::ordered_json json_integer(const std::optional<int>& value);
 /// recorded strings (a host name, say) is replaced, not thrown on.
 std::string json_text(const nlohmann::ordered_json& doc, int indent = 2);
 
-/// The `context` block of every document tcsb writes: the machine and build (harness/context.h), and the suite's
+/// The `context` block of every document tcsb writes: the machine and build (run/context.h), and the suite's
 /// path, SHA-256 and seed.
 nlohmann::ordered_json context_json(const Context& context, const Suite& suite);
 

@@ -1,6 +1,6 @@
 #include "report/op_work_json.h"
 
-#include "harness/op_work.h"
+#include "paper/op_work.h"
 #include "report/json_report.h"
 
 namespace tcsb {

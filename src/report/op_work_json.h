@@ -1,6 +1,6 @@
 // The "op_work" object of a TC-SB case in the native result JSON: per operation, the number of calls (all, and
 // interior) and, per OpWork count, the largest and the mean count of one call and the mean over interior calls
-// (harness/op_work.h).
+// (paper/op_work.h).
 #pragma once
 
 #include <nlohmann/json.hpp>

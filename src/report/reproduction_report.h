@@ -1,4 +1,4 @@
-// The reproduction: the paper's claims judged in looks (harness/sequential_claims.h) on a finished run, and its
+// The reproduction: the paper's claims judged in looks (paper/sequential_claims.h) on a finished run, and its
 // report — our Tables 1 and 2 beside the paper's, Figure 5's fits, the claims with their verdicts — as a JSON
 // section appended to the native report, and as text for the console.
 #pragma once
@@ -11,9 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/claim.h"
-#include "harness/paper_reference.h"
-#include "harness/run_result.h"
-#include "harness/sequential_claims.h"
+#include "paper/paper_reference.h"
+#include "run/run_result.h"
+#include "paper/sequential_claims.h"
 
 namespace tcsb {
 

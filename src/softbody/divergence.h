@@ -27,7 +27,7 @@ inline constexpr int kFullCheckEvery = 50;           ///< steps between O(N + L)
 /// The check a timed run makes after step `step` (0-based) of `total`: the quick check every step, the full check
 /// every kFullCheckEvery steps and after the last, with the bounds above scaled by the net's extent. A divergence
 /// found here may have begun up to kFullCheckEvery steps earlier: after last_full_check_before(step). The timed
-/// runner finds the first diverged step by replaying (harness/runner.cpp); untimed loops use divergence_now.
+/// runner finds the first diverged step by replaying (run/runner.cpp); untimed loops use divergence_now.
 std::optional<std::string> divergence_after_step(const btSoftBody& body, double net_extent, int step, int total);
 
 /// The last step before `step` after which divergence_after_step made its full check (-1: none). Every step up to

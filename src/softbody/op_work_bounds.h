@@ -1,7 +1,7 @@
 // Upper bounds on the work of one TreeCut operation (OpWork, op_sample.h), derived from the cut's invariants, so
 // that "the operations are constant in time" (paper, Figure 4) becomes a deterministic statement: whatever the size
-// of the net, no operation counts more than these. The op_work claims (harness/op_work_claims.h) and the scaling test
-// (tests/harness/op_work_scaling_test.cpp) check measured maxima against them.
+// of the net, no operation counts more than these. The op_work claims (paper/op_work_claims.h) and the scaling test
+// (tests/paper/op_work_scaling_test.cpp) check measured maxima against them.
 //
 // The invariants the derivations use (tc_softbody.h, incidence_list.h, cut_adjacency.h):
 //  (B) Balanced cut: cut nodes whose blocks share an edge are at most one level apart, so a side of a block has at
@@ -31,9 +31,9 @@
 //
 // The relocation counts are the swap-with-last's: which node or link is last in Bullet's arrays is a draw unrelated
 // to the operation's block, so they are kept apart from the block-local counts (nodes, links, tree records, DBVT
-// leaves), whose maxima and interior means then depend on the block's neighbourhood alone (harness/op_work_claims.h).
+// leaves), whose maxima and interior means then depend on the block's neighbourhood alone (paper/op_work_claims.h).
 //
-// Measured maxima (paper and ci suites, and tests/harness/op_work_scaling_test.cpp on 33^2 .. 1025^2) reach the bound
+// Measured maxima (paper and ci suites, and tests/paper/op_work_scaling_test.cpp on 33^2 .. 1025^2) reach the bound
 // for every count of end-refine, for nodes and DBVT leaves of every operation, coarse's links and end-coarse's
 // relocated nodes; the rest stay below it: refine links 32 of 36 and tree records 90 of 114, coarse tree records 82
 // of 84, end-coarse links 32 of 36, tree records 58 of 66 and relocated links 64 of 68 (those bounds sum worst cases

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "../harness/result_documents.h"
+#include "../gate/result_documents.h"
 
 namespace tcsb {
 namespace {

@@ -1,6 +1,6 @@
 // Paper tables and fits on hand-built results: Table 2 means and ratios, diverged cases left out, the paired
 // same-run ratio, Table 1 shares and percentiles, and linear fits with a known slope.
-#include "harness/paper_tables.h"
+#include "paper/paper_tables.h"
 
 #include <gtest/gtest.h>
 

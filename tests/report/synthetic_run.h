@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "harness/case_plan.h"
-#include "harness/run_result.h"
+#include "suite/case_plan.h"
+#include "run/run_result.h"
 
 namespace tcsb::testing {
 

@@ -1,0 +1,71 @@
+#include "case/case_body.h"
+
+#include <cmath>
+
+#include "softbody/bullet_setup.h"
+#include "softbody/plain_softbody.h"
+
+namespace tcsb {
+
+namespace {
+
+/// Stock Bullet: the plain baseline or CreatePatch.
+class StockBody final : public CaseBody {
+ public:
+  explicit StockBody(std::unique_ptr<btSoftBody> body) : body_(std::move(body)) {}
+  void step(btScalar dt) override { step_soft_body(*body_, dt); }
+  const btSoftBody& bullet() const override { return *body_; }
+
+ private:
+  std::unique_ptr<btSoftBody> body_;
+};
+
+/// TC-SB with its controller (none at NoCompression: the body then never changes its cut).
+class TreeCutBody final : public CaseBody {
+ public:
+  TreeCutBody(std::unique_ptr<TcSoftBody> body, std::unique_ptr<Controller> controller)
+      : body_(std::move(body)), controller_(std::move(controller)) {}
+  void step(btScalar dt) override {
+    body_->advance_blends();
+    if (controller_) controller_->before_step(*body_);
+    body_->simulate_step(dt);
+    if (controller_) controller_->after_step(*body_);
+  }
+  const btSoftBody& bullet() const override { return *body_; }
+  int interpolations() const override { return body_->interpolations(); }
+  FeedbackCost feedback_cost() const override { return controller_ ? controller_->last_cost() : FeedbackCost{}; }
+  TcSoftBody* tc() override { return body_.get(); }
+
+ private:
+  std::unique_ptr<TcSoftBody> body_;
+  std::unique_ptr<Controller> controller_;
+};
+
+}  // namespace
+
+int node_budget(const Net& net, double compression) {
+  return static_cast<int>(std::lround(compression * static_cast<double>(net.node_count())));
+}
+
+int target_node_count(const Net& net, const CaseKey& key) {
+  if (key.method != Method::kTcsb || !key.compression) return 0;
+  return node_budget(net, *key.compression);
+}
+
+std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key, SoftBodyWorld& world,
+                                         std::shared_ptr<const Net> net, std::uint64_t seed) {
+  switch (key.method) {
+    case Method::kPlain: return std::make_unique<StockBody>(make_plain_softbody(world, *net, suite.solver));
+    case Method::kBulletPatch: return std::make_unique<StockBody>(make_bullet_patch(world, *net, suite.solver));
+    case Method::kTcsb: {
+      const int target = target_node_count(*net, key);
+      auto body = std::make_unique<TcSoftBody>(world, net, suite.solver, suite.tcsb);
+      std::unique_ptr<Controller> controller;
+      if (target < static_cast<int>(net->node_count())) controller = make_controller(suite.feedback, target, seed);
+      return std::make_unique<TreeCutBody>(std::move(body), std::move(controller));
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace tcsb

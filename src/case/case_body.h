@@ -1,0 +1,46 @@
+// CaseBody: the thing a case steps — one of the methods, behind one small interface, so the runner's timing loop
+// is the same code for every method.
+#pragma once
+
+#include <BulletSoftBody/btSoftBody.h>
+
+#include <memory>
+#include <optional>
+
+#include "feedback/controller.h"
+#include "suite/case_plan.h"
+#include "suite/suite.h"
+#include "net/net.h"
+#include "softbody/soft_body_world.h"
+#include "softbody/tc_softbody.h"
+
+namespace tcsb {
+
+/// A body being simulated for a case, with whatever drives it.
+class CaseBody {
+ public:
+  virtual ~CaseBody() = default;
+  /// One whole step as timed: for TC-SB the blends, the feedback stage and its operations, then Bullet.
+  virtual void step(btScalar dt) = 0;
+  /// The Bullet body (for N, L, divergence checks and the state hash).
+  virtual const btSoftBody& bullet() const = 0;
+  /// Operations blending now (the paper's I); 0 for stock bodies.
+  virtual int interpolations() const { return 0; }
+  /// Feedback cost of the last step (zero for stock bodies).
+  virtual FeedbackCost feedback_cost() const { return {}; }
+  /// The TC-SB body, if this is one.
+  virtual TcSoftBody* tc() { return nullptr; }
+};
+
+/// A node budget: the compression target times the net's node count, rounded. Timed cases and fidelity subjects
+/// alike.
+int node_budget(const Net& net, double compression);
+
+/// Node budget of a TC-SB case (node_budget), 0 for other methods.
+int target_node_count(const Net& net, const CaseKey& key);
+
+/// Builds the body for a case. `seed` drives any random choices (same seed, same run).
+std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key, SoftBodyWorld& world,
+                                         std::shared_ptr<const Net> net, std::uint64_t seed);
+
+}  // namespace tcsb

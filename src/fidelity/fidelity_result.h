@@ -1,0 +1,59 @@
+// FidelityResult: what the fidelity pass measured — per net and subject, error against the full-resolution
+// reference summarised over the measured steps, energy drift, popping, and the subject's own step time beside the
+// reference's, both timed in the same pass.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "suite/fidelity_plan.h"
+
+namespace tcsb {
+
+/// A per-step metric summarised over the measured steps.
+struct MetricSummary {
+  std::size_t count = 0;  ///< steps summarised (0: never measured; the numbers are then meaningless)
+  double mean = 0;
+  double p95 = 0;
+  double max = 0;
+};
+
+/// One subject on one net.
+struct FidelityCase {
+  std::size_t net = 0;  ///< index into Suite::nets
+  std::string net_name;
+  FidelitySubjectSpec subject;
+  int target_nodes = 0;              ///< the node budget (compression x grid nodes)
+  double mean_nodes = 0;             ///< simulated (Bullet) nodes, mean over measured steps
+  std::string grid;                  ///< the coarse grid ("44x44") for uniform_grid and switch_body; else empty
+  std::string status = "ok";         ///< "ok" or "diverged" (the subject's or the reference's; then no metrics)
+  std::optional<int> diverged_step;  ///< step (counting warm-up) at which it diverged
+  std::string diverged_reason;
+  // Metrics, each per step in percent: of the net's extent (Net::extent()) for distances, of the reference's
+  // initial energy (M g h, y from 0) for the drift. Summarised over the measured steps, popping over all steps.
+  MetricSummary rms_pct;              ///< RMS distance of the reconstructed grid nodes from the reference's
+  MetricSummary max_pct;              ///< largest distance of any grid node
+  MetricSummary weighted_rms_pct;     ///< RMS weighted by the reference's saliency at that step
+  MetricSummary popping_pct;          ///< largest jump of any reconstructed node across a step boundary's operations
+                                      ///< (0 where none happened); over every step, warm-up included
+  MetricSummary energy_drift_pct;     ///< 100 |E - E_ref| / |E_ref(0)| (energy_drift_pct())
+  double step_ms = 0;                 ///< mean wall time of the subject's own steps (blends, feedback, operations,
+                                      ///< switch, Bullet) over the measured steps, run on its own
+  double reference_step_ms = 0;       ///< mean wall time of the reference's steps in the same pass (recording run)
+  std::optional<double> switch_ms;    ///< switch_body: building the coarse body, moving the state, freeing the fine
+  std::optional<int> switch_step;     ///< switch_body: the step at whose boundary it switched
+  std::optional<int> converged_step;  ///< TC-SB under a budget: the step at whose boundary it first fitted it
+  std::string final_state_hash;       ///< state_hash of the subject's body at the end (TC-SB: equals the timed
+                                      ///< case's hash at the same target: the pass measured the timed trajectory)
+};
+
+/// The whole fidelity pass of a run.
+struct FidelityResult {
+  double rms_threshold_pct = 1.0;   ///< the suite's threshold for the maximal compression
+  std::vector<FidelityCase> cases;  ///< per net (suite order), subjects in fidelity_plan() order
+  double wall_s = 0;                ///< wall time of the pass (included in the run's wall_s)
+};
+
+}  // namespace tcsb

@@ -1,0 +1,286 @@
+#include "fidelity/fidelity_runner.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "analysis/fidelity_metrics.h"
+#include "analysis/statistics.h"
+#include "feedback/cut_snapshot.h"
+#include "feedback/saliency.h"
+#include "suite/case_plan.h"
+#include "fidelity/fidelity_subject.h"
+#include "fidelity/reconstruction.h"
+#include "case/state_hash.h"
+#include "case/step_clock.h"
+#include "softbody/bullet_setup.h"
+#include "softbody/divergence.h"
+#include "softbody/plain_softbody.h"
+
+namespace tcsb {
+
+namespace {
+
+MetricSummary summarize_metric(const std::vector<double>& values) {
+  const Summary s = summarize(values);
+  return {s.count, s.mean, s.p95, s.max};
+}
+
+/// Bodies are stepped in blocks of this many steps, round-robin: the reference's block first (recorded), then each
+/// subject's same block. Long enough that a body's first, cache-cold step after the others ran is 1 step in 20;
+/// short enough that machine drift over a pass (other processes, frequency) hits every body alike — the time ratios
+/// are interleaved, like the repetitions of the timed cases.
+constexpr int kBlockSteps = 20;
+
+/// The reference's trajectory over one block of steps. Positions are Bullet's floats, kept as floats.
+struct ReferenceBlock {
+  int first_step = 0;  // step of frame 0
+  std::size_t nodes = 0;
+  std::vector<std::array<float, 3>> positions;  // frame f: [f * nodes, (f + 1) * nodes)
+  std::vector<float> saliency;                  // same layout
+  std::vector<double> energy;                   // per frame
+
+  void frame(int step, std::vector<Eigen::Vector3d>& x) const {
+    const std::size_t f = static_cast<std::size_t>(step - first_step);
+    x.resize(nodes);
+    for (std::size_t i = 0; i < nodes; ++i) {
+      const std::array<float, 3>& p = positions[f * nodes + i];
+      x[i] = Eigen::Vector3d(p[0], p[1], p[2]);
+    }
+  }
+  std::span<const float> weights(int step) const {
+    return {saliency.data() + static_cast<std::size_t>(step - first_step) * nodes, nodes};
+  }
+};
+
+/// The reference: the plain body at full resolution, its timed steps and its recorded frames.
+class Reference {
+ public:
+  Reference(const Suite& suite, const std::shared_ptr<const Net>& net)
+      : suite_(suite), net_(net), world_(suite.world), body_(make_plain_softbody(world_, *net, suite.solver)),
+        finest_(*net) {
+    copy_positions(*body_, x_);
+    copy_velocities(*body_, v_);
+    initial_energy = mechanical_energy(net->masses(), x_, v_, suite.world.gravity);
+    block.nodes = net->node_count();
+  }
+
+  /// Steps [first, last) and records the measured ones; false once diverged.
+  bool run_block(int first, int last) {
+    const int warmup = suite_.warmup_steps;
+    const std::size_t frames = static_cast<std::size_t>(last - first), n = block.nodes;
+    block.first_step = first;
+    block.positions.resize(frames * n);
+    block.saliency.resize(frames * n);
+    block.energy.assign(frames, 0.0);
+    for (int s = first; s < last; ++s) {
+      const StepClock::time_point t0 = StepClock::now();
+      step_soft_body(*body_, static_cast<btScalar>(suite_.world.dt));
+      const StepClock::time_point t1 = StepClock::now();
+      // Every step, fully: this loop copies every node after each step anyway, so the check adds no new cache
+      // traffic to the steps it times, and the pass reports the first diverged step.
+      if (auto diverged = divergence_now(*body_, net_->extent())) {
+        diverged_step = s;
+        diverged_reason = "the reference diverged: " + *diverged;
+        return false;
+      }
+      if (s < warmup) continue;
+      step_ms.push_back(ms_between(t0, t1));
+      const std::size_t f = static_cast<std::size_t>(s - first);
+      copy_positions(*body_, x_);
+      copy_velocities(*body_, v_);
+      for (std::size_t i = 0; i < n; ++i)  // back to float: exact, Bullet's positions are floats
+        block.positions[f * n + i] = {static_cast<float>(x_[i].x()), static_cast<float>(x_[i].y()),
+                                      static_cast<float>(x_[i].z())};
+      block.energy[f] = mechanical_energy(net_->masses(), x_, v_, suite_.world.gravity);
+      take_snapshot(*body_, finest_.view(), suite_.feedback.illumination, s, snapshot_);
+      const std::vector<float> saliency = compute_saliency(snapshot_, suite_.feedback);
+      std::copy(saliency.begin(), saliency.end(), block.saliency.begin() + static_cast<std::ptrdiff_t>(f * n));
+    }
+    return true;
+  }
+
+  ReferenceBlock block;
+  double initial_energy = 0;  // at rest, before the first step: the drift's denominator
+  std::vector<double> step_ms;
+  std::optional<int> diverged_step;
+  std::string diverged_reason;
+
+ private:
+  const Suite& suite_;
+  std::shared_ptr<const Net> net_;
+  SoftBodyWorld world_;
+  std::unique_ptr<btSoftBody> body_;
+  FinestCut finest_;
+  CutSnapshot snapshot_;
+  std::vector<Eigen::Vector3d> x_, v_;
+};
+
+/// One subject on one net: its body and the per-step series of its metrics.
+class Track {
+ public:
+  /// `pace`: for switch_body, the TC-SB subject at the same target (its track must run each block first).
+  Track(const Suite& suite, std::size_t net_index, const std::shared_ptr<const Net>& net,
+        const FidelitySubjectSpec& spec, const FidelitySubject* pace)
+      : suite_(suite), net_(net), world_(suite.world) {
+    result.net = net_index;
+    result.net_name = net->spec().name;
+    result.subject = spec;
+    result.target_nodes = subject_budget(*net, spec);
+    // Without a pace (not in fidelity_plan()'s subjects) the switch happens at the first measured boundary.
+    body_ = make_fidelity_subject(suite, spec, world_, net, fidelity_seed(suite, net_index, spec), pace,
+                                  suite.warmup_steps);
+    result.grid = body_->grid();
+    body_->reconstruct(surface_);
+  }
+
+  bool alive() const { return result.status == "ok"; }
+  const FidelitySubject& subject() const { return *body_; }
+
+  /// Steps [first, last), comparing every measured step with the reference's frame.
+  void run_block(int first, int last, const ReferenceBlock& reference, double reference_energy0) {
+    const int warmup = suite_.warmup_steps;
+    const double to_pct = 100.0 / net_->extent();
+    body_->resume();  // its feedback worker spins again before the first timed step, not woken late inside it
+    for (int s = first; s < last && alive(); ++s) {
+      const bool measured = s >= warmup;
+      const StepClock::time_point t0 = StepClock::now();
+      body_->boundary(s);
+      const StepClock::time_point t1 = StepClock::now();
+      // No simulated time passes between the previous step's end and this point, so the reference does not move:
+      // any jump of the surface is pure popping. Measured at every boundary, warm-up included: "every operation"
+      // includes TC-SB's first coarsening and a switch made before the measured steps.
+      double pop = 0;
+      if (body_->surface_changed()) {
+        body_->reconstruct(after_);
+        pop = max_displacement(surface_, after_);
+      }
+      const StepClock::time_point t2 = StepClock::now();
+      body_->simulate(static_cast<btScalar>(suite_.world.dt));
+      const StepClock::time_point t3 = StepClock::now();
+      if (auto diverged = divergence_now(body_->bullet(), net_->extent())) {  // every step: see run_block
+        stop(s, *diverged);
+        break;
+      }
+      popping_.push_back(to_pct * pop);
+      if (!std::isfinite(pop)) {  // a NaN Bullet's bounds missed
+        stop(s, "non-finite reconstructed surface");
+        break;
+      }
+      body_->reconstruct(surface_);  // the next boundary's "before"
+      if (!measured) continue;
+      reference.frame(s, reference_x_);
+      const SurfaceError e = surface_error(surface_, reference_x_, reference.weights(s));
+      if (!std::isfinite(e.rms) || !std::isfinite(e.max)) {
+        stop(s, "non-finite reconstructed surface");
+        break;
+      }
+      step_ms_.push_back(ms_between(t0, t1) + ms_between(t2, t3));
+      nodes_.push_back(body_->bullet().m_nodes.size());
+      rms_.push_back(to_pct * e.rms);
+      max_.push_back(to_pct * e.max);
+      weighted_.push_back(to_pct * e.weighted_rms);
+      const double drift = energy_drift_pct(body_->energy(suite_.world.gravity),
+                                            reference.energy[static_cast<std::size_t>(s - first)], reference_energy0);
+      if (std::isfinite(drift)) drift_.push_back(drift);  // undefined only for an initial energy of 0 (net at y = 0)
+    }
+    body_->pause();  // the other subjects run their blocks now: no feedback worker should spin meanwhile
+  }
+
+  void stop(int step, std::string reason) {
+    result.status = "diverged";
+    result.diverged_step = step;
+    result.diverged_reason = std::move(reason);
+  }
+
+  /// Summaries of the series; `reference_ms` is the reference's mean step.
+  FidelityCase finish(double reference_ms) {
+    result.rms_pct = summarize_metric(rms_);
+    result.max_pct = summarize_metric(max_);
+    result.weighted_rms_pct = summarize_metric(weighted_);
+    result.popping_pct = summarize_metric(popping_);
+    result.energy_drift_pct = summarize_metric(drift_);
+    result.step_ms = mean(step_ms_);
+    result.reference_step_ms = reference_ms;
+    result.mean_nodes = mean(nodes_);
+    result.switch_ms = body_->switch_ms();
+    result.switch_step = body_->switch_step();
+    result.converged_step = body_->converged_step();
+    result.final_state_hash = state_hash(body_->bullet());
+    return result;
+  }
+
+  FidelityCase result;
+
+ private:
+  const Suite& suite_;
+  std::shared_ptr<const Net> net_;
+  SoftBodyWorld world_;  // one per subject: a body keeps its world's address
+  std::unique_ptr<FidelitySubject> body_;
+  std::vector<Eigen::Vector3d> surface_, after_, reference_x_;  // surface_: after the last step ("before" a boundary)
+  std::vector<double> rms_, max_, weighted_, popping_, drift_, step_ms_, nodes_;
+};
+
+/// The pass on one net: the reference and every subject, interleaved in blocks.
+void run_net(const Suite& suite, std::size_t net_index, const std::shared_ptr<const Net>& net,
+             const std::vector<FidelitySubjectSpec>& plan, std::vector<FidelityCase>& out) {
+  Reference reference(suite, net);
+  std::vector<std::unique_ptr<Track>> tracks;
+  for (const FidelitySubjectSpec& spec : plan) {
+    // fidelity_plan() lists TC-SB at every suite target before the ablations, so a switch finds its pace here and
+    // the pace's track steps each block before it.
+    const FidelitySubject* pace = nullptr;
+    for (const auto& t : tracks)
+      if (spec.method == FidelityMethod::kSwitch && t->result.subject.method == FidelityMethod::kTcsb &&
+          t->result.subject.compression == spec.compression)
+        pace = &t->subject();
+    tracks.push_back(std::make_unique<Track>(suite, net_index, net, spec, pace));
+  }
+  const int total = suite.warmup_steps + suite.steps;
+  for (int first = 0; first < total; first += kBlockSteps) {
+    const int last = std::min(total, first + kBlockSteps);
+    if (!reference.run_block(first, last)) {
+      for (auto& t : tracks)
+        if (t->alive()) t->stop(*reference.diverged_step, reference.diverged_reason);
+      break;
+    }
+    for (auto& t : tracks)
+      if (t->alive()) t->run_block(first, last, reference.block, reference.initial_energy);
+  }
+  const double reference_ms = mean(reference.step_ms);
+  for (auto& t : tracks) out.push_back(t->finish(reference_ms));
+}
+
+}  // namespace
+
+std::uint64_t fidelity_seed(const Suite& suite, std::size_t net, const FidelitySubjectSpec& spec) {
+  const std::vector<CaseKey> keys = expand_cases(suite);
+  if (spec.method == FidelityMethod::kTcsb) {
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i].net == net && keys[i].method == Method::kTcsb && keys[i].compression == spec.compression)
+        return case_seed(suite, i);
+  }
+  // Past every case index; distinct per net, method and target.
+  const auto target = static_cast<std::uint64_t>(std::llround(spec.compression * 1000.0));
+  return case_seed(suite, 100000) + net * 10000ULL + static_cast<std::uint64_t>(spec.method) * 1001ULL + target;
+}
+
+FidelityResult run_fidelity(const Suite& suite, const std::vector<std::shared_ptr<const Net>>& nets,
+                            const FidelityProgress& progress) {
+  const StepClock::time_point start = StepClock::now();
+  FidelityResult result;
+  result.rms_threshold_pct = suite.fidelity.rms_threshold_pct;
+  const std::vector<FidelitySubjectSpec> plan = fidelity_plan(suite);
+  if (!plan.empty()) {
+    for (std::size_t n = 0; n < nets.size(); ++n) {
+      run_net(suite, n, nets[n], plan, result.cases);
+      if (progress) progress(nets[n]->spec().name);
+    }
+  }
+  result.wall_s = std::chrono::duration<double>(StepClock::now() - start).count();
+  return result;
+}
+
+}  // namespace tcsb

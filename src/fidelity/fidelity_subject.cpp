@@ -1,0 +1,241 @@
+#include "fidelity/fidelity_subject.h"
+
+#include <cmath>
+
+#include "analysis/fidelity_metrics.h"
+#include "feedback/controller.h"
+#include "case/case_body.h"
+#include "fidelity/reconstruction.h"
+#include "case/step_clock.h"
+#include "fidelity/surface_morph.h"
+#include "net/grid_resample.h"
+#include "softbody/bullet_setup.h"
+#include "softbody/plain_softbody.h"
+#include "softbody/tc_softbody.h"
+#include "softbody/vector_conversion.h"
+
+namespace tcsb {
+
+namespace {
+
+GridSize grid_of(const Net& net) { return {net.width(), net.height()}; }
+
+std::string grid_label(const Net& net) { return std::to_string(net.width()) + "x" + std::to_string(net.height()); }
+
+/// Energy of a stock body built from `net` (node i = grid node i; pinned nodes carry the net's mass, which Bullet
+/// does not keep for them).
+double stock_energy(const btSoftBody& body, const Net& net, double gravity, std::vector<Eigen::Vector3d>& x,
+                    std::vector<Eigen::Vector3d>& v) {
+  copy_positions(body, x);
+  copy_velocities(body, v);
+  return mechanical_energy(net.masses(), x, v, gravity);
+}
+
+/// Counts operations begun or ended, so the pass knows when the surface may have jumped.
+class OpCounter final : public OpSink {
+ public:
+  void record(const OpSample&) override { ++count; }
+  std::int64_t count = 0;
+};
+
+/// TC-SB with its controller (none at compression 1: the body then never changes its cut).
+class TreeCutSubject final : public FidelitySubject {
+ public:
+  /// `morph`: show the geomorphed surface (SurfaceMorph); otherwise the committed cut's, which jumps.
+  TreeCutSubject(std::unique_ptr<TcSoftBody> body, std::unique_ptr<Controller> controller, int budget, bool morph)
+      : body_(std::move(body)), controller_(std::move(controller)), budget_(budget) {
+    if (morph) morph_.emplace();
+    body_->set_op_sink(&ops_);
+  }
+  ~TreeCutSubject() override { body_->set_op_sink(nullptr); }
+  void boundary(int step) override {
+    const std::int64_t before = ops_.count;
+    // A geomorphed surface also moves at a boundary where blends only advance: each is a step of its morph.
+    const bool morphing = morph_ && body_->interpolations() > 0;
+    body_->advance_blends();
+    if (controller_) controller_->before_step(*body_);
+    changed_ = morphing || ops_.count != before;
+    if (controller_ && !converged_ && body_->node_count() <= budget_) converged_ = step;
+  }
+  std::optional<int> converged_step() const override { return converged_; }
+  bool surface_changed() const override { return changed_; }
+  void pause() override {
+    if (controller_) controller_->pause();
+  }
+  void resume() override {
+    if (controller_) controller_->resume();
+  }
+  void simulate(btScalar dt) override {
+    body_->simulate_step(dt);
+    if (controller_) controller_->after_step(*body_);
+  }
+  void reconstruct(std::vector<Eigen::Vector3d>& leaves) override {
+    if (morph_)
+      morph_->reconstruct(*body_, leaves);
+    else
+      reconstruct_leaves(*body_, leaves);
+  }
+  double energy(double gravity) override {
+    copy_positions(*body_, x_);
+    copy_velocities(*body_, v_);
+    mass_.resize(x_.size());
+    for (std::size_t i = 0; i < mass_.size(); ++i)
+      mass_[i] = body_->simulated_mass(body_->tree_id(static_cast<int>(i)));
+    return mechanical_energy(mass_, x_, v_, gravity);
+  }
+  const btSoftBody& bullet() const override { return *body_; }
+
+ private:
+  std::unique_ptr<TcSoftBody> body_;
+  std::unique_ptr<Controller> controller_;
+  int budget_;
+  std::optional<SurfaceMorph> morph_;
+  std::optional<int> converged_;
+  OpCounter ops_;
+  bool changed_ = false;
+  std::vector<Eigen::Vector3d> x_, v_;
+  std::vector<double> mass_;
+};
+
+/// A static coarse grid of the same cloth, compared through bilinear interpolation of its nodes.
+class UniformSubject final : public FidelitySubject {
+ public:
+  UniformSubject(SoftBodyWorld& world, const Suite& suite, std::shared_ptr<const Net> fine, int budget)
+      : fine_(std::move(fine)), coarse_(coarse_net_spec(fine_->spec(), budget)),
+        body_(make_plain_softbody(world, coarse_, suite.solver)) {}
+  void boundary(int) override {}
+  void simulate(btScalar dt) override { step_soft_body(*body_, dt); }
+  void reconstruct(std::vector<Eigen::Vector3d>& leaves) override {
+    copy_positions(*body_, x_);
+    leaves.resize(fine_->node_count());
+    resample_bilinear(grid_of(coarse_), x_, grid_of(*fine_), leaves);
+  }
+  double energy(double gravity) override { return stock_energy(*body_, coarse_, gravity, x_, v_); }
+  const btSoftBody& bullet() const override { return *body_; }
+  std::string grid() const override { return grid_label(coarse_); }
+
+ private:
+  std::shared_ptr<const Net> fine_;
+  Net coarse_;
+  std::unique_ptr<btSoftBody> body_;
+  std::vector<Eigen::Vector3d> x_, v_;
+};
+
+/// The paper's alternative to a TreeCut: simulate at full resolution, and when the budget applies build a new,
+/// coarser btSoftBody from the running one's state. The coarse net (the precomputed level) exists from the start;
+/// the switch builds the Bullet body, samples positions and velocities bilinearly at its nodes and frees the fine
+/// body, and that is what switch_ms times.
+class SwitchSubject final : public FidelitySubject {
+ public:
+  SwitchSubject(SoftBodyWorld& world, const Suite& suite, std::shared_ptr<const Net> fine, int budget,
+                const FidelitySubject* pace, int fallback_step)
+      : world_(world), suite_(suite), fine_(std::move(fine)), coarse_(coarse_net_spec(fine_->spec(), budget)),
+        pace_(pace), fallback_step_(fallback_step), body_(make_plain_softbody(world, *fine_, suite.solver)) {}
+  void boundary(int step) override {
+    changed_ = false;
+    if (switched_at_) return;
+    if (pace_) {
+      const std::optional<int> converged = pace_->converged_step();
+      if (!converged || *converged > step) return;
+    } else if (step < fallback_step_) {
+      return;
+    }
+    switched_at_ = step;
+    const StepClock::time_point t0 = StepClock::now();
+    std::unique_ptr<btSoftBody> coarse = make_plain_softbody(world_, coarse_, suite_.solver);
+    copy_positions(*body_, x_);
+    copy_velocities(*body_, v_);
+    cx_.resize(coarse_.node_count());
+    cv_.resize(coarse_.node_count());
+    resample_bilinear(grid_of(*fine_), x_, grid_of(coarse_), cx_);
+    resample_bilinear(grid_of(*fine_), v_, grid_of(coarse_), cv_);
+    for (int i = 0; i < coarse->m_nodes.size(); ++i) {
+      btSoftBody::Node& n = coarse->m_nodes[i];
+      if (coarse_.pinned()[static_cast<std::size_t>(i)]) continue;  // corners stay at rest (the fine ones are too)
+      const Eigen::Vector3d& p = cx_[static_cast<std::size_t>(i)];
+      const Eigen::Vector3d& u = cv_[static_cast<std::size_t>(i)];
+      n.m_x = n.m_q = to_bullet(p);
+      n.m_v = to_bullet(u);
+    }
+    coarse->updateBounds();
+    body_ = std::move(coarse);  // frees the fine body: part of what a switch costs
+    switch_ms_ = ms_between(t0, StepClock::now());
+    changed_ = true;
+  }
+  bool surface_changed() const override { return changed_; }
+  void simulate(btScalar dt) override { step_soft_body(*body_, dt); }
+  void reconstruct(std::vector<Eigen::Vector3d>& leaves) override {
+    copy_positions(*body_, x_);
+    if (!switched_at_) {
+      leaves = x_;
+      return;
+    }
+    leaves.resize(fine_->node_count());
+    resample_bilinear(grid_of(coarse_), x_, grid_of(*fine_), leaves);
+  }
+  double energy(double gravity) override {
+    return stock_energy(*body_, switched_at_ ? coarse_ : *fine_, gravity, x_, v_);
+  }
+  const btSoftBody& bullet() const override { return *body_; }
+  std::string grid() const override { return grid_label(coarse_); }
+  std::optional<double> switch_ms() const override { return switched_at_ ? std::optional(switch_ms_) : std::nullopt; }
+  std::optional<int> switch_step() const override { return switched_at_; }
+
+ private:
+  SoftBodyWorld& world_;
+  const Suite& suite_;
+  std::shared_ptr<const Net> fine_;
+  Net coarse_;
+  const FidelitySubject* pace_;
+  int fallback_step_;
+  std::unique_ptr<btSoftBody> body_;
+  std::optional<int> switched_at_;
+  bool changed_ = false;
+  double switch_ms_ = 0;
+  std::vector<Eigen::Vector3d> x_, v_, cx_, cv_;
+};
+
+}  // namespace
+
+int subject_budget(const Net& net, const FidelitySubjectSpec& spec) { return node_budget(net, spec.compression); }
+
+NetSpec coarse_net_spec(const NetSpec& fine, int budget) {
+  const CoarseGrid g = coarse_grid_for(fine.width, fine.height, budget);
+  NetSpec coarse = fine;
+  coarse.name = fine.name + "/coarse";
+  coarse.width = g.width;
+  coarse.height = g.height;
+  coarse.mass_mode = MassMode::kTotal;  // the same cloth: the total mass is kept, not the mass per node
+  coarse.mass = fine.node_mass() * static_cast<double>(fine.node_count());
+  return coarse;
+}
+
+std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const FidelitySubjectSpec& spec,
+                                                       SoftBodyWorld& world, std::shared_ptr<const Net> net,
+                                                       std::uint64_t seed, const FidelitySubject* pace,
+                                                       int fallback_switch_step) {
+  const int budget = subject_budget(*net, spec);
+  switch (spec.method) {
+    case FidelityMethod::kUniform: return std::make_unique<UniformSubject>(world, suite, std::move(net), budget);
+    case FidelityMethod::kSwitch:
+      return std::make_unique<SwitchSubject>(world, suite, std::move(net), budget, pace, fallback_switch_step);
+    case FidelityMethod::kTcsb:
+    case FidelityMethod::kTcsbRandom:
+    case FidelityMethod::kTcsbRigid:
+    case FidelityMethod::kTcsbNoGeomorph: {
+      TcSettings tc = suite.tcsb;
+      if (spec.method == FidelityMethod::kTcsbRigid) tc.placement = Placement::kRigid;
+      FeedbackSettings feedback = suite.feedback;
+      if (spec.method == FidelityMethod::kTcsbRandom) feedback.policy = PolicyKind::kRandom;
+      const bool compressed = budget < static_cast<int>(net->node_count());
+      auto body = std::make_unique<TcSoftBody>(world, std::move(net), suite.solver, tc);
+      std::unique_ptr<Controller> controller;
+      if (compressed) controller = make_controller(feedback, budget, seed);
+      const bool morph = spec.method != FidelityMethod::kTcsbNoGeomorph;
+      return std::make_unique<TreeCutSubject>(std::move(body), std::move(controller), budget, morph);
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace tcsb

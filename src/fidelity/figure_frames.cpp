@@ -1,0 +1,97 @@
+#include "fidelity/figure_frames.h"
+
+#include <memory>
+#include <stdexcept>
+
+#include "case/case_body.h"
+#include "fidelity/reconstruction.h"
+#include "fidelity/surface_morph.h"
+#include "softbody/divergence.h"
+
+namespace tcsb {
+
+namespace {
+
+FigureFrame capture(int step, const CaseBody& plain, const TcSoftBody& tc,
+                    const std::vector<Eigen::Vector3d>& surface) {
+  FigureFrame f;
+  f.step = step;
+  copy_positions(plain.bullet(), f.plain);
+  f.tcsb_surface = surface;
+  copy_positions(tc, f.tcsb_nodes);
+  const btSoftBody::Node* first = &tc.m_nodes[0];
+  f.tcsb_links.reserve(static_cast<std::size_t>(tc.m_links.size()));
+  for (int i = 0; i < tc.m_links.size(); ++i) {
+    const btSoftBody::Link& l = tc.m_links[i];
+    f.tcsb_links.push_back({static_cast<int>(l.m_n[0] - first), static_cast<int>(l.m_n[1] - first), tc.link_role(i)});
+  }
+  f.interpolations = tc.interpolations();
+  return f;
+}
+
+}  // namespace
+
+FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, double compression,
+                                  const std::vector<int>& steps) {
+  if (net_index >= suite.nets.size()) throw std::invalid_argument("record_figure_frames: no such net");
+  if (!(compression > 0 && compression <= 1)) throw std::invalid_argument("record_figure_frames: compression");
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (steps[i] < 0 || (i > 0 && steps[i] <= steps[i - 1]))
+      throw std::invalid_argument("record_figure_frames: steps must be ascending, distinct and >= 0");
+  }
+  const NetSpec& spec = suite.nets[net_index];
+  const auto net = std::make_shared<const Net>(spec);
+  FigureFrames out;
+  out.net = spec.name;
+  out.width = spec.width;
+  out.height = spec.height;
+  out.compression = compression;
+
+  // Built as the timed cases' bodies are; the saliency controller draws no random numbers (a random policy would
+  // draw from the suite's seed).
+  const CaseKey plain_key{net_index, Method::kPlain, std::nullopt};
+  const CaseKey tc_key{net_index, Method::kTcsb, compression};
+  SoftBodyWorld plain_world(suite.world), tc_world(suite.world);  // one world per body: a body keeps its address
+  const std::uint64_t seed = suite.seed;
+  const std::unique_ptr<CaseBody> plain = make_case_body(suite, plain_key, plain_world, net, seed);
+  const std::unique_ptr<CaseBody> tc = make_case_body(suite, tc_key, tc_world, net, seed);
+
+  if (steps.empty()) return out;
+  const btScalar dt = static_cast<btScalar>(suite.world.dt);
+  // The surface as the fidelity pass shows it, geomorphed. The morph must see every step to see each operation
+  // while it starts; a case body steps boundary and Bullet together, so it sees them one step in (near enough for
+  // a figure: the pass itself looks between the two).
+  SurfaceMorph morph;
+  std::vector<Eigen::Vector3d> surface;
+  std::size_t next = 0;
+  for (int s = 0;; ++s) {
+    morph.reconstruct(*tc->tc(), surface);
+    if (steps[next] == s) {
+      out.frames.push_back(capture(s, *plain, *tc->tc(), surface));
+      if (++next == steps.size()) break;
+    }
+    plain->step(dt);
+    tc->step(dt);
+    for (const CaseBody* body : {plain.get(), tc.get()}) {
+      if (auto diverged = divergence_now(body->bullet(), net->extent())) {  // untimed: check fully every step
+        out.diverged_step = s;
+        out.diverged_reason = std::string(body == plain.get() ? "plain: " : "tcsb: ") + *diverged;
+        return out;
+      }
+    }
+  }
+  return out;
+}
+
+const char* link_role_name(LinkRole role) {
+  switch (role) {
+    case LinkRole::kSteady: return "steady";
+    case LinkRole::kFadeIn: return "fade_in";
+    case LinkRole::kFadeOut: return "fade_out";
+    case LinkRole::kDoomed: return "doomed";
+    case LinkRole::kTether: return "tether";
+  }
+  return "unknown";
+}
+
+}  // namespace tcsb

@@ -1,0 +1,57 @@
+#include "gate/gate_outcome.h"
+
+namespace tcsb {
+namespace {
+
+std::vector<TimingSamples> samples_of(const std::vector<TimingSeries>& series) {
+  std::vector<TimingSamples> out;
+  out.reserve(series.size());
+  for (const TimingSeries& s : series) out.push_back(s.samples);
+  return out;
+}
+
+std::size_t count(const std::vector<TimingDecision>& decisions, TimingVerdict verdict) {
+  std::size_t n = 0;
+  for (const TimingDecision& d : decisions) n += d.verdict == verdict;
+  return n;
+}
+
+std::size_t reliable(const std::vector<TimingDecision>& decisions) {
+  return decisions.size() - count(decisions, TimingVerdict::kUnreliable);
+}
+
+}  // namespace
+
+std::size_t GateOutcome::unreliable_metrics() const {
+  std::size_t n = count(ratio_decisions, TimingVerdict::kUnreliable);
+  if (absolute_gated) n += count(step_decisions, TimingVerdict::kUnreliable);
+  return n;
+}
+
+GateOutcome decide_gate(ResultComparison comparison, const GateSettings& settings, bool absolute_gated) {
+  GateOutcome out;
+  out.settings = settings;
+  out.absolute_gated = absolute_gated;
+  const std::vector<TimingSamples> ratios = samples_of(comparison.ratios);
+  const std::vector<TimingSamples> steps = samples_of(comparison.step_ms);
+  if (absolute_gated) {
+    // One family: Holm must see every metric that can fail the gate, or the false-alarm rate exceeds alpha.
+    std::vector<TimingSamples> family = ratios;
+    family.insert(family.end(), steps.begin(), steps.end());
+    std::vector<TimingDecision> all = decide_timings(family, settings);
+    out.ratio_decisions.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(ratios.size()));
+    out.step_decisions.assign(all.begin() + static_cast<std::ptrdiff_t>(ratios.size()), all.end());
+    out.gated_metrics = reliable(all);
+    out.regressions = count(all, TimingVerdict::kRegressed);
+  } else {
+    out.ratio_decisions = decide_timings(ratios, settings);
+    out.step_decisions = decide_timings(steps, settings);
+    out.gated_metrics = reliable(out.ratio_decisions);
+    out.regressions = count(out.ratio_decisions, TimingVerdict::kRegressed);
+    out.warnings = count(out.step_decisions, TimingVerdict::kRegressed);
+  }
+  out.comparison = std::move(comparison);
+  return out;
+}
+
+}  // namespace tcsb

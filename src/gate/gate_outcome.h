@@ -1,0 +1,40 @@
+// The CI gate's verdict on two runs: the deterministic differences of a ResultComparison plus the timing decisions
+// (analysis/regression_gate.h) over the metrics that gate — the same-run ratios always, absolute step times only
+// when asked (they measure the machine as much as the code). Pure.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "analysis/regression_gate.h"
+#include "gate/result_comparison.h"
+
+namespace tcsb {
+
+/// Everything `tcsb compare` reports and exits on.
+struct GateOutcome {
+  ResultComparison comparison;
+  GateSettings settings;
+  bool absolute_gated = false;                  ///< --absolute: step times gate too (one Holm family with the ratios)
+  std::vector<TimingDecision> ratio_decisions;  ///< parallel to comparison.ratios
+  std::vector<TimingDecision> step_decisions;   ///< parallel to comparison.step_ms
+  std::size_t gated_metrics = 0;                ///< reliable metrics in the gated family (the Holm family size)
+  std::size_t regressions = 0;                  ///< gated metrics that regressed
+  std::size_t warnings = 0;                     ///< step times that would have regressed had they been gated
+
+  /// Behaviour changed: a deterministic quantity differs, or a case or repetition is not matched one to one.
+  bool behaviour_changed() const { return !comparison.changes.empty(); }
+  /// The timings were decided: at least one gated metric is reliable. With none (too few repetitions, no TC-SB
+  /// case with a plain case on its net) the gate has not measured anything, and a gate that fails closed cannot
+  /// call that a pass.
+  bool timings_decided() const { return gated_metrics > 0; }
+  /// Gated metrics that are unreliable (too few samples on a side): reported, never decided.
+  std::size_t unreliable_metrics() const;
+  /// The gate passes: the timings were decided, with no regression, and no behaviour changed.
+  bool pass() const { return timings_decided() && regressions == 0 && !behaviour_changed(); }
+};
+
+/// Decides the timings of `comparison`. Throws std::invalid_argument on bad settings (see decide_timings).
+GateOutcome decide_gate(ResultComparison comparison, const GateSettings& settings, bool absolute_gated);
+
+}  // namespace tcsb

@@ -1,0 +1,70 @@
+// Comparing two finished runs for the CI gate: checks that they measured the same suite with the same settings,
+// lists every difference in the deterministic quantities (changed behaviour), and collects the per-repetition
+// timing samples the gate decides on (analysis/regression_gate.h). Pure: two ResultViews in, one struct out.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/regression_gate.h"
+#include "gate/result_view.h"
+
+namespace tcsb {
+
+/// The two runs measured different suites or settings: comparing them would be meaningless. what() is one line
+/// naming the first difference.
+class SuiteMismatch : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The metric of a BehaviourChange for a case (repetition nullopt) or a repetition that is not matched one to one:
+/// absent from a run or present more than once; its values are "absent", "present" or "K entries".
+inline constexpr const char* kPresenceMetric = "presence";
+
+/// One deterministic quantity that differs between the runs.
+struct BehaviourChange {
+  std::string case_label;  ///< the case's label
+  /// "N", "L", "I", "final_state_hash", "operations", "status" or kPresenceMetric
+  std::string metric;
+  std::optional<int> repetition;  ///< the repetition, or nullopt for the case-level value
+  std::string base, next;         ///< the two values as text
+};
+
+/// One timing metric of one case, in both runs.
+struct TimingSeries {
+  std::string case_label;
+  std::string metric;  ///< kRatioMetric or kStepMsMetric
+  TimingSamples samples;
+};
+
+/// The gated-by-default metric: TC-SB step time over plain step time of the same net, per repetition, same run.
+inline constexpr const char* kRatioMetric = "ratio vs plain";
+/// Absolute mean step time per repetition (ms): machine-dependent, gated only on request.
+inline constexpr const char* kStepMsMetric = "step ms";
+
+/// Everything the gate needs to decide, and what it tells the reader.
+struct ResultComparison {
+  std::string suite_name;
+  std::string suite_sha256;
+  std::size_t cases = 0;        ///< cases matched one to one (by label)
+  std::size_t repetitions = 0;  ///< repetitions of those matched one to one (by number)
+  /// False when a per-step time budget (feedback.max_step_ms > 0) lets timing steer the node budget: N, L, I and
+  /// the final state then depend on the machine, so their differences are listed but cannot mean changed code.
+  bool deterministic = true;
+  /// Deterministic differences (changed behaviour), including every case or repetition not matched one to one.
+  std::vector<BehaviourChange> changes;
+  std::vector<TimingSeries> ratios;              ///< one per TC-SB case that has a plain case on its net
+  std::vector<TimingSeries> step_ms;             ///< one per case
+  std::vector<std::string> machine_differences;  ///< context fields that differ, e.g. "cpu_model: \"A\" vs \"B\""
+};
+
+/// Compares `base` with `next`. Cases are matched by label and their repetitions by number, one to one and in any
+/// order (gate/one_to_one_match.h); whatever does not match is a kPresenceMetric change, even when the run is
+/// not deterministic, and only matched cases contribute timings. Throws SuiteMismatch when the suite blocks differ
+/// in anything but their path (the name, the SHA-256 of the file, and every effective setting: steps, repetitions,
+/// solver, feedback, nets, methods, compression — a run may be narrowed from its file) or when the seeds differ.
+ResultComparison compare_results(const ResultView& base, const ResultView& next);
+
+}  // namespace tcsb

@@ -1,0 +1,189 @@
+#include "paper/fidelity_tables.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/statistics.h"
+#include "paper/paper_tables.h"
+
+namespace tcsb {
+
+namespace {
+
+/// The mean of `values`, or nullopt when there are none or any is not finite (then nothing is averaged in).
+std::optional<double> finite_mean(const std::vector<double>& values) {
+  if (values.empty() || count_nonfinite(values) > 0) return std::nullopt;
+  return mean(values);
+}
+
+/// Combines per-net summaries: means of mean and p95, max of max. Count 0 (unmeasured) if any part is not finite.
+MetricSummary combine(const std::vector<const MetricSummary*>& parts) {
+  MetricSummary out;
+  std::vector<double> means, p95s, maxima;
+  for (const MetricSummary* s : parts) {
+    means.push_back(s->mean);
+    p95s.push_back(s->p95);
+    maxima.push_back(s->max);
+  }
+  const std::optional<double> m = finite_mean(means), p = finite_mean(p95s);
+  if (!m || !p || count_nonfinite(maxima) > 0) return out;
+  out.count = parts.size();
+  out.mean = *m;
+  out.p95 = *p;
+  out.max = *std::max_element(maxima.begin(), maxima.end());
+  return out;
+}
+
+const FidelityRow* row_of(const std::vector<FidelityRow>& rows, const char* method, double compression) {
+  for (const FidelityRow& r : rows)
+    if (r.method == method && same_compression(r.compression, compression)) return &r;
+  return nullptr;
+}
+
+/// A row's metric when the row has ok nets.
+std::optional<double> measured(const FidelityRow* row, double MetricSummary::*field,
+                               MetricSummary FidelityRow::*metric) {
+  if (row == nullptr || row->nets == 0) return std::nullopt;
+  return (row->*metric).*field;
+}
+
+}  // namespace
+
+std::vector<FidelityRow> fidelity_rows(const FidelityResult& result) {
+  std::vector<FidelityRow> rows;
+  std::vector<std::vector<const FidelityCase*>> members;
+  for (const FidelityCase& c : result.cases) {
+    const std::string method = fidelity_method_name(c.subject.method);
+    auto it = std::find_if(rows.begin(), rows.end(), [&](const FidelityRow& r) {
+      return r.method == method && same_compression(r.compression, c.subject.compression);
+    });
+    if (it == rows.end()) {
+      rows.push_back({});
+      rows.back().method = method;
+      rows.back().compression = c.subject.compression;
+      members.emplace_back();
+      it = rows.end() - 1;
+    }
+    members[static_cast<std::size_t>(it - rows.begin())].push_back(&c);
+  }
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    FidelityRow& row = rows[k];
+    std::vector<const FidelityCase*> ok;
+    for (const FidelityCase* c : members[k])
+      if (c->status == "ok" && c->rms_pct.count > 0) ok.push_back(c);
+    row.nets = static_cast<int>(ok.size());
+    row.status = ok.size() == members[k].size() ? "ok" : ok.empty() ? "diverged" : "partial";
+    std::vector<const MetricSummary*> rms, max, weighted, popping, drift;
+    std::vector<double> nodes, ms, reference_ms, switch_ms;
+    for (const FidelityCase* c : ok) {
+      rms.push_back(&c->rms_pct);
+      max.push_back(&c->max_pct);
+      weighted.push_back(&c->weighted_rms_pct);
+      popping.push_back(&c->popping_pct);
+      if (c->energy_drift_pct.count > 0) drift.push_back(&c->energy_drift_pct);
+      nodes.push_back(c->mean_nodes);
+      ms.push_back(c->step_ms);
+      reference_ms.push_back(c->reference_step_ms);
+      if (c->switch_ms) switch_ms.push_back(*c->switch_ms);
+      if (!c->grid.empty() && row.grid.find(c->grid) == std::string::npos)
+        row.grid += (row.grid.empty() ? "" : ",") + c->grid;
+    }
+    row.rms_pct = combine(rms);
+    row.max_pct = combine(max);
+    row.weighted_rms_pct = combine(weighted);
+    row.popping_pct = combine(popping);
+    row.energy_drift_pct = combine(drift);
+    if (ok.empty()) continue;
+    row.N = finite_mean(nodes);
+    if (row.rms_pct.count > 0)
+      for (const MetricSummary* r : rms) row.worst_net_rms_pct = std::max(row.worst_net_rms_pct.value_or(0.0), r->mean);
+    const std::optional<double> subject = finite_mean(ms), reference = finite_mean(reference_ms);
+    if (subject && reference && *reference > 0) row.time_ratio_vs_plain = *subject / *reference;
+    row.switch_ms = finite_mean(switch_ms);
+  }
+  return rows;
+}
+
+std::vector<ParetoPoint> pareto_sweep(const std::vector<FidelityRow>& rows) {
+  std::vector<ParetoPoint> sweep;
+  for (const FidelityRow& r : rows) {
+    if (r.method != "tcsb") continue;
+    ParetoPoint p;
+    p.compression = r.compression;
+    if (r.nets > 0) {
+      p.N = r.N;
+      p.time_ratio_vs_plain = r.time_ratio_vs_plain;
+      p.rms_pct = r.rms_pct.mean;
+      p.worst_net_rms_pct = r.worst_net_rms_pct;
+    }
+    sweep.push_back(p);
+  }
+  std::sort(sweep.begin(), sweep.end(),
+            [](const ParetoPoint& a, const ParetoPoint& b) { return a.compression < b.compression; });
+  for (ParetoPoint& p : sweep) {
+    if (!p.time_ratio_vs_plain || !p.rms_pct) continue;
+    p.on_front = std::none_of(sweep.begin(), sweep.end(), [&](const ParetoPoint& q) {
+      if (&q == &p || !q.time_ratio_vs_plain || !q.rms_pct) return false;
+      const bool no_worse = *q.time_ratio_vs_plain <= *p.time_ratio_vs_plain && *q.rms_pct <= *p.rms_pct;
+      const bool better = *q.time_ratio_vs_plain < *p.time_ratio_vs_plain || *q.rms_pct < *p.rms_pct;
+      return no_worse && better;
+    });
+  }
+  return sweep;
+}
+
+MaxCompression max_compression(const std::vector<ParetoPoint>& sweep, double threshold_pct) {
+  MaxCompression m;
+  m.threshold_pct = threshold_pct;
+  // From the largest budget down: the answer is the last target before the first failure (or a missing value).
+  for (auto it = sweep.rbegin(); it != sweep.rend(); ++it) {
+    if (!it->worst_net_rms_pct || *it->worst_net_rms_pct > threshold_pct) break;
+    m.compression = it->compression;
+    m.rms_pct = it->worst_net_rms_pct;
+    m.time_ratio_vs_plain = it->time_ratio_vs_plain;
+  }
+  return m;
+}
+
+std::vector<Claim> fidelity_targets(const std::vector<FidelityRow>& rows) {
+  std::vector<Claim> targets;
+  const auto rms = [&](double c) {
+    return measured(row_of(rows, "tcsb", c), &MetricSummary::mean, &FidelityRow::rms_pct);
+  };
+  targets.push_back(check_claim("fidelity_rms_75",
+                                "TC-SB at 75%: RMS error at most 1% of the net's extent (mean over "
+                                "steps and nets)",
+                                Comparison::kAtMost, 1.0, 0.0, rms(0.75)));
+  targets.push_back(check_claim("fidelity_rms_30",
+                                "TC-SB at 30%: RMS error at most 2% of the net's extent (mean over "
+                                "steps and nets)",
+                                Comparison::kAtMost, 2.0, 0.0, rms(0.3)));
+  for (const FidelityRow& uniform : rows) {
+    if (uniform.method != "uniform_grid") continue;
+    const auto w = [&](const FidelityRow* r) {
+      return measured(r, &MetricSummary::mean, &FidelityRow::weighted_rms_pct);
+    };
+    const std::optional<double> tc = w(row_of(rows, "tcsb", uniform.compression)), grid = w(&uniform);
+    std::optional<double> ratio;
+    if (tc && grid && *grid > 0) ratio = *tc / *grid;
+    const std::string p = compression_percent(uniform.compression);
+    targets.push_back(check_claim("fidelity_weighted_vs_uniform_" + p,
+                                  "TC-SB at " + p +
+                                      "%: saliency-weighted RMS at most half the uniform coarse grid's "
+                                      "with the same node count (ratio)",
+                                  Comparison::kAtMost, 0.5, 0.0, ratio));
+  }
+  for (const FidelityRow& r : rows) {
+    if (r.method != "tcsb" || r.compression >= 1.0) continue;
+    const std::string p = compression_percent(r.compression);
+    targets.push_back(check_claim("fidelity_popping_" + p,
+                                  "TC-SB at " + p +
+                                      "%: no operation moves the reconstructed surface by more than "
+                                      "0.5% of the net's extent (max over steps and nets)",
+                                  Comparison::kAtMost, 0.5, 0.0,
+                                  measured(&r, &MetricSummary::max, &FidelityRow::popping_pct)));
+  }
+  return targets;
+}
+
+}  // namespace tcsb

@@ -1,0 +1,44 @@
+// The paper's claims, checked against a run — each named after the table or figure it checks — and, separately,
+// the stricter targets this project set itself.
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "analysis/claim.h"
+#include "paper/claim_scope.h"
+#include "paper/paper_reference.h"
+#include "paper/paper_tables.h"
+
+namespace tcsb {
+
+/// The R^2 Figure 5's line through every TC-SB case must reach (step_linear_tcsb).
+inline constexpr double kLinearR2 = 0.95;
+/// NoCompression's equivalence band around plain Bullet's cost: TC-SB's ratio within 1 +- 0.03.
+inline constexpr double kNoCompressionBand = 0.03;
+
+/// What the paper claims, as checks on our measurements (a failed one makes `tcsb reproduce` exit 1). All are
+/// measured from repetitions and judged on their intervals:
+///  - Table 2: TC-SB at 30 % and 75 % cost at most the paper's ratio to plain Bullet (4.80/11.09, 8.40/11.09);
+///  - Table 2: TC-SB with nothing to compress costs the same as plain Bullet, ratio within [0.97, 1.03];
+///  - Figure 5: one line through every TC-SB case (all budgets, all nets) fits with R^2 >= kLinearR2
+///    (`tcsb_fit`: step_fit_of_method(result, Method::kTcsb));
+///  - Table 1: each operation costs at most the paper's mean complete time (`table1`: our Table 1).
+/// Figure 4 (operations constant in time) is judged on deterministic work counts, appended by the caller.
+std::vector<Claim> paper_claims(const PaperReference& paper, const std::vector<Table2Row>& table2,
+                                const StepFit& tcsb_fit, const std::vector<Table1Row>& table1);
+
+/// This project's own, stricter speed targets (reported with verdicts, not gating the exit code), measured from
+/// repetitions: at 30 %, <= 0.40 x plain and <= 1.10 x the node ratio (feedback, operations and blending under
+/// 10 %); at 75 %, <= 0.80 x plain.
+std::vector<Claim> project_targets(const std::vector<Table2Row>& table2);
+
+/// This project's target for the reproduction's wall time: within 120 s (one measurement: judged on its value).
+Claim wall_time_target(double wall_s);
+
+/// The cases a claim or target above is measured from, by its id; nullopt for an id that is not one of them (or
+/// not measured from repetitions).
+std::optional<ClaimScope> scope_of(std::string_view claim_id);
+
+}  // namespace tcsb

@@ -1,0 +1,74 @@
+// RunResult: everything one `tcsb run` measured, before any formatting. The runner fills it; the tables, fits and
+// claims are computed from it by pure functions; each report format renders it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/statistics.h"
+#include "suite/case_plan.h"
+#include "run/context.h"
+#include "fidelity/fidelity_result.h"
+#include "suite/suite.h"
+#include "softbody/op_sample.h"
+
+namespace tcsb {
+
+/// Per-step samples of one repetition (timed steps only).
+struct StepSeries {
+  std::vector<double> step_ms;               ///< wall time of the whole step (blends, feedback, operations, Bullet)
+  std::vector<std::int32_t> nodes;           ///< Bullet nodes after the step (N)
+  std::vector<std::int32_t> links;           ///< Bullet links after the step (L)
+  std::vector<std::int32_t> interpolations;  ///< operations blending during the step (I)
+  std::vector<double> feedback_ms;           ///< feedback work on the step's critical path (TC-SB only)
+  std::vector<double> feedback_total_ms;     ///< feedback work including what ran on worker threads (TC-SB only)
+};
+
+/// One repetition of one case: a fresh body, warm-up, then timed steps.
+struct RepetitionResult {
+  int repetition = 0;
+  std::string status = "ok";         ///< "ok" or "diverged"
+  std::optional<int> diverged_step;  ///< first step (counting warm-up) after which the body failed a check
+  std::string diverged_reason;
+  StepSeries series;
+  double mean_step_ms = 0, median_step_ms = 0;
+  double mean_nodes = 0, mean_links = 0, mean_interpolations = 0;
+  double mean_feedback_ms = 0, mean_feedback_total_ms = 0;
+  std::int64_t operations = 0;   ///< operations begun or ended during timed steps
+  std::string final_state_hash;  ///< FNV-1a of node count and final positions: deterministic, gateable
+  double build_ms = 0;           ///< building the body (not part of step times)
+};
+
+/// Operation costs of one case (TC-SB only), from timed steps.
+struct OpRecord {
+  std::vector<OpSample> samples;
+};
+
+/// One case: a net x method x target, all its repetitions, and their summary.
+struct CaseResult {
+  CaseKey key;
+  std::string label;
+  std::string net_name;
+  std::int64_t net_nodes = 0;  ///< grid nodes of the net (the finest level)
+  std::int64_t net_links = 0;
+  int target_nodes = 0;       ///< TC-SB node budget (0 for other methods)
+  std::string status = "ok";  ///< "ok" when every repetition is ok, else "diverged"
+  std::vector<RepetitionResult> repetitions;
+  Summary step_ms;  ///< over the ok repetitions' mean step times
+  double mean_nodes = 0, mean_links = 0, mean_interpolations = 0;
+  double mean_feedback_ms = 0, mean_feedback_total_ms = 0;
+  OpRecord ops;
+};
+
+/// A whole run.
+struct RunResult {
+  Suite suite;
+  Context context;
+  std::vector<CaseResult> cases;
+  std::optional<FidelityResult> fidelity;  ///< the fidelity pass, when the suite enables it and runs TC-SB
+  double wall_s = 0;                       ///< wall time of the run (the fidelity pass included)
+};
+
+}  // namespace tcsb

@@ -1,0 +1,32 @@
+// Runner: executes a suite — every case's repetitions, interleaved — and records what happened.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "run/run_result.h"
+#include "suite/suite.h"
+
+namespace tcsb {
+
+/// How a run reports progress; measurement itself is not configurable here (the suite says everything).
+struct RunOptions {
+  /// Called after each repetition with (done, total, label); used for the progress line on a TTY.
+  std::function<void(int done, int total, const std::string& label)> progress;
+};
+
+/// Runs every case of the suite in interleaved_plan() order (every repetition runs every case once, a net's cases
+/// side by side); each repetition builds a fresh body, steps warm-up steps untimed, then times every step with a
+/// monotonic clock. A repetition that diverges stops at once and is reported with its step, never averaged in.
+RunResult run_suite(const Suite& suite, const Context& context, const RunOptions& options = {});
+
+/// Runs `extra` more repetitions of the cases `case_indices` of a finished run (indices into result.cases), in the
+/// run's own interleaved order restricted to those cases (every extra repetition runs each of them once, a net's
+/// cases side by side), numbered after the case's last repetition, each with the case's own seed — so a repetition
+/// added later does the same work as the first ones. Recomputes the touched cases' summaries and adds the time
+/// taken to result.wall_s. Indices out of range are ignored. The fidelity pass is not repeated.
+void run_more_repetitions(RunResult& result, const std::vector<std::size_t>& case_indices, int extra,
+                          const RunOptions& options = {});
+
+}  // namespace tcsb

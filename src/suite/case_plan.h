@@ -1,0 +1,43 @@
+// Case expansion and run order: a suite becomes cases (net x method x compression target), and the cases become a
+// run order that interleaves methods and nets so ratios and fits are measured under the same machine conditions.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "suite/suite.h"
+
+namespace tcsb {
+
+/// One case: a net, a method, and (TC-SB only) a compression target.
+struct CaseKey {
+  std::size_t net = 0;  ///< index into Suite::nets
+  Method method = Method::kPlain;
+  std::optional<double> compression;  ///< TC-SB node budget as a fraction of the initial count; empty otherwise
+};
+
+/// Per net, in suite order: each method in suite order; tcsb expands to one case per compression target (in suite
+/// order); plain and bullet_patch have no compression.
+std::vector<CaseKey> expand_cases(const Suite& suite);
+
+/// One repetition of one case, in run order.
+struct PlannedRun {
+  std::size_t case_index = 0;  ///< index into the expand_cases() result
+  int repetition = 0;          ///< 0-based
+};
+
+/// Run order, repetition-major: each repetition runs every case once, net by net with a net's cases together in
+/// suite order (plain, TC-SB, ... paired close in time for ratios), and the net that starts a repetition rotates.
+/// Every net is thus measured throughout the run, so cross-net fits see the same machine conditions for all nets.
+std::vector<PlannedRun> interleaved_plan(const Suite& suite, const std::vector<CaseKey>& cases);
+
+/// The seed of a case, the same for each of its repetitions: suite.seed x 1000003 + the case's index.
+std::uint64_t case_seed(const Suite& suite, std::size_t case_index);
+
+/// A case's name in reports, e.g. "n65/plain", "n65/tcsb@0.75", "n65/tcsb@1.0".
+std::string case_label(const Suite& suite, const CaseKey& key);
+
+}  // namespace tcsb

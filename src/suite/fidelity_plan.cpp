@@ -1,0 +1,45 @@
+#include "suite/fidelity_plan.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tcsb {
+
+const char* fidelity_method_name(FidelityMethod method) {
+  switch (method) {
+    case FidelityMethod::kTcsb: return "tcsb";
+    case FidelityMethod::kUniform: return "uniform_grid";
+    case FidelityMethod::kSwitch: return "switch_body";
+    case FidelityMethod::kTcsbRandom: return "tcsb_random";
+    case FidelityMethod::kTcsbRigid: return "tcsb_rigid";
+    case FidelityMethod::kTcsbNoGeomorph: return "tcsb_no_geomorph";
+  }
+  return "unknown";
+}
+
+std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
+  std::vector<FidelitySubjectSpec> plan;
+  const bool has_tcsb = std::find(suite.methods.begin(), suite.methods.end(), Method::kTcsb) != suite.methods.end();
+  if (!suite.fidelity.enabled || !has_tcsb) return plan;
+  std::vector<double> targets = suite.compression;
+  targets.insert(targets.end(), suite.fidelity.pareto_targets.begin(), suite.fidelity.pareto_targets.end());
+  std::sort(targets.begin(), targets.end());
+  targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+  for (const double c : targets) plan.push_back({FidelityMethod::kTcsb, c});
+  if (!suite.fidelity.ablations) return plan;
+  for (const FidelityMethod m : {FidelityMethod::kUniform, FidelityMethod::kSwitch, FidelityMethod::kTcsbRandom,
+                                 FidelityMethod::kTcsbRigid, FidelityMethod::kTcsbNoGeomorph})
+    for (const double c : suite.compression)
+      if (c < 1.0) plan.push_back({m, c});
+  return plan;
+}
+
+CoarseGrid coarse_grid_for(int width, int height, int nodes) {
+  const double n = std::max(4, nodes);
+  CoarseGrid g;
+  g.width = std::clamp(static_cast<int>(std::lround(std::sqrt(n * width / height))), 2, width);
+  g.height = std::clamp(static_cast<int>(std::lround(n / g.width)), 2, height);
+  return g;
+}
+
+}  // namespace tcsb

@@ -1,0 +1,48 @@
+// Fidelity plan: which bodies the fidelity pass runs beside the full-resolution reference, per net. TC-SB at each of
+// the suite's compression targets and Pareto targets, and — when the suite asks for ablations — four other ways to
+// spend the same node budget, and TC-SB with its surface switched instead of geomorphed, each at the budget of the
+// TC-SB case it is compared with.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "suite/suite.h"
+
+namespace tcsb {
+
+/// The ways the fidelity pass can simulate a net at a node budget.
+enum class FidelityMethod {
+  kTcsb,            ///< TC-SB as the suite configures it (the method under test)
+  kUniform,         ///< a static coarse grid of about the budget's node count, same size, mass and pins (ablation)
+  kSwitch,          ///< full resolution, then a new coarse btSoftBody built from its state when the budget applies (the
+                    ///< paper's stated alternative: "a new SoftBody has to be created", §6) (ablation)
+  kTcsbRandom,      ///< TC-SB driven by seeded random operations instead of saliency (ablation)
+  kTcsbRigid,       ///< TC-SB with the paper's rigid-offset child placement instead of the affine fit (ablation)
+  kTcsbNoGeomorph,  ///< TC-SB, the same body, its surface switched at once instead of geomorphed (ablation;
+                    ///< fidelity/surface_morph.h)
+};
+
+/// Name used in reports: "tcsb", "uniform_grid", "switch_body", "tcsb_random", "tcsb_rigid", "tcsb_no_geomorph".
+const char* fidelity_method_name(FidelityMethod method);
+
+/// One body of the fidelity pass on every net.
+struct FidelitySubjectSpec {
+  FidelityMethod method = FidelityMethod::kTcsb;
+  double compression = 1.0;  ///< node budget as a fraction of the net's node count
+};
+
+/// The subjects, in report order: TC-SB at every target of compression and fidelity.pareto_targets (ascending,
+/// each once), then, with fidelity.ablations, the five ablations at every suite compression target below 1 (at 1
+/// they would all be the full-resolution body). Empty unless fidelity.enabled and the suite runs TC-SB.
+std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite);
+
+/// Grid of the uniform coarse net holding about `nodes` nodes with the aspect of a width x height net:
+/// width' = round(sqrt(nodes width / height)), height' = round(nodes / width'), each clamped to [2, the original].
+struct CoarseGrid {
+  int width = 2;   ///< nodes along x
+  int height = 2;  ///< nodes along z
+};
+CoarseGrid coarse_grid_for(int width, int height, int nodes);
+
+}  // namespace tcsb

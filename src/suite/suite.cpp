@@ -1,0 +1,237 @@
+// Suite parsing and validation: every key, type and range is checked here, before anything runs, so a bad suite
+// fails in milliseconds with one line naming the file and the field instead of hours into a run.
+#include "suite/suite.h"
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "suite/case_plan.h"
+#include "base/json_file.h"
+#include "base/sha256.h"
+#include "suite/suite_fields.h"
+#include "suite/suite_memory.h"
+
+namespace tcsb {
+namespace {
+
+using namespace suite_fields;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr Interval kPositive{0.0, true}, kNonNegative{0.0, false}, kAnyFinite{-kInf, true};
+constexpr Interval kFraction{0.0, true, 1.0, false};  // (0, 1]
+
+NetSpec parse_net(const Reader& r, const json& j, const std::string& path) {
+  const Object o(r, j, path, {"name", "width", "height", "size", "elevation", "mass", "pinned", "shear", "bend"});
+  NetSpec net;
+  net.name = r.string(o.need("name"), o.at("name"));
+  if (net.name.empty() || net.name.find('/') != std::string::npos) {
+    r.fail(o.at("name"), "must be a non-empty name without '/', got " + describe(o.need("name")));
+  }
+  o.read("width", net.width, 2, 100000, true);
+  o.read("height", net.height, 2, 100000, true);
+  if (const json* size = o.find("size")) {
+    const std::array<double, 2> xz = r.numbers<2>(*size, o.at("size"), kPositive);
+    net.size_x = xz[0];
+    net.size_z = xz[1];
+  }
+  o.read("elevation", net.elevation, kAnyFinite);
+  if (const json* mass = o.find("mass")) {
+    const Object m(r, *mass, o.at("mass"), {"total", "per_node"});
+    if (mass->size() != 1) {
+      r.fail(o.at("mass"), "must have exactly one of \"total\" or \"per_node\", got " + mass->dump());
+    }
+    net.mass_mode = mass->contains("total") ? MassMode::kTotal : MassMode::kPerNode;
+    m.read(net.mass_mode == MassMode::kTotal ? "total" : "per_node", net.mass, kPositive);
+  }
+  if (const json* pinned = o.find("pinned")) {
+    const std::string p = o.at("pinned");
+    if (pinned->is_array()) {
+      net.pinned_corners = 0;
+      for (std::size_t i = 0; i < pinned->size(); ++i) {
+        const unsigned bit = r.choice<unsigned>((*pinned)[i], index_path(p, i),
+                                                {{"min_min", kCornerMinMin},
+                                                 {"max_min", kCornerMaxMin},
+                                                 {"min_max", kCornerMinMax},
+                                                 {"max_max", kCornerMaxMax}});
+        if (net.pinned_corners & bit) r.fail(index_path(p, i), "duplicate corner " + (*pinned)[i].dump());
+        net.pinned_corners |= bit;
+      }
+    } else if (pinned->is_string()) {
+      net.pinned_corners = r.choice<unsigned>(*pinned, p, {{"corners", kAllCorners}, {"none", 0u}});
+    } else {
+      r.fail(p, "must be \"corners\", \"none\" or a list of corners, got " + describe(*pinned));
+    }
+  }
+  o.read("shear", net.shear_links);
+  o.read("bend", net.bend_links);
+  return net;
+}
+
+void parse_settings(const Reader& r, const Object& root, Suite& s) {
+  const Object solver(r, root.need("solver"), "solver",
+                      {"piterations", "viterations", "diterations", "damping", "stiffness"});
+  solver.read("piterations", s.solver.piterations, 1, 1000, true);
+  solver.read("viterations", s.solver.viterations, 0, 1000);
+  solver.read("diterations", s.solver.diterations, 0, 1000);
+  solver.read("damping", s.solver.damping, Interval{0.0, false, 1.0, true});
+  solver.read("stiffness", s.solver.linear_stiffness, kFraction);
+
+  if (const json* j = root.find("tcsb")) {
+    const Object tc(r, *j, "tcsb", {"blend_steps", "placement"});
+    tc.read("blend_steps", s.tcsb.blend_steps, 1, 1000);
+    tc.read("placement", s.tcsb.placement, {{"affine", Placement::kAffine}, {"rigid", Placement::kRigid}});
+  }
+
+  if (const json* j = root.find("feedback")) {
+    const Object fb(r, *j, "feedback",
+                    {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale",
+                     "illumination", "light_direction", "parallel", "threads", "max_step_ms"});
+    FeedbackSettings& f = s.feedback;
+    fb.read("policy", f.policy, {{"saliency", PolicyKind::kSaliency}, {"random", PolicyKind::kRandom}});
+    fb.read("threshold", f.threshold, kNonNegative);
+    fb.read("max_ops_per_step", f.max_ops_per_step, 1, 100000);
+    fb.read("evaluation_interval", f.evaluation_interval, 1, 1000);
+    fb.read("global_motion_scale", f.global_motion_scale, kPositive);
+    fb.read("illumination", f.illumination);
+    if (const json* light = fb.find("light_direction")) {
+      f.light_direction = r.numbers<3>(*light, fb.at("light_direction"), kAnyFinite);
+      if (f.light_direction == std::array<double, 3>{}) r.fail(fb.at("light_direction"), "must not be the zero vector");
+    }
+    fb.read("parallel", f.parallel);
+    fb.read("threads", f.threads, 1, 64);
+    fb.read("max_step_ms", f.max_step_ms, kNonNegative);
+  }
+
+  if (const json* j = root.find("fidelity")) {
+    const Object fi(r, *j, "fidelity", {"enabled", "rms_threshold_pct", "pareto_targets", "ablations"});
+    fi.read("enabled", s.fidelity.enabled);
+    fi.read("rms_threshold_pct", s.fidelity.rms_threshold_pct, kPositive);
+    if (const json* targets = fi.find("pareto_targets")) {
+      r.array(*targets, fi.at("pareto_targets"), true);
+      for (std::size_t i = 0; i < targets->size(); ++i) {
+        s.fidelity.pareto_targets.push_back(r.number((*targets)[i], index_path(fi.at("pareto_targets"), i), kFraction));
+      }
+    }
+    fi.read("ablations", s.fidelity.ablations);
+  }
+}
+
+void check_memory(const Suite& suite, const Reader& r) {
+  const std::optional<MemoryShortfall> shortfall = memory_shortfall(suite);
+  if (!shortfall) return;
+  const std::string budget = " needs about " + format_bytes(shortfall->needed) + ", but only " +
+                             format_bytes(shortfall->usable) + " may be used (80% of the headroom under " +
+                             shortfall->headroom.source + ", " +
+                             format_bytes(static_cast<double>(shortfall->headroom.bytes)) + ")";
+  if (shortfall->recorder) {
+    // Blame the field that makes it large: a huge "steps" is not the net's fault.
+    r.fail("steps", "recording " + std::to_string(suite.steps) + " steps (+ " + std::to_string(suite.warmup_steps) +
+                        " warm-up) x " + std::to_string(expand_cases(suite).size()) + " cases x " +
+                        std::to_string(suite.repetitions) + " repetitions" + budget);
+  }
+  const NetSpec& net = suite.nets[shortfall->net];
+  const std::string size = std::to_string(net.width) + " x " + std::to_string(net.height) + " = " +
+                           std::to_string(net.node_count()) + " nodes";
+  r.fail(index_path("nets", shortfall->net),
+         "net \"" + net.name + "\" (" + size + ") with all methods' bodies alive" + budget);
+}
+
+}  // namespace
+
+const char* method_name(Method method) {
+  switch (method) {
+    case Method::kPlain: return "plain";
+    case Method::kBulletPatch: return "bullet_patch";
+    case Method::kTcsb: return "tcsb";
+  }
+  return "unknown";
+}
+
+Suite parse_suite_text(const std::string& text, const std::string& file, const SuiteAdjustment& adjust) {
+  const Reader r(file);
+  const json doc = parse_json_text<json>(text, file);
+  if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
+  const Object root(r, doc, "",
+                    {"name", "description", "nets", "methods", "compression", "dt", "gravity", "steps", "warmup_steps",
+                     "repetitions", "seed", "solver", "tcsb", "feedback", "fidelity"});
+  Suite s;
+  s.path = file;
+  s.sha256 = sha256_hex(text);
+  s.name = r.string(root.need("name"), "name");
+  if (s.name.empty()) r.fail("name", "must not be empty");
+  if (const json* d = root.find("description")) s.description = r.string(*d, "description");
+
+  const json& nets = r.array(root.need("nets"), "nets");
+  for (std::size_t i = 0; i < nets.size(); ++i) {
+    s.nets.push_back(parse_net(r, nets[i], index_path("nets", i)));
+    for (std::size_t k = 0; k < i; ++k) {
+      if (s.nets[k].name != s.nets[i].name) continue;
+      r.fail(index_path("nets", i) + ".name",
+             "duplicate net name \"" + s.nets[i].name + "\" (also nets[" + std::to_string(k) + "])");
+    }
+  }
+
+  const json& methods = r.array(root.need("methods"), "methods");
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    const Method m =
+        r.choice<Method>(methods[i], index_path("methods", i),
+                         {{"plain", Method::kPlain}, {"bullet_patch", Method::kBulletPatch}, {"tcsb", Method::kTcsb}});
+    if (std::find(s.methods.begin(), s.methods.end(), m) != s.methods.end()) {
+      r.fail(index_path("methods", i), "duplicate method \"" + std::string(method_name(m)) + "\"");
+    }
+    s.methods.push_back(m);
+  }
+  const bool has_tcsb = std::find(s.methods.begin(), s.methods.end(), Method::kTcsb) != s.methods.end();
+  if (const json* compression = root.find("compression", has_tcsb)) {
+    if (!has_tcsb) r.fail("compression", "only allowed when methods contains \"tcsb\"");
+    r.array(*compression, "compression");
+    for (std::size_t i = 0; i < compression->size(); ++i) {
+      const double c = r.number((*compression)[i], index_path("compression", i), kFraction);
+      if (std::find(s.compression.begin(), s.compression.end(), c) != s.compression.end()) {
+        r.fail(index_path("compression", i), "duplicate compression target " + fmt_number(c));
+      }
+      s.compression.push_back(c);
+    }
+  }
+
+  root.read("dt", s.world.dt, kFraction, true);
+  root.read("gravity", s.world.gravity, kNonNegative);
+  root.read("steps", s.steps, 1, INT_MAX, true);
+  root.read("warmup_steps", s.warmup_steps, 0, INT_MAX, true);
+  root.read("repetitions", s.repetitions, 1, kMaxRepetitions, true);
+  s.seed = r.unsigned_integer(root.need("seed"), "seed");
+  parse_settings(r, root, s);
+
+  // CreatePatch makes structural links (and, with gendiags, one diagonal per cell), never our shear/bend sets; the
+  // TreeCut soft body's balanced-cut adjacency is the 4-neighbourhood, so it is structural-only too (the paper's
+  // net: L ~ 2N).
+  for (std::size_t i = 0; i < s.methods.size(); ++i) {
+    if (s.methods[i] != Method::kBulletPatch && s.methods[i] != Method::kTcsb) continue;
+    const char* why = s.methods[i] == Method::kTcsb ? "; TC-SB supports structural links only"
+                                                    : "; CreatePatch makes structural links only";
+    for (std::size_t k = 0; k < s.nets.size(); ++k) {
+      const NetSpec& n = s.nets[k];
+      if (!n.shear_links && !n.bend_links) continue;
+      r.fail(index_path("methods", i), std::string(method_name(s.methods[i])) + " cannot build net \"" + n.name +
+                                           "\" (nets[" + std::to_string(k) + "]) with " +
+                                           (n.shear_links ? "shear" : "bend") + " links" + why);
+    }
+  }
+  // The fidelity pass compares TC-SB (and the ablations at TC-SB's targets) with the reference: without TC-SB there
+  // is nothing to measure, and silently measuring nothing would look like a pass.
+  if (s.fidelity.enabled && !has_tcsb) r.fail("fidelity.enabled", "requires methods to contain \"tcsb\"");
+  if (adjust) adjust(s);  // before the memory check: it must see the suite that will run
+  check_memory(s, r);
+  return s;
+}
+
+Suite parse_suite(const std::filesystem::path& path, const SuiteAdjustment& adjust) {
+  Suite suite = parse_suite_text(read_input_file(path, kSuiteJsonLimits.max_bytes), path.string(), adjust);
+  suite.path = path;
+  return suite;
+}
+
+}  // namespace tcsb

@@ -1,0 +1,116 @@
+#include "suite/suite_memory.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "suite/case_plan.h"
+#include "suite/fidelity_plan.h"
+#include "net/net.h"
+
+namespace tcsb {
+namespace {
+
+// Per-element memory, deliberately on the high side (sizes measured with sizeof on Bullet 3.24, single precision):
+//  - a Bullet node: btSoftBody::Node 256 B, its rest position in btSoftBody::m_X 16 B, and its DBVT leaf and share
+//    of inner nodes, 2 tree nodes of 96 B each: btDbvtNode is 56 B, but btAlignedAlloc(56, 16) asks malloc for
+//    56 + 8 (the pointer it keeps to free) + 15 (alignment slack) = 79 B, a 96 B glibc chunk with its 8 B header.
+//    (The model had 2 x 64 B and no m_X, 80 B/node too few: plain-only runs measured 11-13 % above it.)
+//  - a Bullet link: btSoftBody::Link 72 B;
+//  - a Bullet face (CreatePatch makes 2 per cell, bullet_patch only): btSoftBody::Face 144 B + 2 x 96 B of tree;
+//  - our Net: ~ 48 B per node (rest position, mass, pin flag, padding) + 12 B per link (NetLink);
+//  - the LOD tree: ~ 4/3 N tree nodes x 112 B;
+//  - a TC-SB body: Bullet nodes reserved for all 4/3 N tree nodes, ~ 200 B of bookkeeping per tree node (cut
+//    membership, incidence lists, feedback state), and Bullet links for up to 3 L;
+//  - the recorder: 36 B per step (StepSeries in run_result.h: three doubles, three int32, reserved to size by the
+//    runner), counted for every step (warm-up included, a margin) of every run of the suite, all kept to the end.
+constexpr double kDbvtNodeBytes = 96;
+constexpr double kBulletNodeBytes = 256 + 16 + 2 * kDbvtNodeBytes;
+constexpr double kBulletLinkBytes = 72;
+constexpr double kBulletFaceBytes = 144 + 2 * kDbvtNodeBytes;
+constexpr double kNetNodeBytes = 48, kNetLinkBytes = 12;
+constexpr double kTreeNodeBytes = 112, kTreeNodesPerLeaf = 4.0 / 3.0;
+constexpr double kTcBookkeepingBytes = 200, kTcLinkFactor = 3;
+constexpr double kSampleBytes = 3 * 8 + 3 * 4;
+
+/// Peak bytes while cases of net `spec` run: the shared net, one body per method; or, in the fidelity pass, which
+/// runs afterwards, the reference and every subject at once (each counted as a TC-SB body, the largest kind).
+double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
+  const double n = static_cast<double>(spec.node_count());
+  const double l = static_cast<double>(expected_link_count(spec));
+  const double tree = kTreeNodesPerLeaf * n;
+  const double plain = n * kBulletNodeBytes + l * kBulletLinkBytes;
+  const double tcsb_body = tree * (kBulletNodeBytes + kTcBookkeepingBytes) + kTcLinkFactor * l * kBulletLinkBytes;
+  const double shared = n * kNetNodeBytes + l * kNetLinkBytes + tree * kTreeNodeBytes;
+  double bytes = shared;
+  bool has_tcsb = false;
+  for (const Method m : suite.methods) {
+    switch (m) {
+      case Method::kPlain: bytes += plain; break;
+      case Method::kBulletPatch: bytes += plain + 2.0 * (spec.width - 1) * (spec.height - 1) * kBulletFaceBytes; break;
+      case Method::kTcsb:
+        has_tcsb = true;
+        bytes += tcsb_body;
+        break;
+    }
+  }
+  const double subjects = has_tcsb ? static_cast<double>(fidelity_plan(suite).size()) : 0.0;
+  const double fidelity = shared + plain + subjects * tcsb_body;
+  return subjects > 0 ? std::max(bytes, fidelity) : bytes;
+}
+
+}  // namespace
+
+double recorder_peak_bytes(const Suite& suite) {
+  const double runs = static_cast<double>(expand_cases(suite).size()) * suite.repetitions;
+  return runs * (static_cast<double>(suite.steps) + suite.warmup_steps) * kSampleBytes;
+}
+
+namespace {
+
+std::size_t peak_net_index(const Suite& suite) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < suite.nets.size(); ++i) {
+    if (net_peak_bytes(suite, suite.nets[i]) > net_peak_bytes(suite, suite.nets[best])) best = i;
+  }
+  return best;
+}
+
+}  // namespace
+
+std::string format_bytes(double bytes) {
+  char buf[48];
+  if (bytes >= 1024.0 * 1024 * 1024)
+    std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / (1024.0 * 1024 * 1024));
+  else
+    std::snprintf(buf, sizeof buf, "%.1f MiB", bytes / (1024.0 * 1024));
+  return buf;
+}
+
+std::uint64_t estimate_peak_bytes(const Suite& suite) {
+  double peak = 0;
+  for (const NetSpec& net : suite.nets) peak = std::max(peak, net_peak_bytes(suite, net));
+  const double bytes = std::ceil(peak + recorder_peak_bytes(suite));
+  constexpr double kMax = 1.8e19;  // just under 2^64: saturate rather than overflow
+  return bytes >= kMax ? std::numeric_limits<std::uint64_t>::max() : static_cast<std::uint64_t>(bytes);
+}
+
+std::optional<MemoryShortfall> memory_shortfall(const Suite& suite, const std::vector<MemoryHeadroom>& headrooms) {
+  const std::optional<MemoryHeadroom> smallest = smallest_headroom(headrooms);
+  if (!smallest || suite.nets.empty()) return std::nullopt;
+  MemoryShortfall s;
+  s.needed = static_cast<double>(estimate_peak_bytes(suite));
+  s.headroom = *smallest;
+  s.usable = 0.8 * static_cast<double>(smallest->bytes);
+  if (s.needed <= s.usable) return std::nullopt;
+  s.net = peak_net_index(suite);
+  s.recorder = recorder_peak_bytes(suite) > net_peak_bytes(suite, suite.nets[s.net]);
+  return s;
+}
+
+std::optional<MemoryShortfall> memory_shortfall(const Suite& suite) {
+  return memory_shortfall(suite, memory_headrooms());
+}
+
+}  // namespace tcsb

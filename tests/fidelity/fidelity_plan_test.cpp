@@ -1,0 +1,100 @@
+// The fidelity plan: which subjects run, at which budgets, with which seeds and coarse grids.
+#include "suite/fidelity_plan.h"
+
+#include <gtest/gtest.h>
+
+#include "suite/case_plan.h"
+#include "fidelity/fidelity_runner.h"
+#include "fidelity/fidelity_subject.h"
+
+namespace tcsb {
+namespace {
+
+Suite suite_with_fidelity(bool ablations) {
+  Suite s;
+  s.name = std::string("t");  // moved in, not copied from a literal: GCC 12 -Wrestrict false positive
+  NetSpec n;
+  n.width = n.height = 17;
+  s.nets = {n, n};
+  s.nets[1].name = std::string("other");
+  s.methods = {Method::kPlain, Method::kTcsb};
+  s.compression = {1.0, 0.75, 0.3};
+  s.fidelity.enabled = true;
+  s.fidelity.ablations = ablations;
+  s.fidelity.pareto_targets = {0.1, 0.3, 0.5, 1.0};
+  return s;
+}
+
+TEST(FidelityPlan, TcsbAtEveryTargetOnceAscendingThenTheAblationsBelowOne) {
+  const std::vector<FidelitySubjectSpec> plan = fidelity_plan(suite_with_fidelity(true));
+  std::vector<std::pair<std::string, double>> got;
+  for (const FidelitySubjectSpec& s : plan) got.emplace_back(fidelity_method_name(s.method), s.compression);
+  const std::vector<std::pair<std::string, double>> want{{"tcsb", 0.1},
+                                                         {"tcsb", 0.3},
+                                                         {"tcsb", 0.5},
+                                                         {"tcsb", 0.75},
+                                                         {"tcsb", 1.0},
+                                                         {"uniform_grid", 0.75},
+                                                         {"uniform_grid", 0.3},
+                                                         {"switch_body", 0.75},
+                                                         {"switch_body", 0.3},
+                                                         {"tcsb_random", 0.75},
+                                                         {"tcsb_random", 0.3},
+                                                         {"tcsb_rigid", 0.75},
+                                                         {"tcsb_rigid", 0.3},
+                                                         {"tcsb_no_geomorph", 0.75},
+                                                         {"tcsb_no_geomorph", 0.3}};
+  EXPECT_EQ(got, want);
+}
+
+TEST(FidelityPlan, EmptyWhenDisabledOrWithoutTcsb) {
+  Suite s = suite_with_fidelity(true);
+  s.fidelity.enabled = false;
+  EXPECT_TRUE(fidelity_plan(s).empty());
+  s = suite_with_fidelity(true);
+  s.methods = {Method::kPlain};
+  EXPECT_TRUE(fidelity_plan(s).empty());
+  s = suite_with_fidelity(false);
+  EXPECT_EQ(fidelity_plan(s).size(), 5u);  // TC-SB only
+}
+
+TEST(FidelityPlan, CoarseGridHoldsAboutTheBudgetWithTheNetsAspect) {
+  EXPECT_EQ(coarse_grid_for(81, 81, 1968).width, 44);   // round(sqrt(1968)) = 44: 1936 nodes
+  EXPECT_EQ(coarse_grid_for(81, 81, 1968).height, 45);  // round(1968 / 44) = 45: 1980 nodes, nearer the budget
+  const CoarseGrid wide = coarse_grid_for(100, 25, 625);
+  EXPECT_EQ(wide.width, 50);
+  EXPECT_EQ(wide.height, 13);
+  EXPECT_EQ(coarse_grid_for(17, 17, 1).width, 2);        // never below 2 x 2
+  EXPECT_EQ(coarse_grid_for(17, 17, 100000).width, 17);  // never above the net
+}
+
+TEST(FidelityPlan, CoarseNetKeepsTheClothsSizeMassAndPins) {
+  NetSpec fine;
+  fine.width = fine.height = 45;
+  fine.mass_mode = MassMode::kPerNode;
+  fine.mass = 0.01;
+  fine.pinned_corners = kCornerMinMin | kCornerMaxMax;
+  const NetSpec coarse = coarse_net_spec(fine, 600);
+  EXPECT_EQ(coarse.width * coarse.height, 24 * 25);
+  EXPECT_EQ(coarse.size_x, fine.size_x);
+  EXPECT_EQ(coarse.elevation, fine.elevation);
+  EXPECT_EQ(coarse.pinned_corners, fine.pinned_corners);
+  EXPECT_NEAR(coarse.node_mass() * static_cast<double>(coarse.node_count()), 0.01 * 45 * 45, 1e-12);
+}
+
+TEST(FidelitySeed, TcsbAtASuiteTargetRetracesItsTimedCase) {
+  const Suite s = suite_with_fidelity(true);
+  const std::vector<CaseKey> keys = expand_cases(s);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (keys[i].method != Method::kTcsb) continue;
+    EXPECT_EQ(fidelity_seed(s, keys[i].net, {FidelityMethod::kTcsb, *keys[i].compression}), case_seed(s, i));
+  }
+  // Ablations and Pareto-only targets get seeds of their own, past every case.
+  const std::uint64_t random = fidelity_seed(s, 1, {FidelityMethod::kTcsbRandom, 0.3});
+  EXPECT_GT(random, case_seed(s, keys.size()));
+  EXPECT_NE(random, fidelity_seed(s, 0, {FidelityMethod::kTcsbRandom, 0.3}));
+  EXPECT_NE(random, fidelity_seed(s, 1, {FidelityMethod::kTcsbRandom, 0.75}));
+}
+
+}  // namespace
+}  // namespace tcsb

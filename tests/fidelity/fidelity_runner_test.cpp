@@ -1,0 +1,117 @@
+// The fidelity pass end to end on a tiny suite: TC-SB without compression is the reference (zero error, exactly),
+// the TC-SB subject retraces the timed case, the switch follows TC-SB's convergence, a net at rest is reproduced by
+// every method, and nothing non-finite comes out.
+#include "fidelity/fidelity_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "paper/fidelity_tables.h"
+#include "run/runner.h"
+
+namespace tcsb {
+namespace {
+
+Suite tiny_suite(double gravity) {
+  Suite s;
+  s.name = std::string("tiny");  // moved in: GCC 12 -Wrestrict false positive on literal assignment
+  NetSpec n;
+  n.width = n.height = 17;
+  s.nets = {n};
+  s.methods = {Method::kPlain, Method::kTcsb};
+  s.compression = {1.0, 0.5};
+  s.world.gravity = gravity;
+  s.steps = 40;
+  s.warmup_steps = 30;
+  s.repetitions = 1;
+  s.feedback.max_ops_per_step = 16;
+  s.fidelity.enabled = true;
+  s.fidelity.ablations = true;
+  s.fidelity.pareto_targets = {0.25};
+  return s;
+}
+
+const FidelityCase& find(const FidelityResult& r, FidelityMethod method, double compression) {
+  for (const FidelityCase& c : r.cases)
+    if (c.subject.method == method && c.subject.compression == compression) return c;
+  ADD_FAILURE() << fidelity_method_name(method) << "@" << compression << " missing";
+  return r.cases.front();
+}
+
+void expect_all_finite(const MetricSummary& m) {
+  EXPECT_TRUE(std::isfinite(m.mean) && std::isfinite(m.p95) && std::isfinite(m.max));
+}
+
+TEST(FidelityPass, TcsbWithoutCompressionIsTheReferenceExactly) {
+  const Suite s = tiny_suite(9.81);
+  const RunResult run = run_suite(s, Context{});
+  ASSERT_TRUE(run.fidelity);
+  const FidelityResult& f = *run.fidelity;
+  EXPECT_EQ(f.cases.size(), fidelity_plan(s).size());
+  const FidelityCase& full = find(f, FidelityMethod::kTcsb, 1.0);
+  EXPECT_EQ(full.status, "ok");
+  EXPECT_EQ(full.rms_pct.count, 40u);
+  EXPECT_EQ(full.popping_pct.count, 70u);  // popping: every step, warm-up included
+  EXPECT_EQ(full.rms_pct.max, 0.0);
+  EXPECT_EQ(full.max_pct.max, 0.0);
+  EXPECT_EQ(full.weighted_rms_pct.max, 0.0);
+  EXPECT_EQ(full.popping_pct.max, 0.0);
+  EXPECT_EQ(full.energy_drift_pct.max, 0.0);
+  // Compressed TC-SB and the ablations really differ from the reference: the pass can report an error.
+  EXPECT_GT(find(f, FidelityMethod::kTcsb, 0.25).rms_pct.mean, 0.0);
+  EXPECT_GT(find(f, FidelityMethod::kUniform, 0.5).rms_pct.mean, 0.0);
+  for (const FidelityCase& c : f.cases) {
+    EXPECT_EQ(c.status, "ok") << fidelity_method_name(c.subject.method) << "@" << c.subject.compression;
+    for (const MetricSummary* m : {&c.rms_pct, &c.max_pct, &c.weighted_rms_pct, &c.popping_pct, &c.energy_drift_pct})
+      expect_all_finite(*m);
+    EXPECT_GT(c.step_ms, 0.0);
+    EXPECT_GT(c.reference_step_ms, 0.0);
+  }
+}
+
+TEST(FidelityPass, TcsbSubjectRetracesTheTimedCaseAndTheSwitchFollowsItsConvergence) {
+  const Suite s = tiny_suite(9.81);
+  const RunResult run = run_suite(s, Context{});
+  ASSERT_TRUE(run.fidelity);
+  for (const CaseResult& c : run.cases) {
+    if (c.key.method != Method::kTcsb) continue;
+    EXPECT_EQ(find(*run.fidelity, FidelityMethod::kTcsb, *c.key.compression).final_state_hash,
+              c.repetitions.front().final_state_hash)
+        << c.label;
+  }
+  const FidelityCase& tc = find(*run.fidelity, FidelityMethod::kTcsb, 0.5);
+  const FidelityCase& sw = find(*run.fidelity, FidelityMethod::kSwitch, 0.5);
+  ASSERT_TRUE(tc.converged_step);
+  EXPECT_LT(*tc.converged_step, s.warmup_steps);
+  EXPECT_EQ(sw.switch_step, tc.converged_step);
+  ASSERT_TRUE(sw.switch_ms);
+  EXPECT_GT(*sw.switch_ms, 0.0);
+  EXPECT_EQ(sw.grid, "12x12");  // round(sqrt(0.5 * 289)) = 12: 144 nodes for a budget of 145
+  EXPECT_NEAR(sw.mean_nodes, 144.0, 1e-9);
+  EXPECT_NEAR(find(*run.fidelity, FidelityMethod::kUniform, 0.5).mean_nodes, 144.0, 1e-9);
+}
+
+TEST(FidelityPass, EveryMethodReproducesANetAtRest) {
+  const RunResult run = run_suite(tiny_suite(0.0), Context{});
+  ASSERT_TRUE(run.fidelity);
+  for (const FidelityCase& c : run.fidelity->cases) {
+    const std::string what =
+        std::string(fidelity_method_name(c.subject.method)) + "@" + std::to_string(c.subject.compression);
+    EXPECT_EQ(c.status, "ok") << what;
+    EXPECT_LT(c.max_pct.max, 1e-4) << what;           // % of the extent: under 8 um
+    EXPECT_LT(c.popping_pct.max, 1e-4) << what;       // operations and the switch on a resting net do not pop
+    EXPECT_EQ(c.energy_drift_pct.count, 0u) << what;  // no gravity: initial energy 0, drift undefined, left out
+  }
+  const std::vector<FidelityRow> rows = fidelity_rows(*run.fidelity);
+  EXPECT_FALSE(rows.empty());
+}
+
+TEST(FidelityPass, NotRunWhenDisabled) {
+  Suite s = tiny_suite(9.81);
+  s.fidelity.enabled = false;
+  EXPECT_FALSE(run_suite(s, Context{}).fidelity);
+}
+
+}  // namespace
+}  // namespace tcsb

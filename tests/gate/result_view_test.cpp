@@ -1,0 +1,133 @@
+// Reading result files back: every field the readers use is checked, and a bad one is named with its file.
+#include "gate/result_view.h"
+
+#include <gtest/gtest.h>
+
+#include "result_documents.h"
+
+namespace tcsb {
+namespace {
+
+using testing::ojson;
+using testing::result_doc;
+
+std::string error_of(const ojson& doc) {
+  try {
+    read_result(doc, "r.json");
+  } catch (const ResultFileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ResultView, ReadsCasesAndRepetitions) {
+  const ResultView r = read_result(result_doc(), "r.json");
+  EXPECT_EQ(r.file, "r.json");
+  EXPECT_EQ(r.schema_version, 2);
+  EXPECT_EQ(r.steps, 20);
+  EXPECT_EQ(r.repetitions, 9);
+  ASSERT_EQ(r.cases.size(), 4u);
+  EXPECT_EQ(r.cases[1].label, "n9/tcsb@0.5");
+  EXPECT_EQ(r.cases[1].method, "tcsb");
+  EXPECT_FALSE(r.cases[1].compression.has_value());
+  ASSERT_EQ(r.cases[1].repetitions.size(), 9u);
+  EXPECT_DOUBLE_EQ(*r.cases[1].repetitions[0].mean_step_ms, 0.5);
+  EXPECT_EQ(r.cases[1].repetitions[3].final_state_hash, "h3");
+  EXPECT_EQ(r.cases[1].repetitions[3].operations, 7);
+}
+
+TEST(ResultView, PairsRatiosWithThePlainCaseOfTheSameNet) {
+  const ResultView r = read_result(result_doc(), "r.json");
+  EXPECT_EQ(plain_case_of(r, 1), 0u);
+  EXPECT_EQ(plain_case_of(r, 3), 2u);
+  EXPECT_EQ(plain_case_of(r, 2), 2u);
+  const std::vector<double> ratios = paired_step_ratios(r, 1, 0);
+  ASSERT_EQ(ratios.size(), 9u);
+  for (const double q : ratios) EXPECT_DOUBLE_EQ(q, 0.5);
+}
+
+TEST(ResultView, DivergedRepetitionsAreLeftOutOfSamples) {
+  ojson doc = result_doc();
+  doc["cases"][0]["repetitions"][2]["status"] = "diverged";
+  doc["cases"][0]["repetitions"][2]["mean_step_ms"] = nullptr;
+  const ResultView r = read_result(doc, "r.json");
+  EXPECT_EQ(ok_step_times(r.cases[0]).size(), 8u);
+  EXPECT_EQ(paired_step_ratios(r, 1, 0).size(), 8u) << "repetition 2 has no plain partner";
+}
+
+TEST(ResultView, BadFieldsAreNamedWithTheFile) {
+  ojson doc = result_doc();
+  doc["cases"][1]["repetitions"][3]["final_state_hash"] = 5;
+  EXPECT_EQ(error_of(doc), "r.json: cases[1].repetitions[3].final_state_hash: must be a string");
+
+  doc = result_doc();
+  doc["cases"][0].erase("status");
+  EXPECT_EQ(error_of(doc), "r.json: cases[0].status: missing");
+
+  doc = result_doc();
+  doc["cases"][0]["repetitions"][0]["operations"] = 1.5;
+  EXPECT_NE(error_of(doc).find("cases[0].repetitions[0].operations: must be an integer"), std::string::npos);
+
+  doc = result_doc();
+  doc["cases"][0]["mean_nodes"] = "many";
+  EXPECT_EQ(error_of(doc), "r.json: cases[0].mean_nodes: must be a number or null");
+
+  doc = result_doc();
+  doc["tool"] = "gbench";
+  EXPECT_NE(error_of(doc).find("not a tcsb result"), std::string::npos);
+  EXPECT_NE(error_of(ojson::array()).find("not a tcsb result"), std::string::npos);
+}
+
+TEST(ResultView, ImpossibleStepTimesAreBadInput) {
+  // An ok repetition timed every step, and a step takes time: zero, negative or missing cannot come from a run.
+  const struct {
+    ojson value;
+    const char* expected;
+  } cases[] = {
+      {0.0, "r.json: cases[1].repetitions[3].mean_step_ms: must be > 0 (a step takes time), got 0.0"},
+      {-0.5, "r.json: cases[1].repetitions[3].mean_step_ms: must be > 0 (a step takes time), got -0.5"},
+      {nullptr, "r.json: cases[1].repetitions[3].mean_step_ms: null, but the repetition's status is \"ok\""},
+  };
+  for (const auto& c : cases) {
+    ojson doc = result_doc();
+    doc["cases"][1]["repetitions"][3]["mean_step_ms"] = c.value;
+    EXPECT_EQ(error_of(doc).rfind(c.expected, 0), 0u) << error_of(doc);
+  }
+  // A diverged repetition may have no time, but never a negative one.
+  ojson doc = result_doc();
+  doc["cases"][1]["repetitions"][3]["status"] = "diverged";
+  doc["cases"][1]["repetitions"][3]["mean_step_ms"] = nullptr;
+  EXPECT_EQ(error_of(doc), "");
+  doc["cases"][1]["repetitions"][3]["mean_step_ms"] = -1.0;
+  EXPECT_NE(error_of(doc).find("cases[1].repetitions[3].mean_step_ms: must be > 0"), std::string::npos);
+}
+
+TEST(ResultView, NegativeCountsAndSpreadsAreBadInput) {
+  for (const char* field : {"mean_nodes", "mean_links", "mean_interpolations"}) {
+    ojson doc = result_doc();
+    doc["cases"][2]["repetitions"][0][field] = -1.0;
+    EXPECT_EQ(error_of(doc), std::string("r.json: cases[2].repetitions[0].") + field + ": must be >= 0, got -1.0");
+    doc = result_doc();
+    doc["cases"][2][field] = -3.0;
+    EXPECT_EQ(error_of(doc), std::string("r.json: cases[2].") + field + ": must be >= 0, got -3.0");
+  }
+  for (const char* field : {"median", "stddev", "cv"}) {
+    ojson doc = result_doc();
+    doc["cases"][0]["step_ms"][field] = -0.25;
+    EXPECT_EQ(error_of(doc), std::string("r.json: cases[0].step_ms.") + field + ": must be >= 0, got -0.25");
+  }
+  // Zero is a real count: a plain net interpolates nothing.
+  ojson doc = result_doc();
+  doc["cases"][0]["mean_interpolations"] = 0.0;
+  doc["cases"][0]["repetitions"][0]["mean_interpolations"] = 0.0;
+  EXPECT_EQ(error_of(doc), "");
+}
+
+TEST(ResultView, IntegralFloatsAreIntegers) {
+  ojson doc = result_doc();
+  doc["cases"][0]["repetitions"][0]["operations"] = 3.0;
+  EXPECT_EQ(read_result(doc, "r.json").cases[0].repetitions[0].operations, 3);
+}
+
+}  // namespace
+}  // namespace tcsb
