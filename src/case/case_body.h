@@ -8,11 +8,11 @@
 #include <optional>
 
 #include "feedback/controller.h"
-#include "suite/case_plan.h"
-#include "suite/suite.h"
 #include "net/net.h"
 #include "softbody/soft_body_world.h"
 #include "softbody/tc_softbody.h"
+#include "suite/case_plan.h"
+#include "suite/suite.h"
 
 namespace tcsb {
 

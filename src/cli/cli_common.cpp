@@ -5,11 +5,11 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "report/report_writer.h"
+#include "report/terminal_text.h"
 #include "run/context.h"
 #include "run/out_of_memory.h"
 #include "suite/suite.h"
-#include "report/report_writer.h"
-#include "report/terminal_text.h"
 
 namespace tcsb::cli {
 

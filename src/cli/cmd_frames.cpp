@@ -8,11 +8,11 @@
 #include "cli/commands.h"
 #include "cli/flag_values.h"
 #include "cli/run_support.h"
-#include "run/context.h"
 #include "fidelity/figure_frames.h"
-#include "run/out_of_memory.h"
 #include "report/frames_json.h"
 #include "report/json_report.h"
+#include "run/context.h"
+#include "run/out_of_memory.h"
 
 namespace tcsb::cli {
 

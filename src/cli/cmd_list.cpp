@@ -4,12 +4,12 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "base/json_file.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "base/json_file.h"
-#include "suite/suite.h"
 #include "report/terminal_text.h"
 #include "report/text_table.h"
+#include "suite/suite.h"
 
 namespace tcsb::cli {
 namespace {

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <iostream>
 
+#include "case/step_clock.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/run_support.h"
-#include "case/step_clock.h"
 #include "report/json_report.h"
 #include "report/report_writer.h"
 #include "report/reproduction_report.h"

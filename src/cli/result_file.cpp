@@ -1,8 +1,8 @@
 #include "cli/result_file.h"
 
-#include "cli/cli_common.h"
-#include "base/json_file.h"
 #include "base/input_error.h"
+#include "base/json_file.h"
+#include "cli/cli_common.h"
 #include "report/json_report.h"
 #include "report/result_schema.h"
 

@@ -7,13 +7,13 @@
 #include <iostream>
 
 #include "cli/cli_common.h"
-#include "run/context.h"
-#include "run/runner.h"
-#include "run/stall.h"
 #include "report/console_report.h"
 #include "report/report_writer.h"
 #include "report/terminal_text.h"
 #include "report/text_table.h"
+#include "run/context.h"
+#include "run/runner.h"
+#include "run/stall.h"
 
 namespace tcsb::cli {
 

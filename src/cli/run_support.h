@@ -7,9 +7,9 @@
 #include <optional>
 #include <string>
 
+#include "report/report_format.h"
 #include "run/run_result.h"
 #include "suite/suite.h"
-#include "report/report_format.h"
 
 namespace CLI {
 class App;

@@ -8,16 +8,16 @@
 
 #include "analysis/fidelity_metrics.h"
 #include "analysis/statistics.h"
-#include "feedback/cut_snapshot.h"
-#include "feedback/saliency.h"
-#include "suite/case_plan.h"
-#include "fidelity/fidelity_subject.h"
-#include "fidelity/reconstruction.h"
 #include "case/state_hash.h"
 #include "case/step_clock.h"
+#include "feedback/cut_snapshot.h"
+#include "feedback/saliency.h"
+#include "fidelity/fidelity_subject.h"
+#include "fidelity/reconstruction.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/divergence.h"
 #include "softbody/plain_softbody.h"
+#include "suite/case_plan.h"
 
 namespace tcsb {
 

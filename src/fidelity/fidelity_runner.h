@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "fidelity/fidelity_result.h"
-#include "suite/suite.h"
 #include "net/net.h"
+#include "suite/suite.h"
 
 namespace tcsb {
 

@@ -3,10 +3,10 @@
 #include <cmath>
 
 #include "analysis/fidelity_metrics.h"
-#include "feedback/controller.h"
 #include "case/case_body.h"
-#include "fidelity/reconstruction.h"
 #include "case/step_clock.h"
+#include "feedback/controller.h"
+#include "fidelity/reconstruction.h"
 #include "fidelity/surface_morph.h"
 #include "net/grid_resample.h"
 #include "softbody/bullet_setup.h"

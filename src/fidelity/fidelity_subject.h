@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "suite/fidelity_plan.h"
-#include "suite/suite.h"
 #include "net/net.h"
 #include "softbody/soft_body_world.h"
+#include "suite/fidelity_plan.h"
+#include "suite/suite.h"
 
 namespace tcsb {
 

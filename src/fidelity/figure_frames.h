@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "suite/suite.h"
 #include "softbody/tc_softbody.h"
+#include "suite/suite.h"
 
 namespace tcsb {
 

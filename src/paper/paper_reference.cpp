@@ -2,8 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "base/json_file.h"
 #include "base/input_error.h"
+#include "base/json_file.h"
 
 namespace tcsb {
 

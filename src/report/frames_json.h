@@ -4,8 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "run/context.h"
 #include "fidelity/figure_frames.h"
+#include "run/context.h"
 #include "suite/suite.h"
 
 namespace tcsb {

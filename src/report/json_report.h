@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "run/run_result.h"
 #include "report/report_format.h"
+#include "run/run_result.h"
 
 namespace tcsb {
 

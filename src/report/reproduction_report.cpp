@@ -5,16 +5,16 @@
 #include <limits>
 #include <ostream>
 
+#include "case/step_clock.h"
 #include "paper/claim_intervals.h"
 #include "paper/fidelity_tables.h"
 #include "paper/op_work_claims.h"
 #include "paper/paper_claims.h"
 #include "paper/paper_tables.h"
-#include "run/runner.h"
-#include "case/step_clock.h"
 #include "report/claims_console.h"
 #include "report/json_report.h"
 #include "report/text_table.h"
+#include "run/runner.h"
 
 namespace tcsb {
 

@@ -12,8 +12,8 @@
 
 #include "analysis/claim.h"
 #include "paper/paper_reference.h"
-#include "run/run_result.h"
 #include "paper/sequential_claims.h"
+#include "run/run_result.h"
 
 namespace tcsb {
 

@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "analysis/statistics.h"
-#include "suite/case_plan.h"
-#include "run/context.h"
 #include "fidelity/fidelity_result.h"
-#include "suite/suite.h"
+#include "run/context.h"
 #include "softbody/op_sample.h"
+#include "suite/case_plan.h"
+#include "suite/suite.h"
 
 namespace tcsb {
 

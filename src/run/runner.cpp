@@ -6,11 +6,11 @@
 
 #include "analysis/statistics.h"
 #include "case/case_body.h"
-#include "run/case_summary.h"
-#include "fidelity/fidelity_runner.h"
-#include "run/out_of_memory.h"
 #include "case/state_hash.h"
 #include "case/step_clock.h"
+#include "fidelity/fidelity_runner.h"
+#include "run/case_summary.h"
+#include "run/out_of_memory.h"
 #include "softbody/divergence.h"
 
 namespace tcsb {

@@ -8,9 +8,9 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "suite/case_plan.h"
 #include "base/json_file.h"
 #include "base/sha256.h"
+#include "suite/case_plan.h"
 #include "suite/suite_fields.h"
 #include "suite/suite_memory.h"
 

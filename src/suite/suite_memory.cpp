@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <limits>
 
+#include "net/net.h"
 #include "suite/case_plan.h"
 #include "suite/fidelity_plan.h"
-#include "net/net.h"
 
 namespace tcsb {
 namespace {

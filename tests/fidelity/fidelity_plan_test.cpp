@@ -3,9 +3,9 @@
 
 #include <gtest/gtest.h>
 
-#include "suite/case_plan.h"
 #include "fidelity/fidelity_runner.h"
 #include "fidelity/fidelity_subject.h"
+#include "suite/case_plan.h"
 
 namespace tcsb {
 namespace {

@@ -15,9 +15,9 @@
 #include "feedback/random_policy.h"
 #include "paper/op_work.h"
 #include "paper/op_work_claims.h"
-#include "suite/suite.h"
 #include "softbody/op_work_bounds.h"
 #include "softbody/tc_softbody.h"
+#include "suite/suite.h"
 
 namespace tcsb {
 namespace {

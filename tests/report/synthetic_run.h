@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "suite/case_plan.h"
 #include "run/run_result.h"
+#include "suite/case_plan.h"
 
 namespace tcsb::testing {
 
