@@ -126,7 +126,7 @@ std::int32_t TcSoftBody::new_op(OpKind kind, TreeId parent) {
 }
 
 void TcSoftBody::begin_refine(TreeId p) {
-  const std::int64_t t0 = now_ns();
+  const std::int64_t t0 = op_clock();
   prefetch_footprint(p);
   work_ = {.interior = neighbourhood_inside_net(tree(), p)};
   const LodNode& pn = tree().node(p);
@@ -158,7 +158,7 @@ void TcSoftBody::begin_refine(TreeId p) {
   state_[static_cast<std::size_t>(p)] = CutState::kLeaving;
   record(p).op = op;
   committed_count_ += pn.child_count - 1;
-  const std::int64_t t1 = now_ns();
+  const std::int64_t t1 = op_clock();
 
   for (std::int32_t li : incidence_[static_cast<std::size_t>(p)]) {
     CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
@@ -182,11 +182,11 @@ void TcSoftBody::begin_refine(TreeId p) {
         });
     add_link(p, c, LinkRole::kTether, op);
   }
-  emit(OpKind::kRefine, t1 - t0, now_ns() - t1);
+  emit(OpKind::kRefine, t1 - t0, op_clock() - t1);
 }
 
 void TcSoftBody::begin_coarse(TreeId p) {
-  const std::int64_t t0 = now_ns();
+  const std::int64_t t0 = op_clock();
   prefetch_footprint(p);
   work_ = {.interior = neighbourhood_inside_net(tree(), p)};
   const LodNode& pn = tree().node(p);
@@ -215,7 +215,7 @@ void TcSoftBody::begin_coarse(TreeId p) {
     record(c).op = op;
   }
   committed_count_ += 1 - pn.child_count;
-  const std::int64_t t1 = now_ns();
+  const std::int64_t t1 = op_clock();
 
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
@@ -233,7 +233,7 @@ void TcSoftBody::begin_coarse(TreeId p) {
       tree(), p, [this](TreeId n) { return probe_committed(n); },
       [&](TreeId n) { add_link(p, n, LinkRole::kFadeIn, op); });
   for (int i = 0; i < pn.child_count; ++i) add_link(p, pn.children[static_cast<std::size_t>(i)], LinkRole::kTether, op);
-  emit(OpKind::kCoarse, t1 - t0, now_ns() - t1);
+  emit(OpKind::kCoarse, t1 - t0, op_clock() - t1);
 }
 
 // ---- blending and end operations -----------------------------------------------------------------------------
@@ -276,7 +276,7 @@ void TcSoftBody::end_op(std::int32_t index) {
 }
 
 void TcSoftBody::end_refine(const Op& op) {
-  const std::int64_t t0 = now_ns();
+  const std::int64_t t0 = op_clock();
   const TreeId p = op.parent;
   const LodNode& pn = tree().node(p);
   prefetch_link_removals(std::span<const TreeId>(&p, 1));
@@ -285,7 +285,7 @@ void TcSoftBody::end_refine(const Op& op) {
   while (incidence_[static_cast<std::size_t>(p)].size() > 0)  // faded-out links and tethers
     remove_link(incidence_[static_cast<std::size_t>(p)][0]);
   for (int i = 0; i < pn.child_count; ++i) make_faded_in_links_steady(pn.children[static_cast<std::size_t>(i)]);
-  const std::int64_t t1 = now_ns();
+  const std::int64_t t1 = op_clock();
 
   // The parent's half of the mass and its momentum go to the children in proportion to their masses.
   const Eigen::Vector3d vp = to_eigen(m_nodes[record(p).bullet].m_v);
@@ -302,15 +302,15 @@ void TcSoftBody::end_refine(const Op& op) {
     settle_in_cut(c, full);
   }
   retire_from_cut(p);
-  const std::int64_t t2 = now_ns();
+  const std::int64_t t2 = op_clock();
 
   for (int i = 0; i < pn.child_count; ++i) refresh_incident_constants(pn.children[static_cast<std::size_t>(i)]);
-  const std::int64_t t3 = now_ns();
+  const std::int64_t t3 = op_clock();
   emit(OpKind::kEndRefine, t2 - t1, (t1 - t0) + (t3 - t2));
 }
 
 void TcSoftBody::end_coarse(const Op& op) {
-  const std::int64_t t0 = now_ns();
+  const std::int64_t t0 = op_clock();
   const TreeId p = op.parent;
   const LodNode& pn = tree().node(p);
   prefetch_link_removals(std::span<const TreeId>(pn.children.data(), static_cast<std::size_t>(pn.child_count)));
@@ -323,7 +323,7 @@ void TcSoftBody::end_coarse(const Op& op) {
       remove_link(incidence_[static_cast<std::size_t>(c)][0]);
   }
   make_faded_in_links_steady(p);
-  const std::int64_t t1 = now_ns();
+  const std::int64_t t1 = op_clock();
 
   // The children's halves of the mass and their momentum go to the parent.
   Node& parent_node = m_nodes[record(p).bullet];
@@ -337,10 +337,10 @@ void TcSoftBody::end_coarse(const Op& op) {
   if (!pn.pinned()) parent_node.m_v = to_bullet(momentum / pn.mass);
   settle_in_cut(p, pn.mass);
   for (int i = 0; i < pn.child_count; ++i) retire_from_cut(pn.children[static_cast<std::size_t>(i)]);
-  const std::int64_t t2 = now_ns();
+  const std::int64_t t2 = op_clock();
 
   refresh_incident_constants(p);
-  const std::int64_t t3 = now_ns();
+  const std::int64_t t3 = op_clock();
   emit(OpKind::kEndCoarse, t2 - t1, (t1 - t0) + (t3 - t2));
 }
 
@@ -364,6 +364,8 @@ void TcSoftBody::retire_from_cut(TreeId id) {
   state_[static_cast<std::size_t>(id)] = CutState::kOff;
   record(id).op = -1;
 }
+
+std::int64_t TcSoftBody::op_clock() const { return sink_ != nullptr ? now_ns() : 0; }
 
 void TcSoftBody::emit(OpKind kind, std::int64_t node_ns, std::int64_t link_ns) {
   if (sink_ == nullptr) return;

@@ -231,6 +231,8 @@ class TcSoftBody : public btSoftBody {
     ++work_.tree_records;
     return committed(id);
   }
+  /// Now, in nanoseconds, for an operation's sample; 0 without a sink: nobody collects, so nothing reads the clock.
+  std::int64_t op_clock() const;
   void emit(OpKind kind, std::int64_t node_ns, std::int64_t link_ns);
   btVector3 place_child(TreeId parent, TreeId child, const btVector3& parent_x,
                         const Eigen::Matrix<double, 3, 2>& deformation) const;

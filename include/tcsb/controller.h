@@ -1,0 +1,14 @@
+// Public API: the feedback controller that keeps a TcSoftBody near its node budget.
+//
+// make_controller(settings, target_nodes, seed) gives the controller of the paper's Figure 1: each step it rates
+// the cut's blocks by their motion (the BSWDF saliency) and begins refine and coarse operations to hold the budget.
+// The per-step order is fixed:
+//
+//   body.advance_blends();            // blends move on; finished operations end
+//   controller->before_step(body);    // new operations begin
+//   body.simulate_step(dt);           // one Bullet step
+//   controller->after_step(body);     // a parallel controller snapshots the state for its worker
+#pragma once
+
+#include "feedback/controller.h"         // IWYU pragma: export
+#include "feedback/feedback_settings.h"  // IWYU pragma: export

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The library as a user gets it: installs the build tree BUILD into a scratch prefix, configures and builds
+# examples/ against it with find_package(tcsb) in a tree of its own, and runs hello_tcsb (which checks the cut's
+# invariants and exits non-zero when one is broken). Usage: scripts/check-example.sh BUILD
+set -euo pipefail
+build=${1:?usage: check-example.sh BUILD}
+source_dir=$(cd "$(dirname "$0")/.." && pwd)
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+cmake --install "$build" --prefix "$scratch/prefix" > "$scratch/install.log"
+# Nothing of the source or build tree may be needed: the example sees only the prefix.
+cmake -S "$source_dir/examples" -B "$scratch/examples" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$scratch/prefix" > "$scratch/configure.log"
+cmake --build "$scratch/examples" > "$scratch/build.log"
+"$scratch/examples/hello_tcsb" | tee "$scratch/run.log"
+grep -q "invariants hold" "$scratch/run.log"
