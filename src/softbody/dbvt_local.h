@@ -1,4 +1,8 @@
-// Local edits of Bullet's node DBVT, so adding or removing a TC-SB node costs O(1) instead of O(tree depth).
+// Local edits of Bullet's node DBVT, so adding or removing a TC-SB node costs O(1) amortised instead of a
+// descent from the root. The insertion's walk up stops at the first ancestor whose box already holds the new
+// leaf: beside a moving cloth's own neighbour that is its parent or grandparent nearly always, but its worst case
+// is the tree's depth (OpWork::dbvt_ancestors counts them; the op_work claims check that their mean over interior
+// operations does not grow with the net).
 //
 // btDbvt::insert always descends from the root (O(log N), one cache miss per level on a large net) and
 // btDbvt::remove refits every ancestor whose box shrinks. A TreeCut operation knows where its new node belongs —

@@ -6,7 +6,7 @@
 //    raw Node* held by links and DBVT leaves stay valid; our own references are indices.
 //  * Nodes and links are removed by swap-with-last; the one node or link that moves is re-pointed through the
 //    incidence lists, O(degree). Each node's DBVT leaf is inserted beside the leaf of the node it replaces and
-//    removed with it, both O(1) (dbvt_local.h) rather than Bullet's O(log N) descent from the root.
+//    removed with it, O(1) amortised (dbvt_local.h) rather than Bullet's O(log N) descent from the root.
 //  * Link constants (m_rl, m_c1, m_c0) and inverse masses are written directly; the m_bUpdateRtCst flag, which would
 //    reset every rest length to its stretched length, never fires.
 //  * A balanced cut (neighbouring cut nodes at most one level apart) bounds every node's degree, so each operation
