@@ -9,6 +9,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/run_support.h"
+#include "paper/paper_claims.h"
 #include "report/json_report.h"
 #include "report/report_writer.h"
 #include "report/reproduction_report.h"
@@ -63,7 +64,7 @@ int reproduce_command(const ReproduceArgs& args) {
 
   ReproductionOptions options;
   const double elapsed_s = ms_between(start, StepClock::now()) / 1000.0;
-  options.budget_s = args.budget ? *args.budget : std::max(0.0, kReproduceWallTarget - elapsed_s);
+  options.budget_s = args.budget ? *args.budget : std::max(0.0, kReproductionWallTargetS - elapsed_s);
   if (!args.quiet) options.on_look = print_look;
   const Reproduction reproduction = check_reproduction(result, paper, options);
   print_reproduction(result, reproduction, std::cerr);

@@ -33,12 +33,10 @@ struct ReproduceArgs {
   bool quiet = false;                        ///< only the reproduction tables on stderr
   std::optional<int> repetitions;            ///< overrides the suite's repetitions per case, when given
   /// Wall time (s) for judging the claims after the run — intervals, and extra repetitions of undecided claims
-  /// while they fit; absent: what is left of kReproduceWallTarget; 0: no extra repetitions.
+  /// while they fit; absent: what is left of kReproductionWallTargetS (paper/paper_claims.h); 0: no extra repetitions.
   std::optional<double> budget;
 };
 
-/// What `tcsb reproduce` aims to stay within by default, extra repetitions included (seconds).
-inline constexpr double kReproduceWallTarget = 150.0;
 /// The largest --budget accepted (a day): a bound against typing errors.
 inline constexpr double kMaxReproduceBudget = 86400.0;
 

@@ -34,7 +34,12 @@ std::vector<Claim> paper_claims(const PaperReference& paper, const std::vector<T
 /// 10 %); at 75 %, <= 0.80 x plain.
 std::vector<Claim> project_targets(const std::vector<Table2Row>& table2);
 
-/// This project's target for the reproduction's wall time: within 120 s (one measurement: judged on its value).
+/// What `tcsb reproduce` aims to stay within, extra repetitions of undecided claims included (seconds): its default
+/// budget for those repetitions is what is left of it, and the wall-time target judges the run against it.
+inline constexpr double kReproductionWallTargetS = 150.0;
+
+/// This project's target for the reproduction's wall time: within kReproductionWallTargetS (one measurement: judged
+/// on its value).
 Claim wall_time_target(double wall_s);
 
 /// The cases a claim or target above is measured from, by its id; nullopt for an id that is not one of them (or

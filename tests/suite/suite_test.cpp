@@ -55,7 +55,7 @@ TEST(ShippedSuites, Paper) {
   EXPECT_DOUBLE_EQ(s.world.dt, 1.0 / 60.0);
   EXPECT_EQ(s.steps, 400);
   EXPECT_EQ(s.warmup_steps, 120);
-  EXPECT_EQ(s.repetitions, 5);  // 7 took up to 103 s in slow hours, too near the 120 s target (docs/methodology.md)
+  EXPECT_EQ(s.repetitions, 5);  // 7 took up to 103 s in slow hours, too near the reproduction's wall-time target (docs/methodology.md)
   EXPECT_EQ(s.solver.piterations, 2);
   EXPECT_EQ(s.tcsb.blend_steps, 4);
   EXPECT_TRUE(s.feedback.parallel) << "the paper evaluates its TreeCut in parallel (section 5)";
@@ -102,7 +102,7 @@ TEST(ShippedSuites, FidelityIsThePaperSuiteWithTheFidelityPass) {
   EXPECT_EQ(f.fidelity.pareto_targets, (std::vector<double>{0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0}));
   EXPECT_EQ(f.fidelity.rms_threshold_pct, 1.0);
   // The reproduction shows the error beside Table 2 but leaves the ablations and the sweep to `tcsb run fidelity`,
-  // which keeps `tcsb reproduce` well inside its 120 s.
+  // which keeps `tcsb reproduce` well inside its wall-time target.
   EXPECT_TRUE(p.fidelity.enabled);
   EXPECT_FALSE(p.fidelity.ablations);
   EXPECT_TRUE(p.fidelity.pareto_targets.empty());
