@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "harness/fidelity_subject.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/plain_softbody.h"
 
@@ -48,7 +49,7 @@ int node_budget(const Net& net, double compression) {
 }
 
 int target_node_count(const Net& net, const CaseKey& key) {
-  if (key.method != Method::kTcsb || !key.compression) return 0;
+  if ((key.method != Method::kTcsb && key.method != Method::kPlainEqual) || !key.compression) return 0;
   return node_budget(net, *key.compression);
 }
 
@@ -57,6 +58,12 @@ std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key,
   switch (key.method) {
     case Method::kPlain: return std::make_unique<StockBody>(make_plain_softbody(world, *net, suite.solver));
     case Method::kBulletPatch: return std::make_unique<StockBody>(make_bullet_patch(world, *net, suite.solver));
+    case Method::kPlainEqual: {
+      // The fidelity pass's uniform grid (coarse_net_spec): sized by the budget, not by TC-SB's measured mean node
+      // count, which is known only after TC-SB ran (it holds the budget, blends included, so it stays at most that).
+      const Net coarse(coarse_net_spec(net->spec(), target_node_count(*net, key)));
+      return std::make_unique<StockBody>(make_plain_softbody(world, coarse, suite.solver));
+    }
     case Method::kTcsb: {
       const int target = target_node_count(*net, key);
       auto body = std::make_unique<TcSoftBody>(world, net, suite.solver, suite.tcsb);

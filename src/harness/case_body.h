@@ -36,7 +36,7 @@ class CaseBody {
 /// alike.
 int node_budget(const Net& net, double compression);
 
-/// Node budget of a TC-SB case (node_budget), 0 for other methods.
+/// Node budget of a TC-SB or plain_equal case (node_budget), 0 for other methods.
 int target_node_count(const Net& net, const CaseKey& key);
 
 /// Builds the body for a case. `seed` drives any random choices (same seed, same run).

@@ -53,7 +53,7 @@ struct CaseResult {
   std::string net_name;
   std::int64_t net_nodes = 0;  ///< grid nodes of the net (the finest level)
   std::int64_t net_links = 0;
-  int target_nodes = 0;       ///< TC-SB node budget (0 for other methods)
+  int target_nodes = 0;       ///< node budget of a TC-SB or plain_equal case (0 for other methods)
   std::string status = "ok";  ///< "ok" when every repetition is ok, else "diverged"
   std::vector<RepetitionResult> repetitions;
   Summary step_ms;  ///< over the ok repetitions' mean step times

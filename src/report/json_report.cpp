@@ -160,6 +160,9 @@ ojson table2_json(const RunResult& result) {
                     {"node_ratio", json_number(r.node_ratio)},
                     {"nets", r.nets},
                     {"status", r.status}});
+    // Optional: present only in runs with plain_equal cases (results written before it existed lack it).
+    if (r.time_ratio_vs_equal_plain)
+      rows.back()["time_ratio_vs_equal_plain"] = json_number(r.time_ratio_vs_equal_plain);
   }
   return rows;
 }

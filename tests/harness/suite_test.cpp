@@ -185,6 +185,16 @@ TEST(SuiteParse, MethodNames) {
   EXPECT_STREQ(method_name(Method::kPlain), "plain");
   EXPECT_STREQ(method_name(Method::kBulletPatch), "bullet_patch");
   EXPECT_STREQ(method_name(Method::kTcsb), "tcsb");
+  EXPECT_STREQ(method_name(Method::kPlainEqual), "plain_equal");
+}
+
+TEST(SuiteParse, PlainEqualTakesCompressionTargetsWithoutTcsb) {
+  json j = minimal();
+  j["methods"] = {"plain", "plain_equal"};
+  j["compression"] = {1.0, 0.3};
+  const Suite s = parse_suite_text(j.dump(), "equal.json");
+  EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kPlainEqual}));
+  EXPECT_EQ(s.compression, (std::vector<double>{1.0, 0.3}));
 }
 
 // ---- rejections ---------------------------------------------------------------------------------------------
@@ -437,6 +447,17 @@ TEST(SuiteReject, Compression) {
       "compression[1]");
   const std::string msg = rejected_edit([](json& j) { j["compression"] = {0.5}; }, "compression");
   EXPECT_NE(msg.find("tcsb"), std::string::npos) << msg;
+}
+
+TEST(SuiteReject, PlainEqualNeedsATargetBelowOne) {
+  rejected_edit([](json& j) { j["methods"] = {"plain", "plain_equal"}; }, "compression");
+  const std::string msg = rejected_edit(
+      [](json& j) {
+        j["methods"] = {"plain", "tcsb", "plain_equal"};
+        j["compression"] = {1.0};
+      },
+      "methods[2]");
+  EXPECT_NE(msg.find("below 1"), std::string::npos) << msg;
 }
 
 TEST(SuiteReject, BulletPatchNeedsStructuralOnlyNets) {
