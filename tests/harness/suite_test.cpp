@@ -38,7 +38,7 @@ TEST(ShippedSuites, Paper) {
   EXPECT_EQ(s.path, path);
   EXPECT_EQ(s.sha256, sha256_hex(read_bytes(path)));
   ASSERT_EQ(s.nets.size(), 5u);
-  EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kTcsb}));
+  EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kTcsb, Method::kPlainEqual}));
   EXPECT_EQ(s.compression, (std::vector<double>{1.0, 0.75, 0.3}));
   double total = 0;
   for (const NetSpec& n : s.nets) {
@@ -114,7 +114,7 @@ TEST(ShippedSuites, Scaling) {
   ASSERT_GE(s.nets.size(), 6u);
   EXPECT_LE(s.nets.front().node_count(), 1500);
   EXPECT_GE(s.nets.back().node_count(), 1000000);
-  EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kTcsb}));
+  EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kTcsb, Method::kPlainEqual}));
   EXPECT_EQ(s.compression, (std::vector<double>{0.3}));
   EXPECT_EQ(s.solver.piterations, 4);
   // A million-node net with both bodies alive needs gigabytes, not megabytes nor terabytes.
