@@ -29,7 +29,8 @@ std::vector<std::size_t> cases_in_scope(const RunResult& result, const ClaimScop
   };
   const auto selected = [&](const CaseKey& key) {
     if (key.method == Method::kPlain) return scope.plain;
-    if (key.method == Method::kPlainEqual) return key.compression && at_one_of(scope.equal_plain_targets, *key.compression);
+    if (key.method == Method::kPlainEqual)
+      return key.compression && at_one_of(scope.equal_plain_targets, *key.compression);
     if (key.method != Method::kTcsb || !key.compression) return false;
     if (scope.every_tcsb) return true;
     return at_one_of(scope.tcsb_targets, *key.compression);

@@ -36,7 +36,9 @@ constexpr double kEqualPlainTarget = 1.10;
 constexpr const char* kEqualPlainPrefix = "target_";
 constexpr const char* kEqualPlainSuffix = "_vs_equal_plain";
 
-std::string equal_plain_id(double target) { return kEqualPlainPrefix + compression_percent(target) + kEqualPlainSuffix; }
+std::string equal_plain_id(double target) {
+  return kEqualPlainPrefix + compression_percent(target) + kEqualPlainSuffix;
+}
 
 /// A claim measured from the repetitions (judged on its interval).
 Claim repeated(std::string id, std::string description, Comparison c, double expected, double tolerance,

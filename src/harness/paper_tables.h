@@ -27,7 +27,7 @@ struct Table2Row {
   /// TC-SB rows: mean ms / the mean ms of plain_equal at the same target, over the nets both have ok — what TC-SB
   /// costs against a static body of (about) the node count it simulates. nullopt without plain_equal cases.
   std::optional<double> time_ratio_vs_equal_plain;
-  int nets = 0;                               ///< ok cases averaged (one per net)
+  int nets = 0;               ///< ok cases averaged (one per net)
   std::string status = "ok";  ///< "ok", "partial" (some nets diverged, left out) or "diverged" (none ok)
 };
 

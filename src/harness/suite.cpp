@@ -177,12 +177,11 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
 
   const json& methods = r.array(root.need("methods"), "methods");
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    const Method m =
-        r.choice<Method>(methods[i], index_path("methods", i),
-                         {{"plain", Method::kPlain},
-                          {"bullet_patch", Method::kBulletPatch},
-                          {"tcsb", Method::kTcsb},
-                          {"plain_equal", Method::kPlainEqual}});
+    const Method m = r.choice<Method>(methods[i], index_path("methods", i),
+                                      {{"plain", Method::kPlain},
+                                       {"bullet_patch", Method::kBulletPatch},
+                                       {"tcsb", Method::kTcsb},
+                                       {"plain_equal", Method::kPlainEqual}});
     if (std::find(s.methods.begin(), s.methods.end(), m) != s.methods.end()) {
       r.fail(index_path("methods", i), "duplicate method \"" + std::string(method_name(m)) + "\"");
     }
@@ -191,7 +190,8 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   const bool has_tcsb = std::find(s.methods.begin(), s.methods.end(), Method::kTcsb) != s.methods.end();
   const bool has_equal = std::find(s.methods.begin(), s.methods.end(), Method::kPlainEqual) != s.methods.end();
   if (const json* compression = root.find("compression", has_tcsb || has_equal)) {
-    if (!has_tcsb && !has_equal) r.fail("compression", "only allowed when methods contains \"tcsb\" or \"plain_equal\"");
+    if (!has_tcsb && !has_equal)
+      r.fail("compression", "only allowed when methods contains \"tcsb\" or \"plain_equal\"");
     r.array(*compression, "compression");
     for (std::size_t i = 0; i < compression->size(); ++i) {
       const double c = r.number((*compression)[i], index_path("compression", i), kFraction);

@@ -46,7 +46,7 @@ struct Suite {
   std::filesystem::path path;  ///< where it was read from
   std::string sha256;          ///< SHA-256 of the file's bytes
   std::vector<NetSpec> nets;
-  std::vector<Method> methods;      ///< in the order repetitions interleave them
+  std::vector<Method> methods;  ///< in the order repetitions interleave them
   /// TC-SB (and plain_equal) node budgets as fractions of the initial count; 1.0 = none.
   std::vector<double> compression;
   WorldSettings world;

@@ -26,8 +26,8 @@ using Align = TextTable::Align;
 std::string paper_label(const Table2Row& row) { return row.method == "plain" ? "-" : row.compression_label; }
 
 const PaperTable2Row* paper_row(const PaperReference& paper, const Table2Row& row) {
-  if (row.method != "plain" && row.method != "tcsb") return nullptr;  // the paper ran neither CreatePatch nor a
-                                                                      // static body of TC-SB's node count
+  // The paper ran neither CreatePatch nor a static body of TC-SB's node count.
+  if (row.method != "plain" && row.method != "tcsb") return nullptr;
   const std::string method = row.method == "plain" ? "Bullet SoftBody" : "TC-SB";
   for (const PaperTable2Row& p : paper.table2)
     if (p.method == method && p.compression == paper_label(row)) return &p;
@@ -290,9 +290,10 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
                                          {"paper ratio"},
                                          {"ours ratio"}};
   const std::vector<Table2Row> rows = table2(result);
-  const bool equal_plain = std::any_of(rows.begin(), rows.end(),
-                                       [](const Table2Row& r) { return r.time_ratio_vs_equal_plain.has_value(); });
-  if (equal_plain) columns.push_back({"ours/equal"});  // beyond the paper: against a static body of equal nodes
+  const bool equal_plain =
+      std::any_of(rows.begin(), rows.end(), [](const Table2Row& r) { return r.time_ratio_vs_equal_plain.has_value(); });
+  // Beyond the paper: TC-SB against a static body of the nodes it simulates.
+  if (equal_plain) columns.push_back({"ours/equal"});
   if (result.fidelity) {  // the paper reports no error; ours, beside the speed it buys
     columns.push_back({"RMS %"});
     columns.push_back({"max %"});

@@ -29,8 +29,8 @@ TEST(ClaimScope, PlainEqualCasesOnlyAtTheNamedTargets) {
 }
 
 TEST(ClaimScope, MergedUnitesEqualPlainTargets) {
-  const ClaimScope m = merged(ClaimScope{.equal_plain_targets = {0.3}},
-                              ClaimScope{.equal_plain_targets = {0.75, 0.3 + 1e-12}});
+  const ClaimScope m =
+      merged(ClaimScope{.equal_plain_targets = {0.3}}, ClaimScope{.equal_plain_targets = {0.75, 0.3 + 1e-12}});
   EXPECT_EQ(m.equal_plain_targets.size(), 2u);
   EXPECT_EQ(cases_in_scope(one_net(), m), (std::vector<std::size_t>{3, 4}));
 }
