@@ -16,6 +16,14 @@
 
 namespace tcsb {
 
+/// The phases of a TC-SB step as its body timed them, milliseconds (operations included where they ran: end
+/// operations in the blends, begun ones in the feedback stage).
+struct StepPhases {
+  double blends_ms = 0;    ///< advance_blends()
+  double feedback_ms = 0;  ///< the controller before and after Bullet's step
+  double bullet_ms = 0;    ///< simulate_step()
+};
+
 /// A body being simulated for a case, with whatever drives it.
 class CaseBody {
  public:
@@ -28,6 +36,8 @@ class CaseBody {
   virtual int interpolations() const { return 0; }
   /// Feedback cost of the last step (zero for stock bodies).
   virtual FeedbackCost feedback_cost() const { return {}; }
+  /// The phases of the last step, for a body that has them (TC-SB); a stock body's step is all Bullet's.
+  virtual const StepPhases* phases() const { return nullptr; }
   /// The TC-SB body, if this is one.
   virtual TcSoftBody* tc() { return nullptr; }
 };
@@ -36,7 +46,7 @@ class CaseBody {
 /// alike.
 int node_budget(const Net& net, double compression);
 
-/// Node budget of a TC-SB case (node_budget), 0 for other methods.
+/// Node budget of a TC-SB or plain_equal case (node_budget), 0 for other methods.
 int target_node_count(const Net& net, const CaseKey& key);
 
 /// Builds the body for a case. `seed` drives any random choices (same seed, same run).

@@ -16,8 +16,15 @@ namespace {
 /// Budgets given on the command line replace the suite's, checked like the suite's own (exit 2 when wrong).
 void apply_budget_overrides(const RunArgs& args, Suite& suite) {
   if (!args.compression.empty()) {
-    if (std::find(suite.methods.begin(), suite.methods.end(), Method::kTcsb) == suite.methods.end())
-      throw UsageError("--compression: the suite runs no tcsb method");
+    const auto runs = [&suite](Method m) {
+      return std::find(suite.methods.begin(), suite.methods.end(), m) != suite.methods.end();
+    };
+    if (!runs(Method::kTcsb) && !runs(Method::kPlainEqual))
+      throw UsageError("--compression: the suite runs neither tcsb nor plain_equal");
+    // plain_equal runs one case per budget below 1: without one it would silently run nothing.
+    if (runs(Method::kPlainEqual) &&
+        std::none_of(args.compression.begin(), args.compression.end(), [](double c) { return c < 1.0; }))
+      throw UsageError("--compression: the suite runs plain_equal, which needs a budget below 1");
     for (std::size_t i = 0; i < args.compression.size(); ++i) {
       const double c = checked_budget(args.compression[i]);
       if (std::find(args.compression.begin(), args.compression.begin() + static_cast<std::ptrdiff_t>(i), c) !=

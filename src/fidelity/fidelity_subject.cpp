@@ -199,17 +199,6 @@ class SwitchSubject final : public FidelitySubject {
 
 int subject_budget(const Net& net, const FidelitySubjectSpec& spec) { return node_budget(net, spec.compression); }
 
-NetSpec coarse_net_spec(const NetSpec& fine, int budget) {
-  const CoarseGrid g = coarse_grid_for(fine.width, fine.height, budget);
-  NetSpec coarse = fine;
-  coarse.name = fine.name + "/coarse";
-  coarse.width = g.width;
-  coarse.height = g.height;
-  coarse.mass_mode = MassMode::kTotal;  // the same cloth: the total mass is kept, not the mass per node
-  coarse.mass = fine.node_mass() * static_cast<double>(fine.node_count());
-  return coarse;
-}
-
 std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const FidelitySubjectSpec& spec,
                                                        SoftBodyWorld& world, std::shared_ptr<const Net> net,
                                                        std::uint64_t seed, const FidelitySubject* pace,

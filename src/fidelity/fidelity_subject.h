@@ -71,8 +71,4 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
 /// The node budget of a subject on a net: round(compression x grid nodes).
 int subject_budget(const Net& net, const FidelitySubjectSpec& spec);
 
-/// The spec of the uniform coarse net for a budget: coarse_grid_for() nodes, the same physical size, elevation,
-/// pinned corners and total mass.
-NetSpec coarse_net_spec(const NetSpec& fine, int budget);
-
 }  // namespace tcsb

@@ -12,21 +12,28 @@ ClaimScope merged(const ClaimScope& a, const ClaimScope& b) {
   m.plain = a.plain || b.plain;
   m.every_tcsb = a.every_tcsb || b.every_tcsb;
   m.operations = a.operations || b.operations;
-  for (const double t : b.tcsb_targets) {
-    const bool known =
-        std::any_of(m.tcsb_targets.begin(), m.tcsb_targets.end(), [&](double x) { return same_compression(x, t); });
-    if (!known) m.tcsb_targets.push_back(t);
-  }
+  const auto add = [](std::vector<double>& into, const std::vector<double>& from) {
+    for (const double t : from) {
+      const bool known = std::any_of(into.begin(), into.end(), [&](double x) { return same_compression(x, t); });
+      if (!known) into.push_back(t);
+    }
+  };
+  add(m.tcsb_targets, b.tcsb_targets);
+  add(m.equal_plain_targets, b.equal_plain_targets);
   return m;
 }
 
 std::vector<std::size_t> cases_in_scope(const RunResult& result, const ClaimScope& scope) {
+  const auto at_one_of = [](const std::vector<double>& targets, double c) {
+    return std::any_of(targets.begin(), targets.end(), [&](double t) { return same_compression(t, c); });
+  };
   const auto selected = [&](const CaseKey& key) {
     if (key.method == Method::kPlain) return scope.plain;
+    if (key.method == Method::kPlainEqual)
+      return key.compression && at_one_of(scope.equal_plain_targets, *key.compression);
     if (key.method != Method::kTcsb || !key.compression) return false;
     if (scope.every_tcsb) return true;
-    return std::any_of(scope.tcsb_targets.begin(), scope.tcsb_targets.end(),
-                       [&](double t) { return same_compression(t, *key.compression); });
+    return at_one_of(scope.tcsb_targets, *key.compression);
   };
   std::set<std::size_t> nets_with_tcsb;
   for (const CaseResult& c : result.cases)

@@ -11,10 +11,12 @@ namespace tcsb {
 
 /// The cases behind a claim, on every net of the suite (the paper's claims average or fit over the whole test set).
 struct ClaimScope {
-  bool plain = false;                ///< plain Bullet's cases (the baseline of a ratio)
-  std::vector<double> tcsb_targets;  ///< TC-SB cases at these compression targets
-  bool every_tcsb = false;           ///< every TC-SB case, whatever its target (fits over the test set, Table 1)
-  bool operations = false;           ///< the operation samples of those TC-SB cases (Table 1)
+  bool plain = false;                     ///< plain Bullet's cases (the baseline of a ratio)
+  std::vector<double> tcsb_targets = {};  ///< TC-SB cases at these compression targets
+  bool every_tcsb = false;                ///< every TC-SB case, whatever its target (fits over the test set, Table 1)
+  bool operations = false;                ///< the operation samples of those TC-SB cases (Table 1)
+  /// plain_equal cases at these compression targets (the project's equal-node-count targets).
+  std::vector<double> equal_plain_targets = {};
 };
 
 /// The union of two scopes.

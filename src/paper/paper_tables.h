@@ -17,14 +17,17 @@ namespace tcsb {
 
 /// One row of Table 2: a (method, compression) group averaged over its nets.
 struct Table2Row {
-  std::string method;                         ///< "plain", "bullet_patch" or "tcsb"
-  std::optional<double> compression;          ///< TC-SB target; nullopt for the other methods
+  std::string method;                         ///< "plain", "bullet_patch", "tcsb" or "plain_equal"
+  std::optional<double> compression;          ///< TC-SB or plain_equal target; nullopt for the other methods
   std::string compression_label;              ///< "-", "NoCompression" (1.0) or a percentage such as "75%"
   std::optional<double> N, L, I;              ///< mean over the group's ok cases of mean nodes / links / interpolations
   std::optional<double> total_ms;             ///< mean over the group's ok cases of the median step time
   std::optional<double> time_ratio_vs_plain;  ///< mean ms / plain mean ms over the nets both have ok
   std::optional<double> node_ratio;           ///< N / plain N over the nets both have ok
-  int nets = 0;                               ///< ok cases averaged (one per net)
+  /// TC-SB rows: mean ms / the mean ms of plain_equal at the same target, over the nets both have ok — what TC-SB
+  /// costs against a static body of (about) the node count it simulates. nullopt without plain_equal cases.
+  std::optional<double> time_ratio_vs_equal_plain;
+  int nets = 0;               ///< ok cases averaged (one per net)
   std::string status = "ok";  ///< "ok", "partial" (some nets diverged, left out) or "diverged" (none ok)
 };
 

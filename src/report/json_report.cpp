@@ -121,6 +121,11 @@ ojson case_json(const RunResult& result, std::size_t index) {
       {"mean_feedback_total_ms", json_number(c.mean_feedback_total_ms)},
       {"step_ms", summary_json(c.step_ms)},
       {"ratio_vs_plain", json_number(ratio)},
+      {"step_breakdown_ms",
+       {{"bullet", json_number(c.breakdown.bullet_ms)},
+        {"feedback", json_number(c.breakdown.feedback_ms)},
+        {"operations", json_number(c.breakdown.operations_ms)},
+        {"blending", json_number(c.breakdown.blending_ms)}}},
       {"repetitions", std::move(reps)},
   };
   // Only TC-SB has TreeCut operations; the key stays absent elsewhere (and in results written before it existed).
@@ -160,6 +165,9 @@ ojson table2_json(const RunResult& result) {
                     {"node_ratio", json_number(r.node_ratio)},
                     {"nets", r.nets},
                     {"status", r.status}});
+    // Optional: present only in runs with plain_equal cases (results written before it existed lack it).
+    if (r.time_ratio_vs_equal_plain)
+      rows.back()["time_ratio_vs_equal_plain"] = json_number(r.time_ratio_vs_equal_plain);
   }
   return rows;
 }

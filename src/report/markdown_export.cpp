@@ -280,6 +280,10 @@ std::string table2_section(const ojson& doc) {
   add("paper ms", "total_ms", field(with_paper ? "ours ms" : "ms", "total_ms"));
   add("paper ratio", "time_ratio_vs_plain", field(with_paper ? "ours ratio" : "ratio", "time_ratio_vs_plain"));
   columns.push_back(field("node ratio", "node_ratio"));
+  // Only in runs with plain_equal cases: TC-SB against a static body of the nodes it simulates.
+  const bool with_equal =
+      any_cell(rows, [](const ojson& row) { return text_of(at(row, "time_ratio_vs_equal_plain")); });
+  if (with_equal) columns.push_back(field("ratio to equal plain", "time_ratio_vs_equal_plain"));
   columns.push_back(field("nets", "nets"));
   columns.push_back(field("status", "status"));
   const bool with_error = any_cell(rows, error("rms_pct"));
@@ -295,6 +299,9 @@ std::string table2_section(const ojson& doc) {
     const std::string hardware = text_of(at(reproduction, "paper_hardware"));
     out += " Paper" + (hardware.empty() ? std::string() : " (" + hardware + ")") + " beside ours.";
   }
+  if (with_equal)
+    out += " Ratio to equal plain: TC-SB's step time to plain_equal's, a static plain grid of the budget's node count, "
+           "same run.";
   if (with_error)
     out += " RMS: error against full-resolution plain Bullet in % of the net's extent, mean over steps and nets; "
            "max and pop: max over steps and nets.";

@@ -26,7 +26,8 @@ using Align = TextTable::Align;
 std::string paper_label(const Table2Row& row) { return row.method == "plain" ? "-" : row.compression_label; }
 
 const PaperTable2Row* paper_row(const PaperReference& paper, const Table2Row& row) {
-  if (row.method == "bullet_patch") return nullptr;
+  // The paper ran neither CreatePatch nor a static body of TC-SB's node count.
+  if (row.method != "plain" && row.method != "tcsb") return nullptr;
   const std::string method = row.method == "plain" ? "Bullet SoftBody" : "TC-SB";
   for (const PaperTable2Row& p : paper.table2)
     if (p.method == method && p.compression == paper_label(row)) return &p;
@@ -210,6 +211,8 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
                     {"total_ms", json_number(row.total_ms)},
                     {"time_ratio_vs_plain", json_number(row.time_ratio_vs_plain)},
                     {"node_ratio", json_number(row.node_ratio)}}}});
+    if (row.time_ratio_vs_equal_plain)  // only in runs with plain_equal cases
+      t2.back()["ours"]["time_ratio_vs_equal_plain"] = json_number(row.time_ratio_vs_equal_plain);
     // What the speed costs, from the fidelity pass (the `fidelity` section has every statistic).
     nlohmann::ordered_json error = nullptr;
     if (const FidelityRow* f = fidelity_row(fidelity, row))
@@ -286,13 +289,18 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
                                          {"ours ms"},
                                          {"paper ratio"},
                                          {"ours ratio"}};
+  const std::vector<Table2Row> rows = table2(result);
+  const bool equal_plain =
+      std::any_of(rows.begin(), rows.end(), [](const Table2Row& r) { return r.time_ratio_vs_equal_plain.has_value(); });
+  // Beyond the paper: TC-SB against a static body of the nodes it simulates.
+  if (equal_plain) columns.push_back({"ours/equal"});
   if (result.fidelity) {  // the paper reports no error; ours, beside the speed it buys
     columns.push_back({"RMS %"});
     columns.push_back({"max %"});
     columns.push_back({"pop max %"});
   }
   TextTable t2(columns);
-  for (const Table2Row& row : table2(result)) {
+  for (const Table2Row& row : rows) {
     const PaperTable2Row* p = paper_row(reproduction.paper, row);
     const auto pv = [&](double x) { return p ? std::optional(x) : std::nullopt; };
     std::optional<double> paper_ratio;
@@ -309,6 +317,7 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
                                    general(row.total_ms, 4),
                                    fixed(paper_ratio, 3),
                                    fixed(row.time_ratio_vs_plain, 3)};
+    if (equal_plain) cells.push_back(fixed(row.time_ratio_vs_equal_plain, 3));
     if (const FidelityRow* f = fidelity_row(fidelity, row)) {
       cells.push_back(fixed(f->rms_pct.mean, 3));
       cells.push_back(fixed(f->max_pct.max, 3));
@@ -317,6 +326,8 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
     t2.add_row(std::move(cells));
   }
   out << "Table 2 beside the paper's (paper: " << reproduction.paper.hardware << "; ratios are to plain Bullet";
+  if (equal_plain)
+    out << "; ours/equal: TC-SB's time over plain_equal's, a static plain grid of the budget's node count, same run";
   if (result.fidelity)
     out << "; RMS: error against full-resolution plain Bullet in % of the net's extent, mean over steps and nets; "
            "max and pop: max over steps and nets";

@@ -7,6 +7,7 @@ namespace tcsb {
 void summarize_case(CaseResult& c) {
   c.status = "ok";
   std::vector<double> means, nodes, links, interps, feedback, feedback_total;
+  std::vector<double> bullet, feedback_only, operations, blending;
   for (const RepetitionResult& r : c.repetitions) {
     if (r.status != "ok") {
       c.status = "diverged";
@@ -18,6 +19,10 @@ void summarize_case(CaseResult& c) {
     interps.push_back(r.mean_interpolations);
     feedback.push_back(r.mean_feedback_ms);
     feedback_total.push_back(r.mean_feedback_total_ms);
+    bullet.push_back(r.breakdown.bullet_ms);
+    feedback_only.push_back(r.breakdown.feedback_ms);
+    operations.push_back(r.breakdown.operations_ms);
+    blending.push_back(r.breakdown.blending_ms);
   }
   c.step_ms = summarize(means);
   c.mean_nodes = mean_of(nodes);
@@ -25,6 +30,7 @@ void summarize_case(CaseResult& c) {
   c.mean_interpolations = mean_of(interps);
   c.mean_feedback_ms = mean_of(feedback);
   c.mean_feedback_total_ms = mean_of(feedback_total);
+  c.breakdown = {median(bullet), median(feedback_only), median(operations), median(blending)};
 }
 
 }  // namespace tcsb

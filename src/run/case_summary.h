@@ -18,7 +18,8 @@ double mean_of(const std::vector<T>& values) {
   return sum / static_cast<double>(values.size());
 }
 
-/// Fills c.step_ms (over the ok repetitions' mean step times), the mean N, L, I and feedback costs, and marks the
+/// Fills c.step_ms (over the ok repetitions' mean step times), the mean N, L, I and feedback costs, the median
+/// step breakdown, and marks the
 /// case "diverged" when any repetition is not ok (its numbers are left out, never averaged in).
 void summarize_case(CaseResult& c);
 

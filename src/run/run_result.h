@@ -26,6 +26,16 @@ struct StepSeries {
   std::vector<double> feedback_total_ms;     ///< feedback work including what ran on worker threads (TC-SB only)
 };
 
+/// Where a step's time goes, milliseconds per step. The parts are disjoint; what they leave of the whole step is
+/// the clock reads and calls between them. A stock body's step is all Bullet's.
+struct StepBreakdown {
+  double bullet_ms = 0;      ///< Bullet's step (predictMotion, solveConstraints, integrateMotion)
+  double feedback_ms = 0;    ///< the feedback stage on the simulation thread (waiting for a worker included),
+                             ///< the operations it begins excluded
+  double operations_ms = 0;  ///< the TreeCut operations begun and ended in the step (their own timers, OpSample)
+  double blending_ms = 0;    ///< advancing the blends (link weights, mass hand-over), the end operations excluded
+};
+
 /// One repetition of one case: a fresh body, warm-up, then timed steps.
 struct RepetitionResult {
   int repetition = 0;
@@ -36,6 +46,7 @@ struct RepetitionResult {
   double mean_step_ms = 0, median_step_ms = 0;
   double mean_nodes = 0, mean_links = 0, mean_interpolations = 0;
   double mean_feedback_ms = 0, mean_feedback_total_ms = 0;
+  StepBreakdown breakdown;       ///< means over the timed steps
   std::int64_t operations = 0;   ///< operations begun or ended during timed steps
   std::string final_state_hash;  ///< FNV-1a of node count and final positions: deterministic, gateable
   double build_ms = 0;           ///< building the body (not part of step times)
@@ -53,12 +64,13 @@ struct CaseResult {
   std::string net_name;
   std::int64_t net_nodes = 0;  ///< grid nodes of the net (the finest level)
   std::int64_t net_links = 0;
-  int target_nodes = 0;       ///< TC-SB node budget (0 for other methods)
+  int target_nodes = 0;       ///< node budget of a TC-SB or plain_equal case (0 for other methods)
   std::string status = "ok";  ///< "ok" when every repetition is ok, else "diverged"
   std::vector<RepetitionResult> repetitions;
   Summary step_ms;  ///< over the ok repetitions' mean step times
   double mean_nodes = 0, mean_links = 0, mean_interpolations = 0;
   double mean_feedback_ms = 0, mean_feedback_total_ms = 0;
+  StepBreakdown breakdown;  ///< each part's median over the ok repetitions' means (medians: the parts need not add up)
   OpRecord ops;
 };
 

@@ -58,6 +58,27 @@ Divergence first_divergence(const Suite& suite, const CaseKey& key, const std::s
   return found;
 }
 
+/// Adds one timed step to `sum`: the body's phases with the operations of the step (samples from `first` on) taken
+/// out of the phase they ran in — begun ones (refine, coarse) out of the feedback stage, which begins them, ended
+/// ones out of the blends, which end them. Without phases (a stock body) the whole step is Bullet's.
+void add_step_breakdown(double step_ms, const StepPhases* phases, const std::vector<OpSample>& samples,
+                        std::size_t first, StepBreakdown& sum) {
+  if (!phases) {
+    sum.bullet_ms += step_ms;
+    return;
+  }
+  double begun_ms = 0, ended_ms = 0;
+  for (std::size_t i = first; i < samples.size(); ++i) {
+    const double ms = (static_cast<double>(samples[i].node_ns) + static_cast<double>(samples[i].link_ns)) / 1e6;
+    const bool begins = samples[i].kind == OpKind::kRefine || samples[i].kind == OpKind::kCoarse;
+    (begins ? begun_ms : ended_ms) += ms;
+  }
+  sum.bullet_ms += phases->bullet_ms;
+  sum.feedback_ms += phases->feedback_ms - begun_ms;
+  sum.operations_ms += begun_ms + ended_ms;
+  sum.blending_ms += phases->blends_ms - ended_ms;
+}
+
 RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repetition,
                                 const std::shared_ptr<const Net>& net, std::uint64_t seed,
                                 std::vector<OpSample>& op_samples) {
@@ -80,10 +101,12 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
     v->reserve(timed_steps);
   for (std::vector<std::int32_t>* v : {&series.nodes, &series.links, &series.interpolations}) v->reserve(timed_steps);
   const std::size_t ops_before = op_samples.size();
+  StepBreakdown sum;  // over the timed steps
 
   for (int s = 0; s < total; ++s) {
     const bool timed = s >= suite.warmup_steps;
     recorder.recording = timed;
+    const std::size_t ops_at_step = op_samples.size();
     const StepClock::time_point t0 = StepClock::now();
     body->step(dt);
     const StepClock::time_point t1 = StepClock::now();
@@ -96,6 +119,7 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
       const FeedbackCost cost = body->feedback_cost();
       series.feedback_ms.push_back(cost.critical_ms);
       series.feedback_total_ms.push_back(cost.total_ms);
+      add_step_breakdown(series.step_ms.back(), body->phases(), op_samples, ops_at_step, sum);
     }
     const std::optional<std::string> diverged = divergence_after_step(b, net->extent(), s, total);  // untimed
     if (diverged) {
@@ -120,6 +144,11 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
   rep.mean_interpolations = mean_of(series.interpolations);
   rep.mean_feedback_ms = mean_of(series.feedback_ms);
   rep.mean_feedback_total_ms = mean_of(series.feedback_total_ms);
+  if (!series.step_ms.empty()) {
+    const double steps = static_cast<double>(series.step_ms.size());
+    rep.breakdown = {sum.bullet_ms / steps, sum.feedback_ms / steps, sum.operations_ms / steps,
+                     sum.blending_ms / steps};
+  }
   return rep;
 }
 

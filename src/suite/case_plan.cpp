@@ -12,6 +12,9 @@ std::vector<CaseKey> expand_cases(const Suite& suite) {
     for (const Method method : suite.methods) {
       if (method == Method::kTcsb) {
         for (const double target : suite.compression) cases.push_back({net, method, target});
+      } else if (method == Method::kPlainEqual) {
+        for (const double target : suite.compression)
+          if (target < 1.0) cases.push_back({net, method, target});
       } else {
         cases.push_back({net, method, std::nullopt});
       }

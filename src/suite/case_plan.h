@@ -16,11 +16,13 @@ namespace tcsb {
 struct CaseKey {
   std::size_t net = 0;  ///< index into Suite::nets
   Method method = Method::kPlain;
-  std::optional<double> compression;  ///< TC-SB node budget as a fraction of the initial count; empty otherwise
+  /// Node budget as a fraction of the initial count: TC-SB's target, or the budget a plain_equal grid is sized to;
+  /// empty for the other methods.
+  std::optional<double> compression;
 };
 
 /// Per net, in suite order: each method in suite order; tcsb expands to one case per compression target (in suite
-/// order); plain and bullet_patch have no compression.
+/// order), plain_equal to one per target below 1 (in suite order); plain and bullet_patch have no compression.
 std::vector<CaseKey> expand_cases(const Suite& suite);
 
 /// One repetition of one case, in run order.
@@ -37,7 +39,7 @@ std::vector<PlannedRun> interleaved_plan(const Suite& suite, const std::vector<C
 /// The seed of a case, the same for each of its repetitions: suite.seed x 1000003 + the case's index.
 std::uint64_t case_seed(const Suite& suite, std::size_t case_index);
 
-/// A case's name in reports, e.g. "n65/plain", "n65/tcsb@0.75", "n65/tcsb@1.0".
+/// A case's name in reports, e.g. "n65/plain", "n65/tcsb@0.75", "n65/tcsb@1.0", "n65/plain_equal@0.3".
 std::string case_label(const Suite& suite, const CaseKey& key);
 
 }  // namespace tcsb

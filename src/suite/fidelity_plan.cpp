@@ -42,4 +42,15 @@ CoarseGrid coarse_grid_for(int width, int height, int nodes) {
   return g;
 }
 
+NetSpec coarse_net_spec(const NetSpec& fine, int budget) {
+  const CoarseGrid g = coarse_grid_for(fine.width, fine.height, budget);
+  NetSpec coarse = fine;
+  coarse.name = fine.name + "/coarse";
+  coarse.width = g.width;
+  coarse.height = g.height;
+  coarse.mass_mode = MassMode::kTotal;  // the same cloth: the total mass is kept, not the mass per node
+  coarse.mass = fine.node_mass() * static_cast<double>(fine.node_count());
+  return coarse;
+}
+
 }  // namespace tcsb

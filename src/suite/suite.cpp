@@ -146,6 +146,7 @@ const char* method_name(Method method) {
     case Method::kPlain: return "plain";
     case Method::kBulletPatch: return "bullet_patch";
     case Method::kTcsb: return "tcsb";
+    case Method::kPlainEqual: return "plain_equal";
   }
   return "unknown";
 }
@@ -176,17 +177,21 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
 
   const json& methods = r.array(root.need("methods"), "methods");
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    const Method m =
-        r.choice<Method>(methods[i], index_path("methods", i),
-                         {{"plain", Method::kPlain}, {"bullet_patch", Method::kBulletPatch}, {"tcsb", Method::kTcsb}});
+    const Method m = r.choice<Method>(methods[i], index_path("methods", i),
+                                      {{"plain", Method::kPlain},
+                                       {"bullet_patch", Method::kBulletPatch},
+                                       {"tcsb", Method::kTcsb},
+                                       {"plain_equal", Method::kPlainEqual}});
     if (std::find(s.methods.begin(), s.methods.end(), m) != s.methods.end()) {
       r.fail(index_path("methods", i), "duplicate method \"" + std::string(method_name(m)) + "\"");
     }
     s.methods.push_back(m);
   }
   const bool has_tcsb = std::find(s.methods.begin(), s.methods.end(), Method::kTcsb) != s.methods.end();
-  if (const json* compression = root.find("compression", has_tcsb)) {
-    if (!has_tcsb) r.fail("compression", "only allowed when methods contains \"tcsb\"");
+  const bool has_equal = std::find(s.methods.begin(), s.methods.end(), Method::kPlainEqual) != s.methods.end();
+  if (const json* compression = root.find("compression", has_tcsb || has_equal)) {
+    if (!has_tcsb && !has_equal)
+      r.fail("compression", "only allowed when methods contains \"tcsb\" or \"plain_equal\"");
     r.array(*compression, "compression");
     for (std::size_t i = 0; i < compression->size(); ++i) {
       const double c = r.number((*compression)[i], index_path("compression", i), kFraction);
@@ -195,6 +200,13 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
       }
       s.compression.push_back(c);
     }
+  }
+  // plain_equal is sized by the budgets below 1 (at 1 it would be the plain body): with none it would run nothing,
+  // and silently measuring nothing would look like a result.
+  if (has_equal && std::none_of(s.compression.begin(), s.compression.end(), [](double c) { return c < 1.0; })) {
+    const auto at = std::find(s.methods.begin(), s.methods.end(), Method::kPlainEqual) - s.methods.begin();
+    r.fail(index_path("methods", static_cast<std::size_t>(at)),
+           "plain_equal needs a compression target below 1 (it runs one case per such target)");
   }
 
   root.read("dt", s.world.dt, kFraction, true);

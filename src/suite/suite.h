@@ -23,6 +23,10 @@ enum class Method {
   kPlain,        ///< stock btSoftBody built from the net's finest level (the baseline)
   kBulletPatch,  ///< stock btSoftBodyHelpers::CreatePatch of the same grid (checks the baseline is not handicapped)
   kTcsb,         ///< the TreeCut soft body at each compression target
+  /// Stock btSoftBody of a uniform coarse grid holding about each compression target's node budget (the fidelity
+  /// pass's uniform grid: same size, total mass and pins), one case per target below 1: what a static body of the
+  /// node count TC-SB simulates costs, measured in the same interleaved repetitions.
+  kPlainEqual,
 };
 
 /// Fidelity measurement settings (reference run in lockstep, error metrics).
@@ -43,8 +47,9 @@ struct Suite {
   std::filesystem::path path;  ///< where it was read from
   std::string sha256;          ///< SHA-256 of the file's bytes
   std::vector<NetSpec> nets;
-  std::vector<Method> methods;      ///< in the order repetitions interleave them
-  std::vector<double> compression;  ///< TC-SB node budgets as fractions of the initial count; 1.0 = none
+  std::vector<Method> methods;  ///< in the order repetitions interleave them
+  /// TC-SB (and plain_equal) node budgets as fractions of the initial count; 1.0 = none.
+  std::vector<double> compression;
   WorldSettings world;
   int steps = 300;        ///< timed steps per repetition
   int warmup_steps = 30;  ///< untimed steps before them
@@ -67,7 +72,7 @@ Suite parse_suite(const std::filesystem::path& path, const SuiteAdjustment& adju
 /// Validates a suite given as JSON text; `file` names it in errors. The same checks as parse_suite.
 Suite parse_suite_text(const std::string& text, const std::string& file, const SuiteAdjustment& adjust = {});
 
-/// Name used in JSON for a method ("plain", "bullet_patch", "tcsb").
+/// Name used in JSON for a method ("plain", "bullet_patch", "tcsb", "plain_equal").
 const char* method_name(Method method);
 
 }  // namespace tcsb

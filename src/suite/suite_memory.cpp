@@ -48,6 +48,7 @@ double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
   for (const Method m : suite.methods) {
     switch (m) {
       case Method::kPlain: bytes += plain; break;
+      case Method::kPlainEqual: bytes += plain; break;  // a coarser grid of the same net: at most the plain body
       case Method::kBulletPatch: bytes += plain + 2.0 * (spec.width - 1) * (spec.height - 1) * kBulletFaceBytes; break;
       case Method::kTcsb:
         has_tcsb = true;

@@ -164,6 +164,24 @@ TEST_F(Cli, BudgetFlagsOverrideTheSuite) {
   EXPECT_TRUE(found);
 }
 
+TEST_F(Cli, CompressionFlagSizesPlainEqual) {
+  std::string suite = kTinySuite;
+  const std::string methods = R"("methods": ["plain", "tcsb"])";
+  suite.replace(suite.find(methods), methods.size(), R"("methods": ["plain", "tcsb", "plain_equal"])");
+  write_file(dir_ / "equal.json", suite);
+  const Outcome ok = tcsb("run equal.json --quiet --compression 0.4 --out out.json");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  const nlohmann::json j = nlohmann::json::parse(read_file(dir_ / "out.json"));
+  bool found = false;
+  for (const auto& c : j["cases"]) found |= c["label"] == "n9/plain_equal@0.4";
+  EXPECT_TRUE(found);
+  fs::remove(dir_ / "out.json");
+  const Outcome none = tcsb("run equal.json --quiet --compression 1.0 --out out.json");  // no budget below 1
+  EXPECT_EQ(none.exit_code, 2) << none.err;
+  EXPECT_EQ(count_lines(none.err), 1) << none.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.json"));
+}
+
 TEST_F(Cli, BadBudgetFlagsAreUsageErrors) {
   write_file(dir_ / "tiny.json", kTinySuite);
   for (const char* flags : {"--compression 0", "--compression 1.5", "--compression 0.5,0.5", "--max-step-ms=-1"}) {

@@ -158,6 +158,33 @@ TEST(PaperClaims, EveryRepeatedClaimAndTargetHasAScope) {
   EXPECT_TRUE(scope_of("op_time_refine")->operations);
 }
 
+TEST(ProjectTargets, EqualPlainTargetsOnlyWhenTheRunMeasuredPlainEqual) {
+  const std::vector<Table2Row> without = {tcsb_row(0.3, 0.33, 0.30), tcsb_row(0.75, 0.79, 0.75)};
+  for (const Claim& c : project_targets(without)) EXPECT_EQ(c.id.find("equal_plain"), std::string::npos) << c.id;
+
+  std::vector<Table2Row> with = without;
+  with[0].time_ratio_vs_equal_plain = 1.05;
+  with[1].time_ratio_vs_equal_plain = 1.2;
+  for (const double c : {0.3, 0.75}) {
+    Table2Row equal;
+    equal.method = "plain_equal";
+    equal.compression = c;
+    with.push_back(equal);
+  }
+  const std::vector<Claim> targets = judged_on_points(project_targets(with));
+  const Claim& at30 = find(targets, "target_30_vs_equal_plain");
+  EXPECT_EQ(at30.evidence, Evidence::kRepeated);
+  EXPECT_DOUBLE_EQ(at30.expected, 1.10);
+  EXPECT_TRUE(passed(at30));
+  EXPECT_EQ(verdict(find(targets, "target_75_vs_equal_plain")), Verdict::kFail);
+  // Its cases: TC-SB and plain_equal at the target (a net's plain case rides along, cases_in_scope).
+  const ClaimScope scope = *scope_of("target_75_vs_equal_plain");
+  ASSERT_EQ(scope.equal_plain_targets.size(), 1u);
+  EXPECT_DOUBLE_EQ(scope.equal_plain_targets[0], 0.75);
+  ASSERT_EQ(scope.tcsb_targets.size(), 1u);
+  EXPECT_DOUBLE_EQ(scope.tcsb_targets[0], 0.75);
+}
+
 TEST(ProjectTargets, OverheadIsTimeRatioOverNodeRatio) {
   const std::vector<Claim> targets =
       judged_on_points(project_targets({tcsb_row(0.3, 0.33, 0.30), tcsb_row(0.75, 0.79, 0.75)}));

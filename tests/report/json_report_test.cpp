@@ -83,8 +83,9 @@ TEST(NativeJson, CaseAndRepetitionKeys) {
   EXPECT_EQ(keys(c), (std::vector<std::string>{"label", "net", "method", "compression", "target_nodes", "net_nodes",
                                                "net_links", "status", "mean_nodes", "mean_links", "mean_interpolations",
                                                "mean_feedback_ms", "mean_feedback_total_ms", "step_ms",
-                                               "ratio_vs_plain", "repetitions", "op_work"}));
+                                               "ratio_vs_plain", "step_breakdown_ms", "repetitions", "op_work"}));
   EXPECT_FALSE(doc["cases"][0].contains("op_work"));  // plain: no TreeCut operations
+  EXPECT_EQ(keys(c["step_breakdown_ms"]), (std::vector<std::string>{"bullet", "feedback", "operations", "blending"}));
   EXPECT_EQ(c["label"], "n0/tcsb@0.3");
   EXPECT_EQ(c["compression"], 0.3);
   EXPECT_TRUE(doc["cases"][0]["compression"].is_null());

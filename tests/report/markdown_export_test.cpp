@@ -89,6 +89,20 @@ TEST(MarkdownExport, Table2Rows) {
   EXPECT_FALSE(contains(md, "paper")) << "no reproduction block: nothing to put beside";
 }
 
+TEST(MarkdownExport, Table2ShowsTheRatioToEqualPlainWhenTheRunHasIt) {
+  RunResult r = synthetic_run();
+  r.suite.methods.push_back(Method::kPlainEqual);
+  r.cases.insert(r.cases.begin() + 2, testing::make_case(r.suite, 0, Method::kPlainEqual, 0.5, 49, 84, 0, 0.4));
+  r.cases.push_back(testing::make_case(r.suite, 1, Method::kPlainEqual, 0.5, 196, 364, 0, 1.6));
+  const std::string md = markdown_report(native_json(r));
+  EXPECT_TRUE(has_line(
+      md, "| method | compression | N | L | I | ms | ratio | node ratio | ratio to equal plain | nets | status |"))
+      << md;
+  // (0.5 + 1.5) / (0.4 + 1.6)
+  EXPECT_TRUE(has_line(md, "| tcsb | 50% | 125.0 | 250.0 | 3.000 | 1.000 | 0.5000 | 0.5000 | 1.000 | 2 | ok |")) << md;
+  EXPECT_TRUE(contains(md, "Ratio to equal plain")) << md;
+}
+
 TEST(MarkdownExport, Table1Rows) {
   const std::string md = markdown_report(synthetic_document());
   EXPECT_TRUE(has_line(md, "| operation | N | µs | p50 µs | p99 µs | node % | count |")) << md;

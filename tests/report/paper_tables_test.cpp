@@ -95,6 +95,37 @@ TEST(Table2, AllDivergedGivesNoNumbers) {
   EXPECT_FALSE(row.time_ratio_vs_plain);
 }
 
+/// two_nets() with plain_equal at 0.5 on each net after the TC-SB cases, as the runner orders them.
+RunResult two_nets_with_equal_plain() {
+  RunResult r = two_nets();
+  r.suite.methods.push_back(Method::kPlainEqual);
+  const Suite& s = r.suite;
+  r.cases.insert(r.cases.begin() + 3, make_case(s, 0, Method::kPlainEqual, 0.5, 49, 84, 0, 0.4));
+  r.cases.push_back(make_case(s, 1, Method::kPlainEqual, 0.5, 196, 364, 0, 1.1));
+  return r;
+}
+
+TEST(Table2, TcsbAgainstPlainEqualOfTheSameTarget) {
+  const std::vector<Table2Row> rows = table2(two_nets_with_equal_plain());
+  ASSERT_EQ(rows.size(), 4u);
+  // Means over the nets, as the plain ratio: (0.5 + 1.5) / (0.4 + 1.1).
+  EXPECT_EQ(rows[2].method, "tcsb");
+  EXPECT_DOUBLE_EQ(*rows[2].time_ratio_vs_equal_plain, 2.0 / 1.5);
+  EXPECT_FALSE(rows[1].time_ratio_vs_equal_plain);  // NoCompression has no plain_equal
+  EXPECT_FALSE(rows[0].time_ratio_vs_equal_plain);
+  EXPECT_EQ(rows[3].method, "plain_equal");
+  EXPECT_EQ(rows[3].compression_label, "50%");
+  EXPECT_DOUBLE_EQ(*rows[3].time_ratio_vs_plain, 1.5 / 4.0);
+  EXPECT_FALSE(rows[3].time_ratio_vs_equal_plain);
+  EXPECT_FALSE(table2(two_nets())[2].time_ratio_vs_equal_plain);  // no plain_equal cases: no ratio
+}
+
+TEST(Table2, EqualPlainRatioOnlyOverNetsOkInBoth) {
+  RunResult r = two_nets_with_equal_plain();
+  diverge(r.cases.back(), 5);  // n1/plain_equal@0.5
+  EXPECT_DOUBLE_EQ(*table2(r)[2].time_ratio_vs_equal_plain, 0.5 / 0.4);
+}
+
 TEST(Table2, NoPlainMeansNoRatios) {
   RunResult r = two_nets();
   r.cases = {r.cases[1], r.cases[4]};

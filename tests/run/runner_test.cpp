@@ -53,5 +53,58 @@ TEST(Runner, MoreRepetitionsOfChosenCasesContinueTheirNumberingAndRepeatTheirWor
   EXPECT_EQ(run.cases[0].repetitions.size(), 5u);
 }
 
+TEST(Runner, PlainEqualIsAStaticGridOfTheBudgetsNodeCount) {
+  Suite s = two_nets();
+  s.methods.push_back(Method::kPlainEqual);
+  const RunResult run = run_suite(s, Context{});
+  ASSERT_EQ(run.cases.size(), 8u);  // per net: plain, tcsb@1.0, tcsb@0.5, plain_equal@0.5
+  const CaseResult& equal = run.cases[3];
+  EXPECT_EQ(equal.label, "a/plain_equal@0.5");
+  EXPECT_EQ(equal.target_nodes, 41);  // round(0.5 x 81)
+  // The fidelity pass's uniform grid for 41 nodes of a 9 x 9 net: 6 x 7 (coarse_grid_for), no operations.
+  EXPECT_EQ(equal.mean_nodes, 42.0);
+  EXPECT_EQ(equal.mean_interpolations, 0.0);
+  EXPECT_EQ(equal.repetitions[0].operations, 0);
+  EXPECT_EQ(equal.repetitions[0].final_state_hash, equal.repetitions[1].final_state_hash);
+  // Bit-identical: adding plain_equal leaves every other case's state as it was.
+  const RunResult before = run_suite(two_nets(), Context{});
+  for (const std::size_t i : {0u, 1u, 2u}) {
+    EXPECT_EQ(run.cases[i].repetitions[0].final_state_hash, before.cases[i].repetitions[0].final_state_hash) << i;
+    EXPECT_EQ(run.cases[i + 4].repetitions[0].final_state_hash, before.cases[i + 3].repetitions[0].final_state_hash)
+        << i;
+  }
+}
+
+TEST(Runner, StepBreakdownAccountsForTheOperationsAndForStockSteps) {
+  const RunResult run = run_suite(two_nets(), Context{});
+  for (const CaseResult& c : run.cases) {
+    for (const RepetitionResult& r : c.repetitions) {
+      const StepBreakdown& b = r.breakdown;
+      if (c.key.method == Method::kPlain) {
+        // A stock body's step is all Bullet's: the runner's own step times, nothing else.
+        EXPECT_DOUBLE_EQ(b.bullet_ms, r.mean_step_ms) << c.label;
+        EXPECT_EQ(b.feedback_ms + b.operations_ms + b.blending_ms, 0.0) << c.label;
+        continue;
+      }
+      EXPECT_GT(b.bullet_ms, 0.0) << c.label;
+      // The parts lie within the step (the rest is the clock reads between them).
+      EXPECT_LE(b.bullet_ms + b.feedback_ms + b.operations_ms + b.blending_ms, r.mean_step_ms * (1 + 1e-9)) << c.label;
+    }
+    // The case's breakdown: each part's median over the repetitions (a stock case's Bullet part is its step).
+    if (c.key.method == Method::kPlain) {
+      EXPECT_DOUBLE_EQ(c.breakdown.bullet_ms, c.step_ms.median) << c.label;
+    }
+    // Operations: exactly their own samples' time, per timed step (the samples are the timed steps' only).
+    double ops_ms = 0;
+    for (const OpSample& s : c.ops.samples) ops_ms += (static_cast<double>(s.node_ns) + s.link_ns) / 1e6;
+    double breakdown_ops_ms = 0;
+    for (const RepetitionResult& r : c.repetitions) breakdown_ops_ms += r.breakdown.operations_ms * run.suite.steps;
+    EXPECT_NEAR(breakdown_ops_ms, ops_ms, 1e-9 * (1 + ops_ms)) << c.label;
+    if (c.key.compression == 0.5) {
+      EXPECT_GT(ops_ms, 0.0) << c.label << ": the test must see operations";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tcsb

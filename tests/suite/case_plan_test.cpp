@@ -62,6 +62,21 @@ TEST(CasePlan, Labels) {
   EXPECT_EQ(case_label(s, cases[5]), "n25/plain");
 }
 
+TEST(CasePlan, PlainEqualRunsOneCasePerTargetBelowOne) {
+  // At 1.0 a plain grid of the budget's nodes is the plain body itself: no case for it.
+  const Suite s = make_suite({Method::kPlain, Method::kTcsb, Method::kPlainEqual}, {1.0, 0.75, 0.3}, 2, 1);
+  const std::vector<CaseKey> cases = expand_cases(s);
+  ASSERT_EQ(cases.size(), 2u * 6u);
+  EXPECT_EQ(cases[4].method, Method::kPlainEqual);
+  EXPECT_EQ(cases[4].compression, 0.75);
+  EXPECT_EQ(cases[5].method, Method::kPlainEqual);
+  EXPECT_EQ(cases[5].compression, 0.3);
+  EXPECT_EQ(cases[6].method, Method::kPlain);
+  EXPECT_EQ(cases[6].net, 1u);
+  EXPECT_EQ(case_label(s, cases[4]), "n17/plain_equal@0.75");
+  EXPECT_EQ(case_label(s, cases[5]), "n17/plain_equal@0.3");
+}
+
 void expect_valid_plan(const Suite& s) {
   const std::vector<CaseKey> cases = expand_cases(s);
   const std::vector<PlannedRun> plan = interleaved_plan(s, cases);

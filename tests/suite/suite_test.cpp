@@ -38,7 +38,7 @@ TEST(ShippedSuites, Paper) {
   EXPECT_EQ(s.path, path);
   EXPECT_EQ(s.sha256, sha256_hex(read_bytes(path)));
   ASSERT_EQ(s.nets.size(), 5u);
-  EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kTcsb}));
+  EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kTcsb, Method::kPlainEqual}));
   EXPECT_EQ(s.compression, (std::vector<double>{1.0, 0.75, 0.3}));
   double total = 0;
   for (const NetSpec& n : s.nets) {
@@ -114,7 +114,7 @@ TEST(ShippedSuites, Scaling) {
   ASSERT_GE(s.nets.size(), 6u);
   EXPECT_LE(s.nets.front().node_count(), 1500);
   EXPECT_GE(s.nets.back().node_count(), 1000000);
-  EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kTcsb}));
+  EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kTcsb, Method::kPlainEqual}));
   EXPECT_EQ(s.compression, (std::vector<double>{0.3}));
   EXPECT_EQ(s.solver.piterations, 4);
   // A million-node net with both bodies alive needs gigabytes, not megabytes nor terabytes.
@@ -185,6 +185,16 @@ TEST(SuiteParse, MethodNames) {
   EXPECT_STREQ(method_name(Method::kPlain), "plain");
   EXPECT_STREQ(method_name(Method::kBulletPatch), "bullet_patch");
   EXPECT_STREQ(method_name(Method::kTcsb), "tcsb");
+  EXPECT_STREQ(method_name(Method::kPlainEqual), "plain_equal");
+}
+
+TEST(SuiteParse, PlainEqualTakesCompressionTargetsWithoutTcsb) {
+  json j = minimal();
+  j["methods"] = {"plain", "plain_equal"};
+  j["compression"] = {1.0, 0.3};
+  const Suite s = parse_suite_text(j.dump(), "equal.json");
+  EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kPlainEqual}));
+  EXPECT_EQ(s.compression, (std::vector<double>{1.0, 0.3}));
 }
 
 // ---- rejections ---------------------------------------------------------------------------------------------
@@ -437,6 +447,17 @@ TEST(SuiteReject, Compression) {
       "compression[1]");
   const std::string msg = rejected_edit([](json& j) { j["compression"] = {0.5}; }, "compression");
   EXPECT_NE(msg.find("tcsb"), std::string::npos) << msg;
+}
+
+TEST(SuiteReject, PlainEqualNeedsATargetBelowOne) {
+  rejected_edit([](json& j) { j["methods"] = {"plain", "plain_equal"}; }, "compression");
+  const std::string msg = rejected_edit(
+      [](json& j) {
+        j["methods"] = {"plain", "tcsb", "plain_equal"};
+        j["compression"] = {1.0};
+      },
+      "methods[2]");
+  EXPECT_NE(msg.find("below 1"), std::string::npos) << msg;
 }
 
 TEST(SuiteReject, BulletPatchNeedsStructuralOnlyNets) {

@@ -1,0 +1,132 @@
+#!/usr/bin/env bash
+# The tax of adaptivity, in deterministic counts: instructions and simulated cache misses per step of a TC-SB body
+# against a static plain body of the budget's node count (plain_equal, the fidelity pass's uniform grid), counted by
+# callgrind with a 48 KiB L1 and a 2 MiB last-level cache (the development VM's L2), not in seconds.
+# One net of the scaling suite's settings (suites/scaling.json: 4 solver iterations, any number of operations per
+# step, evaluation every step), narrowed to one width and one budget, with the feedback evaluated on the simulation
+# thread ("parallel": false): a spinning worker would add instructions that depend on the machine's load.
+# Only the steps are counted (callgrind collects inside the case body's step alone). Steady state, not warm-up: each
+# method runs twice, 10 and 30 timed steps after the same 30 warm-up steps, and the difference of the two counts is
+# divided by the 20 steps between them (the convergence to the budget falls in the warm-up and cancels).
+# Prints per step: Ir, D1 misses (reads + writes), LL misses (reads + writes), and their ratios TC-SB / plain_equal;
+# then the inclusive instructions and LL misses per step of the functions a TC-SB step spends them in.
+# Usage: bash scripts/step-profile.sh [build-dir] [width] [compression]   (defaults: build 129 0.3; needs valgrind)
+#   TCSB_PROFILE_EVALUATION_INTERVAL=k evaluates the feedback every k steps instead of the suite's every step: a
+#   callgrind run simulates one cache for everything, so the evaluation (on a worker thread and its core in real
+#   runs) evicts Bullet's data here; a sparse evaluation shows what the step misses without that.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+width=${2:-129}
+compression=${3:-0.3}
+command -v valgrind >/dev/null || { echo "step-profile: valgrind is not installed" >&2; exit 2; }
+if [ ! -x "$build/tcsb" ]; then
+  [ -f "$build/build.ninja" ] || { echo "step-profile: $build is not a configured build directory" >&2; exit 2; }
+  cmake --build "$build" --target tcsb >&2
+fi
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+
+python3 - "$dir" "$width" "$compression" "${TCSB_PROFILE_EVALUATION_INTERVAL:-}" <<'EOF'
+import json, sys
+out, width, compression, interval = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), sys.argv[4]
+with open("suites/scaling.json") as f:
+    scaling = json.load(f)
+net = dict(scaling["nets"][0], name=f"n{width}", width=width, height=width)
+for method in ("tcsb", "plain_equal"):
+    for steps in (10, 30):
+        suite = dict(scaling, name=f"step-profile-{method}-{steps}", methods=[method], compression=[compression],
+                     nets=[net], repetitions=1, steps=steps, warmup_steps=30)
+        suite["feedback"] = dict(scaling["feedback"], parallel=False)
+        if interval:
+            suite["feedback"]["evaluation_interval"] = int(interval)
+        suite["fidelity"] = dict(scaling["fidelity"], enabled=False)
+        with open(f"{out}/{method}-{steps}.json", "w") as f:
+            json.dump(suite, f)
+EOF
+
+for method in tcsb plain_equal; do
+  case $method in
+    tcsb) toggle='*TreeCutBody::step*' ;;
+    plain_equal) toggle='*StockBody::step*' ;;
+  esac
+  for steps in 10 30; do
+    valgrind --tool=callgrind --cache-sim=yes --D1=49152,12,64 --LL=2097152,16,64 --toggle-collect="$toggle" \
+      --callgrind-out-file="$dir/$method-$steps.out" \
+      "$build/tcsb" run "$dir/$method-$steps.json" --quiet --out "$dir/$method-$steps.result.json" >/dev/null 2>&1
+  done
+done
+
+python3 - "$dir" "$width" "$compression" <<'EOF'
+import collections, json, sys
+sys.path.insert(0, "scripts")
+from callgrind_calls import read_dump
+
+d, width, compression = sys.argv[1], sys.argv[2], sys.argv[3]
+STEPS = 20  # 30 - 10 timed steps
+
+
+def totals(path):
+    events = values = None
+    for line in open(path):
+        if line.startswith("events:"):
+            events = line.split()[1:]
+        elif line.startswith(("summary:", "totals:")):
+            values = [int(v) for v in line.split()[1:]]
+    values += [0] * (len(events) - len(values))  # callgrind leaves trailing zero counts out
+    return dict(zip(events, values))
+
+
+def per_step(method):
+    a, b = totals(f"{d}/{method}-10.out"), totals(f"{d}/{method}-30.out")
+    diff = {k: (b[k] - a[k]) / STEPS for k in b}
+    result = json.load(open(f"{d}/{method}-30.result.json"))
+    nodes = result["cases"][0]["mean_nodes"]
+    return {"Ir": diff["Ir"], "D1": diff["D1mr"] + diff["D1mw"], "LL": diff["DLmr"] + diff["DLmw"], "nodes": nodes}
+
+
+def functions(method):
+    """Inclusive cost per step of named functions, from the difference of the two dumps."""
+    out = {}
+    for steps in (10, 30):
+        calls, inclusive = collections.Counter(), collections.Counter()
+        read_dump(f"{d}/{method}-{steps}.out", calls, inclusive)
+        out[steps] = inclusive
+    return out
+
+
+tc, pe = per_step("tcsb"), per_step("plain_equal")
+print(f"net {width}^2, budget {compression}: per timed step (steady state, difference of 30 and 10 timed steps)")
+print(f"{'':12s} {'nodes':>8s} {'Ir':>12s} {'Ir/node':>8s} {'D1 miss':>10s} {'LL miss':>10s} {'LL/node':>8s}")
+for name, r in (("tcsb", tc), ("plain_equal", pe)):
+    print(f"{name:12s} {r['nodes']:8.0f} {r['Ir']:12.0f} {r['Ir'] / r['nodes']:8.1f} {r['D1']:10.0f} {r['LL']:10.0f} "
+          f"{r['LL'] / r['nodes']:8.3f}")
+ll_ratio = f"{tc['LL'] / pe['LL']:10.3f}" if pe["LL"] >= 1 else f"{'-':>10s}"  # a body that fits misses nothing
+print(f"{'ratio':12s} {tc['nodes'] / pe['nodes']:8.3f} {tc['Ir'] / pe['Ir']:12.3f} {'':8s} "
+      f"{tc['D1'] / pe['D1']:10.3f} {ll_ratio}")
+
+# Where the instructions and misses go (inclusive, per step). Names are matched as substrings of callgrind's.
+# SaliencyController::evaluate runs on the worker thread in the bundled suites ("parallel": true); here it runs
+# inside before_step, so before_step minus evaluate is what stays on the simulation thread.
+parts = ["TcSoftBody::advance_blends", "SaliencyController::before_step", "SaliencyController::evaluate",
+         "take_snapshot", "apply_evaluation", "SaliencyController::after_step",
+         "TcSoftBody::begin_refine", "TcSoftBody::begin_coarse", "TcSoftBody::end_refine", "TcSoftBody::end_coarse",
+         "TcSoftBody::simulate_step", "btSoftBody::predictMotion", "btDbvt::update", "btSoftBody::solveConstraints",
+         "btSoftBody::PSolve_Links", "btSoftBody::integrateMotion", "btSoftBody::applyClusters"]
+print("inclusive per step        tcsb Ir   plain_equal Ir     tcsb LL  plain_equal LL")
+dumps = {m: functions(m) for m in ("tcsb", "plain_equal")}
+for part in parts:
+    row = []
+    for method in ("tcsb", "plain_equal"):
+        cost = {}
+        for ev in ("Ir", "DLmr", "DLmw"):
+            vals = {}
+            for steps in (10, 30):
+                vals[steps] = sum(v for (name, e), v in dumps[method][steps].items() if e == ev and part + "(" in name)
+            cost[ev] = (vals[30] - vals[10]) / STEPS
+        row.append(cost)
+    if all(c["Ir"] == 0 for c in row):
+        continue
+    print(f"{part:32s} {row[0]['Ir']:12.0f} {row[1]['Ir']:12.0f} {row[0]['DLmr'] + row[0]['DLmw']:10.0f} "
+          f"{row[1]['DLmr'] + row[1]['DLmw']:10.0f}")
+EOF
