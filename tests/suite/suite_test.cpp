@@ -55,7 +55,8 @@ TEST(ShippedSuites, Paper) {
   EXPECT_DOUBLE_EQ(s.world.dt, 1.0 / 60.0);
   EXPECT_EQ(s.steps, 400);
   EXPECT_EQ(s.warmup_steps, 120);
-  EXPECT_EQ(s.repetitions, 5);  // 7 took up to 103 s in slow hours, too near the reproduction's wall-time target (docs/methodology.md)
+  EXPECT_EQ(s.repetitions,
+            5);  // 7 took up to 103 s in slow hours, too near the reproduction's wall-time target (docs/methodology.md)
   EXPECT_EQ(s.solver.piterations, 2);
   EXPECT_EQ(s.tcsb.blend_steps, 4);
   EXPECT_TRUE(s.feedback.parallel) << "the paper evaluates its TreeCut in parallel (section 5)";
