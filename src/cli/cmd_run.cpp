@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "cli/flag_values.h"
 #include "cli/run_support.h"
+#include "harness/shard_plan.h"
 #include "report/report_format.h"
 
 namespace tcsb::cli {
@@ -33,6 +34,19 @@ void apply_budget_overrides(const RunArgs& args, Suite& suite) {
   }
 }
 
+/// --shard as a ShardIndex (nullopt without it). Only the native JSON carries what `tcsb merge` needs, so a shard
+/// in another format could never be merged: refused too.
+std::optional<ShardIndex> checked_shard(const RunArgs& args) {
+  if (args.shard.empty()) return std::nullopt;
+  const std::optional<ShardIndex> shard = parse_shard_index(args.shard);
+  if (!shard) {
+    throw UsageError("--shard: expected K/N with 1 <= K <= N <= " + std::to_string(kMaxShards) + ", got \"" +
+                     args.shard + "\"");
+  }
+  if (args.format != "json") throw UsageError("--shard: needs --format json (the format `tcsb merge` reads)");
+  return shard;
+}
+
 }  // namespace
 
 CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
@@ -46,11 +60,15 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
   run->add_option("--max-step-ms", args.max_step_ms,
                   "TC-SB time budget per step in ms, 0 to disable (overrides the suite)");
   add_repetitions_option(*run, args.repetitions);
+  run->add_option("--shard", args.shard,
+                  "Run only shard K of N (e.g. 2/4): a deterministic share of the nets, each net's cases together; "
+                  "join the shards' JSON results with `tcsb merge`");
   return run;
 }
 
 int run_command(const RunArgs& args) {
   checked_format(args.format);
+  checked_shard(args);
   check_out_path(args.out);
   const std::filesystem::path suite_file = resolve_suite(args.suite);
   check_out_is_not_input(args.out, suite_file);
@@ -65,8 +83,9 @@ int run_command(const RunArgs& args) {
 
 int run_and_report(const Suite& suite, const RunArgs& args) {
   const std::unique_ptr<ReportFormat> format = checked_format(args.format);
+  const std::optional<ShardIndex> shard = checked_shard(args);
   check_out_path(args.out);
-  const RunResult result = run_on_console(suite, args.quiet);
+  const RunResult result = run_on_console(suite, args.quiet, shard);
   return write_report(format->render(result), args.out);
 }
 

@@ -9,6 +9,7 @@
 #include "cli/cli_common.h"
 #include "harness/context.h"
 #include "harness/runner.h"
+#include "harness/shard_plan.h"
 #include "harness/stall.h"
 #include "report/console_report.h"
 #include "report/report_writer.h"
@@ -132,7 +133,7 @@ void warn_stalls(const RunResult& result) {
 
 }  // namespace
 
-RunResult run_on_console(const Suite& suite, bool quiet) {
+RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard) {
   const Context context = gather_context();
   print_warnings(context, std::cerr);
   RunResult result;
@@ -140,7 +141,9 @@ RunResult run_on_console(const Suite& suite, bool quiet) {
     ProgressLine line(!quiet && ::isatty(STDERR_FILENO) == 1);  // cleared before anything else is printed
     RunOptions options;
     options.progress = [&line](int done, int total, const std::string& label) { line.update(done, total, label); };
+    if (shard) options.nets = shard_nets(suite, *shard);
     result = run_suite(suite, context, options);
+    result.shard = shard;
   }
   if (!quiet) print_console_report(result, std::cerr);
   warn_diverged(result);

@@ -14,11 +14,16 @@ namespace tcsb {
 struct RunOptions {
   /// Called after each repetition with (done, total, label); used for the progress line on a TTY.
   std::function<void(int done, int total, const std::string& label)> progress;
+  /// The nets to run, indexed like Suite::nets (a shard's, harness/shard_plan.h); empty: all. The cases of the other
+  /// nets are left out of the result and their nets never built; the cases run keep their suite-wide indices, so
+  /// seeds, labels and the interleaved order among them are those of the whole suite.
+  std::vector<bool> nets;
 };
 
 /// Runs every case of the suite in interleaved_plan() order (every repetition runs every case once, a net's cases
 /// side by side); each repetition builds a fresh body, steps warm-up steps untimed, then times every step with a
 /// monotonic clock. A repetition that diverges stops at once and is reported with its step, never averaged in.
+/// With options.nets, only those nets' cases (and their fidelity pass) run, and result.cases holds only them.
 RunResult run_suite(const Suite& suite, const Context& context, const RunOptions& options = {});
 
 /// Runs `extra` more repetitions of the cases `case_indices` of a finished run (indices into result.cases), in the

@@ -41,6 +41,7 @@ struct Suite {
   std::string description;
   std::filesystem::path path;  ///< where it was read from
   std::string sha256;          ///< SHA-256 of the file's bytes
+  std::string source;          ///< the file's bytes (a shard carries them, so `tcsb merge` can rebuild the suite)
   std::vector<NetSpec> nets;
   std::vector<Method> methods;      ///< in the order repetitions interleave them
   std::vector<double> compression;  ///< TC-SB node budgets as fractions of the initial count; 1.0 = none
