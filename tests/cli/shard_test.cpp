@@ -129,10 +129,12 @@ TEST_F(Shards, ShardsSplitByNetAndCoverEveryCaseOnce) {
   std::multiset<std::string> labels;
   std::set<std::string> nets_with_cases;
   for (int k = 1; k <= 2; ++k) {
-    const std::string file = "s" + std::to_string(k) + ".json";
+    std::string file = "s";  // (appended: GCC 12 warns falsely on "literal" + std::string&&)
+    file += std::to_string(k) + ".json";
     ASSERT_EQ(tcsb("run three.json --quiet --shard " + std::to_string(k) + "/2 --out " + file).exit_code, 0);
     std::set<std::string> nets;
-    for (const json& c : load(file)["cases"]) {
+    const json shard = load(file);  // named: a range-for over a temporary's member would dangle
+    for (const json& c : shard["cases"]) {
       labels.insert(c["label"].get<std::string>());
       nets.insert(c["net"].get<std::string>());
     }
