@@ -98,12 +98,14 @@ Suite rebuild_suite(const ShardDocument& shard) {
       for (const ojson& m : r.at(block, "suite", "methods")) {
         const std::string name = m.is_string() ? m.get<std::string>() : "";
         const Method known[] = {Method::kPlain, Method::kBulletPatch, Method::kTcsb};
-        const auto* it = std::find_if(std::begin(known), std::end(known), [&](Method k) { return name == method_name(k); });
+        const auto* it =
+            std::find_if(std::begin(known), std::end(known), [&](Method k) { return name == method_name(k); });
         if (it == std::end(known)) r.fail("suite.methods", "unknown method " + m.dump());
         s.methods.push_back(*it);
       }
       s.compression.clear();
-      for (const ojson& c : r.at(block, "suite", "compression")) s.compression.push_back(c.is_number() ? c.get<double>() : 0);
+      for (const ojson& c : r.at(block, "suite", "compression"))
+        s.compression.push_back(c.is_number() ? c.get<double>() : 0);
       s.repetitions = static_cast<int>(r.integer(block, "suite", "repetitions"));
       s.feedback.max_step_ms = r.number(r.at(block, "suite", "feedback"), "suite.feedback", "max_step_ms");
     });
@@ -144,7 +146,8 @@ std::vector<OpSample> read_op_samples(const Reader& r, const ojson& data, const 
   const ojson& work = r.at(columns, path, "work");
   std::vector<const ojson*> all;
   for (const char* c : kSampleColumns) all.push_back(&r.at(columns, path, c));
-  for (int w = 0; w < kOpWorkCountKinds; ++w) all.push_back(&r.at(work, path + ".work", op_work_count_name(OpWorkCount(w))));
+  for (int w = 0; w < kOpWorkCountKinds; ++w)
+    all.push_back(&r.at(work, path + ".work", op_work_count_name(OpWorkCount(w))));
   const std::size_t size = all.front()->is_array() ? all.front()->size() : 0;
   for (const ojson* column : all) {
     if (!column->is_array() || column->size() != size) r.fail(path, "columns must be arrays of one length");
@@ -157,8 +160,9 @@ std::vector<OpSample> read_op_samples(const Reader& r, const ojson& data, const 
     const std::int32_t kind = value(0, i);
     if (kind < 0 || kind >= kOpKindCount) r.fail(path + ".kind", "must be 0 to " + std::to_string(kOpKindCount - 1));
     OpWork w;
-    std::int32_t* counts[] = {&w.nodes, &w.links, &w.tree_records, &w.dbvt_leaves, &w.relocation_nodes,
-                              &w.relocation_links, &w.dbvt_ancestors};
+    std::int32_t* counts[] = {
+        &w.nodes,         &w.links, &w.tree_records, &w.dbvt_leaves, &w.relocation_nodes, &w.relocation_links,
+        &w.dbvt_ancestors};
     for (int c = 0; c < kOpWorkCountKinds; ++c) *counts[c] = value(6 + static_cast<std::size_t>(c), i);
     w.interior = value(5, i) != 0;
     samples[i] = OpSample(static_cast<OpKind>(kind), value(1, i), value(2, i), value(3, i), value(4, i), w);
@@ -238,8 +242,8 @@ ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const Shard
     c.key = keys[index_in_suite];
     c.label = r.string(j, path, "label");
     if (c.label != case_label(suite, c.key)) {
-      r.fail(path + ".label", "\"" + c.label + "\", but shard " + shard_text(index) + " has \"" +
-                                  case_label(suite, c.key) + "\" here");
+      r.fail(path + ".label",
+             "\"" + c.label + "\", but shard " + shard_text(index) + " has \"" + case_label(suite, c.key) + "\" here");
     }
     c.net_name = r.string(j, path, "net");
     c.net_nodes = r.integer(j, path, "net_nodes");
@@ -321,8 +325,9 @@ MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
   for (std::size_t i = 0; i < shards.size(); ++i) {
     const ShardDocument& s = shards[i];
     if (indices[i].n != n) {
-      throw ResultFileError(s.file, "context.shard", "shard " + shard_text(indices[i]) + ", but " + first.file +
-                                                          " is a shard of " + std::to_string(n) + ": not one split");
+      throw ResultFileError(s.file, "context.shard",
+                            "shard " + shard_text(indices[i]) + ", but " + first.file + " is a shard of " +
+                                std::to_string(n) + ": not one split");
     }
     check_same(first, s, "context", "suite_sha256", "shards of different suite files");
     check_same(first, s, "suite", "name", "shards of different suites");

@@ -3,8 +3,7 @@
 // normal result summarises away. `tcsb merge` checks that a set of shard results is one suite, build and settings,
 // covered exactly once, rebuilds the run they make up (RunResult) and renders it with native_json(), so Table 1,
 // Table 2, the fits and the fidelity tables and targets are computed from the merged cases by the very code a
-// single `tcsb run` uses. Only the deterministic order of the cases and repetitions changes nothing: each case is
-// placed where the unsharded run would have it.
+// single `tcsb run` uses, on the cases in the order the unsharded run would have them.
 #pragma once
 
 #include <string>
@@ -30,8 +29,8 @@ struct ShardDocument {
 
 /// A merged run: the result, the context block to write, and the warnings the merge adds.
 struct MergedShards {
-  RunResult result;                 ///< every case of the suite in unsharded order, summarised again
-  nlohmann::ordered_json context;   ///< shard 1's context without `shard`, all shards' warnings, `merged_shards`
+  RunResult result;                   ///< every case of the suite in unsharded order, summarised again
+  nlohmann::ordered_json context;     ///< shard 1's context without `shard`, all shards' warnings, `merged_shards`
   std::vector<std::string> warnings;  ///< new warnings of the merge (different machines), also in context.warnings
 };
 
