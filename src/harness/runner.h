@@ -30,7 +30,8 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
 /// run's own interleaved order restricted to those cases (every extra repetition runs each of them once, a net's
 /// cases side by side), numbered after the case's last repetition, each with the case's own seed — so a repetition
 /// added later does the same work as the first ones. Recomputes the touched cases' summaries and adds the time
-/// taken to result.wall_s. Indices out of range are ignored. The fidelity pass is not repeated.
+/// taken to result.wall_s. Indices out of range are ignored. The fidelity pass is not repeated. `result` must hold
+/// every case of its suite (not a shard's, RunOptions::nets): a case's index is its seed.
 void run_more_repetitions(RunResult& result, const std::vector<std::size_t>& case_indices, int extra,
                           const RunOptions& options = {});
 

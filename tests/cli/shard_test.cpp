@@ -242,6 +242,32 @@ TEST_F(BadShardSets, AShardWithEditedCasesIsRefused) {
   expect_refused("edited1.json s2.json s3.json", "edited1.json");
 }
 
+TEST_F(BadShardSets, ShardsOfTwoBuildsAreRefused) {
+  json shard = json::parse(read_file(dir_ / "s3.json"));
+  shard["context"]["git_commit"] = "0000000000000000000000000000000000000000";
+  write_file(dir_ / "build3.json", shard.dump());
+  expect_refused("s1.json s2.json build3.json", "build3.json");
+}
+
+TEST_F(BadShardSets, ShardsOfDifferentMachinesMergeWithAWarning) {
+  json shard = json::parse(read_file(dir_ / "s2.json"));
+  shard["context"]["host"] = "another-node";
+  write_file(dir_ / "elsewhere2.json", shard.dump());
+  const Outcome o = tcsb("merge --quiet s1.json elsewhere2.json s3.json --out merged.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(o.err.find("tcsb: warning: shards ran on different machines"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("another-node"), std::string::npos) << o.err;
+  bool recorded = false;
+  const json merged = load("merged.json");
+  for (const json& w : merged["context"]["warnings"]) {
+    recorded = recorded || w.get<std::string>().find("different machines") != std::string::npos;
+  }
+  EXPECT_TRUE(recorded);
+  // Without the edit: one machine, no such warning.
+  const Outcome same = tcsb("merge --quiet s1.json s2.json s3.json");
+  EXPECT_EQ(same.err.find("different machines"), std::string::npos) << same.err;
+}
+
 TEST_F(BadShardSets, AnExistingOutputIsLeftAloneWhenRefused) {
   write_file(dir_ / "merged.json", "keep");
   const Outcome o = tcsb("merge s1.json s3.json --out merged.json");
