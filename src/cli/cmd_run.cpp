@@ -68,15 +68,17 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
 
 int run_command(const RunArgs& args) {
   checked_format(args.format);
-  checked_shard(args);
+  const std::optional<ShardIndex> shard = checked_shard(args);
   check_out_path(args.out);
   const std::filesystem::path suite_file = resolve_suite(args.suite);
   check_out_is_not_input(args.out, suite_file);
   // The flags are applied inside parse_suite, before its memory check: a suite too large for this machine is
   // refused whether its size comes from the file or from --repetitions / --compression.
-  const Suite suite = parse_suite(suite_file, [&args](Suite& s) {
+  const Suite suite = parse_suite(suite_file, [&args, &shard](Suite& s) {
     apply_budget_overrides(args, s);
     apply_repetitions(args.repetitions, s);
+    // A shard runs only its nets, and the memory check counts only them: it may fit where the whole suite would not.
+    if (shard) s.run_nets = shard_nets(s, *shard);
   });
   return run_and_report(suite, args);
 }

@@ -141,7 +141,6 @@ RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<Sha
     ProgressLine line(!quiet && ::isatty(STDERR_FILENO) == 1);  // cleared before anything else is printed
     RunOptions options;
     options.progress = [&line](int done, int total, const std::string& label) { line.update(done, total, label); };
-    if (shard) options.nets = shard_nets(suite, *shard);
     result = run_suite(suite, context, options);
     result.shard = shard;
   }

@@ -123,19 +123,14 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
   return rep;
 }
 
-/// Whether net `net` is run under `selected` (empty: every net).
-bool selected_net(const std::vector<bool>& selected, std::size_t net) {
-  return selected.empty() || (net < selected.size() && selected[net]);
-}
-
 /// The nets of a suite, built once per call (they are immutable and shared by every case of the net); a net not
-/// `selected` is not built (null): a shard must not pay for another shard's largest net.
-std::vector<std::shared_ptr<const Net>> build_nets(const Suite& suite, const std::vector<bool>& selected = {}) {
+/// the suite does not run here (Suite::run_nets) is not built (null): a shard must not pay for another's largest net.
+std::vector<std::shared_ptr<const Net>> build_nets(const Suite& suite) {
   std::vector<std::shared_ptr<const Net>> nets;
   nets.reserve(suite.nets.size());
   for (std::size_t i = 0; i < suite.nets.size(); ++i) {
     const NetSpec& spec = suite.nets[i];
-    if (!selected_net(selected, i)) {
+    if (!runs_net(suite, i)) {
       nets.push_back(nullptr);
       continue;
     }
@@ -173,9 +168,9 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
   const std::vector<CaseKey> keys = expand_cases(suite);
   std::vector<PlannedRun> plan = interleaved_plan(suite, keys);
   // A shard runs the whole suite's plan restricted to its nets: the order among its cases is the unsharded one.
-  std::erase_if(plan, [&](const PlannedRun& run) { return !selected_net(options.nets, keys[run.case_index].net); });
+  std::erase_if(plan, [&](const PlannedRun& run) { return !runs_net(suite, keys[run.case_index].net); });
 
-  const std::vector<std::shared_ptr<const Net>> nets = build_nets(suite, options.nets);
+  const std::vector<std::shared_ptr<const Net>> nets = build_nets(suite);
 
   result.cases.resize(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i) {
@@ -198,7 +193,7 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
   run_plan(result, plan, std::vector<int>(keys.size(), 0), nets, options, done, total);
   for (CaseResult& c : result.cases) summarize_case(c);
   // Only now, when no index into result.cases is needed any more: drop the cases of nets this process did not run.
-  std::erase_if(result.cases, [&](const CaseResult& c) { return !selected_net(options.nets, c.key.net); });
+  std::erase_if(result.cases, [&](const CaseResult& c) { return !runs_net(suite, c.key.net); });
   if (fidelity) {
     result.fidelity = naming_out_of_memory("suite " + suite.name + ", fidelity pass", [&] {
       return run_fidelity(suite, nets, [&](const std::string& net) {

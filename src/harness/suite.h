@@ -54,7 +54,15 @@ struct Suite {
   TcSettings tcsb;
   FeedbackSettings feedback;
   FidelitySettings fidelity;
+  /// The nets this process runs, indexed like `nets` (a shard's, harness/shard_plan.h); empty: all. Not a setting of
+  /// the suite (results never record it): the runner runs and the memory check counts only these nets' cases.
+  std::vector<bool> run_nets;
 };
+
+/// Whether `suite` runs net `net` in this process (Suite::run_nets).
+inline bool runs_net(const Suite& suite, std::size_t net) {
+  return suite.run_nets.empty() || (net < suite.run_nets.size() && suite.run_nets[net]);
+}
 
 /// A suite file that cannot be used. what() is one line naming the file and the field.
 class SuiteError : public std::runtime_error {

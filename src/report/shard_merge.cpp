@@ -108,10 +108,12 @@ Suite rebuild_suite(const ShardDocument& shard) {
         s.compression.push_back(c.is_number() ? c.get<double>() : 0);
       s.repetitions = static_cast<int>(r.integer(block, "suite", "repetitions"));
       s.feedback.max_step_ms = r.number(r.at(block, "suite", "feedback"), "suite.feedback", "max_step_ms");
+      s.run_nets.assign(s.nets.size(), false);  // merging runs nothing: no memory check for the suite's nets here
     });
   } catch (const SuiteError& e) {
     throw ResultFileError(shard.file, "merge_data.suite_file", e.what());
   }
+  suite.run_nets.clear();
   suite.path = r.string(block, "suite", "path");
   if (const std::string d = first_json_difference(suite_json(suite), block, "suite"); !d.empty()) {
     r.fail("suite", "does not match the suite file in merge_data.suite_file (" + d + ")");

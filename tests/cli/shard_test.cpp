@@ -184,6 +184,29 @@ TEST_F(Shards, BadShardIndicesAreRefusedNamingTheFlag) {
   EXPECT_NE(other_format.err.find("--shard"), std::string::npos);
 }
 
+// A shard is checked against the machine's memory for its own nets only: under a limit the whole suite does not fit
+// (its 1025 x 1025 net), the shard of the small net runs.
+TEST_F(Shards, AShardOfSmallNetsRunsWhereTheWholeSuiteWouldNotFit) {
+  if (kAddressSanitized) GTEST_SKIP() << "no sanitized process starts under ulimit -v (cli_fixture.h)";
+  write_file(dir_ / "mixed.json", R"({"name": "mixed", "description": "a net too large for the limit and a small one",
+  "nets": [{"name": "n9", "width": 9, "height": 9, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0}},
+           {"name": "n1025", "width": 1025, "height": 1025, "size": [8.0, 8.0], "elevation": 8.0,
+            "mass": {"total": 1.0}}],
+  "methods": ["plain"], "dt": 0.016666666666666666, "gravity": 9.81, "steps": 10, "warmup_steps": 2,
+  "repetitions": 1, "seed": 1})");
+  const std::string limited =
+      "sh -c 'ulimit -v 150000; exec \"" + std::string(TCSB_BINARY) + "\" run mixed.json --quiet ";
+  const Outcome whole = shell(limited + "--out whole.json'");
+  EXPECT_EQ(whole.exit_code, 2) << whole.err;
+  EXPECT_NE(whole.err.find("n1025"), std::string::npos) << whole.err;
+  // The largest net goes to shard 1, so shard 2 of 2 holds n9 alone.
+  const Outcome small = shell(limited + "--shard 2/2 --out small.json'");
+  ASSERT_EQ(small.exit_code, 0) << small.err;
+  const json shard = load("small.json");
+  ASSERT_EQ(shard["cases"].size(), 1u);
+  EXPECT_EQ(shard["cases"][0]["label"], "n9/plain");
+}
+
 class BadShardSets : public Shards {
  protected:
   void SetUp() override {

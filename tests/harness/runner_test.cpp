@@ -56,9 +56,9 @@ TEST(Runner, MoreRepetitionsOfChosenCasesContinueTheirNumberingAndRepeatTheirWor
 TEST(Runner, ASelectionOfNetsRunsOnlyTheirCasesAndEachAsInTheWholeRun) {
   const Suite suite = two_nets();
   const RunResult whole = run_suite(suite, Context{});
-  RunOptions second_net_only;
-  second_net_only.nets = {false, true};
-  const RunResult part = run_suite(suite, Context{}, second_net_only);
+  Suite second_net_only = suite;
+  second_net_only.run_nets = {false, true};
+  const RunResult part = run_suite(second_net_only, Context{});
   ASSERT_EQ(part.cases.size(), 3u);  // net b: plain, tcsb@1.0, tcsb@0.5
   for (std::size_t i = 0; i < part.cases.size(); ++i) {
     const CaseResult& c = part.cases[i];
@@ -73,9 +73,9 @@ TEST(Runner, ASelectionOfNetsRunsOnlyTheirCasesAndEachAsInTheWholeRun) {
     }
     EXPECT_EQ(c.ops.samples.size(), w.ops.samples.size()) << c.label;
   }
-  RunOptions none;
-  none.nets = {false, false};
-  EXPECT_TRUE(run_suite(suite, Context{}, none).cases.empty());  // an empty shard: nothing runs, nothing fails
+  Suite none = suite;
+  none.run_nets = {false, false};
+  EXPECT_TRUE(run_suite(none, Context{}).cases.empty());  // an empty shard: nothing runs, nothing fails
 }
 
 }  // namespace
