@@ -5,8 +5,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # Google Benchmark's compare.py (libbenchmark-tools, which needs SciPy) for the test that it reads our exports;
-# clang-format for the format check.
-bash scripts/install-deps.sh libbenchmark-tools python3-scipy clang-format
+# clang-format for the format check; Slurm and munge for the test on a real single-node cluster
+# (scripts/test-slurm.sh).
+bash scripts/install-deps.sh libbenchmark-tools python3-scipy clang-format slurm-wlm munge
 # Formatting first, so a format problem fails in seconds: every C++ source as .clang-format says.
 bash scripts/check-format.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release

@@ -9,6 +9,7 @@
 #include "cli/flag_values.h"
 #include "cli/run_support.h"
 #include "report/report_format.h"
+#include "suite/shard_plan.h"
 
 namespace tcsb::cli {
 namespace {
@@ -40,6 +41,19 @@ void apply_budget_overrides(const RunArgs& args, Suite& suite) {
   }
 }
 
+/// --shard as a ShardIndex (nullopt without it). Only the native JSON carries what `tcsb merge` needs, so a shard
+/// in another format could never be merged: refused too.
+std::optional<ShardIndex> checked_shard(const RunArgs& args) {
+  if (args.shard.empty()) return std::nullopt;
+  const std::optional<ShardIndex> shard = parse_shard_index(args.shard);
+  if (!shard) {
+    throw UsageError("--shard: expected K/N with 1 <= K <= N <= " + std::to_string(kMaxShards) + ", got \"" +
+                     args.shard + "\"");
+  }
+  if (args.format != "json") throw UsageError("--shard: needs --format json (the format `tcsb merge` reads)");
+  return shard;
+}
+
 }  // namespace
 
 CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
@@ -53,27 +67,34 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
   run->add_option("--max-step-ms", args.max_step_ms,
                   "TC-SB time budget per step in ms, 0 to disable (overrides the suite)");
   add_repetitions_option(*run, args.repetitions);
+  run->add_option("--shard", args.shard,
+                  "Run only shard K of N (e.g. 2/4): a deterministic share of the nets, each net's cases together; "
+                  "join the shards' JSON results with `tcsb merge`");
   return run;
 }
 
 int run_command(const RunArgs& args) {
   checked_format(args.format);
+  const std::optional<ShardIndex> shard = checked_shard(args);
   check_out_path(args.out);
   const std::filesystem::path suite_file = resolve_suite(args.suite);
   check_out_is_not_input(args.out, suite_file);
   // The flags are applied inside parse_suite, before its memory check: a suite too large for this machine is
   // refused whether its size comes from the file or from --repetitions / --compression.
-  const Suite suite = parse_suite(suite_file, [&args](Suite& s) {
+  const Suite suite = parse_suite(suite_file, [&args, &shard](Suite& s) {
     apply_budget_overrides(args, s);
     apply_repetitions(args.repetitions, s);
+    // A shard runs only its nets, and the memory check counts only them: it may fit where the whole suite would not.
+    if (shard) s.run_nets = shard_nets(s, *shard);
   });
   return run_and_report(suite, args);
 }
 
 int run_and_report(const Suite& suite, const RunArgs& args) {
   const std::unique_ptr<ReportFormat> format = checked_format(args.format);
+  const std::optional<ShardIndex> shard = checked_shard(args);
   check_out_path(args.out);
-  const RunResult result = run_on_console(suite, args.quiet);
+  const RunResult result = run_on_console(suite, args.quiet, shard);
   return write_report(format->render(result), args.out);
 }
 

@@ -23,6 +23,14 @@ struct RunArgs {
   std::vector<double> compression;    ///< overrides the suite's TC-SB node budgets (fractions), when given
   std::optional<double> max_step_ms;  ///< overrides the suite's time budget per step (ms; 0 disables), when given
   std::optional<int> repetitions;     ///< overrides the suite's repetitions per case, when given
+  std::string shard;                  ///< "K/N": run only shard K of N (suite/shard_plan.h); empty: everything
+};
+
+/// Options of `tcsb merge`.
+struct MergeArgs {
+  std::vector<std::string> shards;  ///< shard result files
+  std::string out;                  ///< output file; empty: stdout
+  bool quiet = false;               ///< no console report on stderr
 };
 
 /// Options of `tcsb reproduce`.
@@ -74,13 +82,19 @@ struct ExportArgs {
   std::string out;     ///< output file; empty: stdout
 };
 
-/// Registers `run SUITE [--out FILE] [--format NAME] [--quiet]`.
+/// Registers `run SUITE [--out FILE] [--format NAME] [--quiet] [--shard K/N]`.
 CLI::App* add_run_command(CLI::App& app, RunArgs& args);
 /// Checks the format and --out, parses the suite, then runs and reports it (run_and_report).
 int run_command(const RunArgs& args);
 /// Runs an already parsed suite and reports it as `args` says; --format and --out must have been checked (they
 /// are checked again, cheaply, so no caller can start a long run that cannot be written).
 int run_and_report(const Suite& suite, const RunArgs& args);
+
+/// Registers `merge SHARD.json... [--out FILE] [--quiet]`.
+CLI::App* add_merge_command(CLI::App& app, MergeArgs& args);
+/// Checks that the shard results make up one suite exactly once, merges them (report/shard_merge.h) and writes the
+/// merged result: 0, or 2 for a bad set of shards (naming the file).
+int merge_command(const MergeArgs& args);
 
 /// Registers `list`.
 CLI::App* add_list_command(CLI::App& app);

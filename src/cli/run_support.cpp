@@ -14,6 +14,7 @@
 #include "run/context.h"
 #include "run/runner.h"
 #include "run/stall.h"
+#include "suite/shard_plan.h"
 
 namespace tcsb::cli {
 
@@ -132,7 +133,7 @@ void warn_stalls(const RunResult& result) {
 
 }  // namespace
 
-RunResult run_on_console(const Suite& suite, bool quiet) {
+RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard) {
   const Context context = gather_context();
   print_warnings(context, std::cerr);
   RunResult result;
@@ -141,6 +142,7 @@ RunResult run_on_console(const Suite& suite, bool quiet) {
     RunOptions options;
     options.progress = [&line](int done, int total, const std::string& label) { line.update(done, total, label); };
     result = run_suite(suite, context, options);
+    result.shard = shard;
   }
   if (!quiet) print_console_report(result, std::cerr);
   warn_diverged(result);

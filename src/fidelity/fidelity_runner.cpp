@@ -275,6 +275,7 @@ FidelityResult run_fidelity(const Suite& suite, const std::vector<std::shared_pt
   const std::vector<FidelitySubjectSpec> plan = fidelity_plan(suite);
   if (!plan.empty()) {
     for (std::size_t n = 0; n < nets.size(); ++n) {
+      if (!nets[n]) continue;  // another shard's net
       run_net(suite, n, nets[n], plan, result.cases);
       if (progress) progress(nets[n]->spec().name);
     }

@@ -26,8 +26,8 @@ namespace tcsb {
 /// Called after each net's pass with the net's name.
 using FidelityProgress = std::function<void(const std::string& net)>;
 
-/// Runs the fidelity pass of `suite` on `nets` (built from suite.nets, same order). Returns no cases when
-/// fidelity_plan(suite) is empty.
+/// Runs the fidelity pass of `suite` on `nets` (built from suite.nets, same order; a null net, another shard's, is
+/// skipped). Returns no cases when fidelity_plan(suite) is empty.
 FidelityResult run_fidelity(const Suite& suite, const std::vector<std::shared_ptr<const Net>>& nets,
                             const FidelityProgress& progress = {});
 

@@ -15,40 +15,12 @@ std::string shorten(std::string text) { return text.size() > 60 ? text.substr(0,
 /// A JSON value for a one-line message: short, never multi-line.
 std::string brief(const ojson& j) { return shorten(j.dump(-1, ' ', false, ojson::error_handler_t::replace)); }
 
-/// The first place where two JSON values differ, as "path: A vs B", or "" when they are equal. Objects are
-/// compared key by key whatever their order.
-std::string first_difference(const ojson& a, const ojson& b, const std::string& path) {
-  if (a.is_object() && b.is_object()) {
-    for (const auto& [key, value] : a.items()) {
-      const std::string sub = path + "." + key;
-      const auto it = b.find(key);
-      if (it == b.end()) return sub + ": " + brief(value) + " vs absent";
-      if (std::string d = first_difference(value, *it, sub); !d.empty()) return d;
-    }
-    for (const auto& [key, value] : b.items()) {
-      if (!a.contains(key)) return path + "." + key + ": absent vs " + brief(value);
-    }
-    return "";
-  }
-  if (a.is_array() && b.is_array()) {
-    if (a.size() != b.size()) {
-      return path + ": " + std::to_string(a.size()) + " vs " + std::to_string(b.size()) + " entries (" + brief(a) +
-             " vs " + brief(b) + ")";
-    }
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      if (std::string d = first_difference(a[i], b[i], path + "[" + std::to_string(i) + "]"); !d.empty()) return d;
-    }
-    return "";
-  }
-  return a == b ? "" : path + ": " + brief(a) + " vs " + brief(b);
-}
-
 void check_same_suite(const ResultView& base, const ResultView& next) {
   // The path is where the file happened to live on each machine; everything else describes what was run.
   ojson a = base.suite, b = next.suite;
   a.erase("path");
   b.erase("path");
-  std::string difference = first_difference(a, b, "suite");
+  std::string difference = first_json_difference(a, b, "suite");
   if (difference.empty()) {
     const auto seed = [](const ResultView& r) { return r.context.contains("seed") ? r.context["seed"] : ojson(); };
     if (seed(base) != seed(next)) difference = "context.seed: " + brief(seed(base)) + " vs " + brief(seed(next));
@@ -156,6 +128,32 @@ std::vector<std::string> machine_differences(const ResultView& base, const Resul
 }
 
 }  // namespace
+
+std::string first_json_difference(const ojson& a, const ojson& b, const std::string& path) {
+  if (a.is_object() && b.is_object()) {
+    for (const auto& [key, value] : a.items()) {
+      const std::string sub = path + "." + key;
+      const auto it = b.find(key);
+      if (it == b.end()) return sub + ": " + brief(value) + " vs absent";
+      if (std::string d = first_json_difference(value, *it, sub); !d.empty()) return d;
+    }
+    for (const auto& [key, value] : b.items()) {
+      if (!a.contains(key)) return path + "." + key + ": absent vs " + brief(value);
+    }
+    return "";
+  }
+  if (a.is_array() && b.is_array()) {
+    if (a.size() != b.size()) {
+      return path + ": " + std::to_string(a.size()) + " vs " + std::to_string(b.size()) + " entries (" + brief(a) +
+             " vs " + brief(b) + ")";
+    }
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      if (std::string d = first_json_difference(a[i], b[i], path + "[" + std::to_string(i) + "]"); !d.empty()) return d;
+    }
+    return "";
+  }
+  return a == b ? "" : path + ": " + brief(a) + " vs " + brief(b);
+}
 
 ResultComparison compare_results(const ResultView& base, const ResultView& next) {
   check_same_suite(base, next);

@@ -60,6 +60,11 @@ struct ResultComparison {
   std::vector<std::string> machine_differences;  ///< context fields that differ, e.g. "cpu_model: \"A\" vs \"B\""
 };
 
+/// The first place where two JSON values differ, as "PATH.key: A vs B" (values shortened to one line), or "" when
+/// they are equal. Objects are compared key by key whatever their order; arrays element by element.
+std::string first_json_difference(const nlohmann::ordered_json& a, const nlohmann::ordered_json& b,
+                                  const std::string& path);
+
 /// Compares `base` with `next`. Cases are matched by label and their repetitions by number, one to one and in any
 /// order (gate/one_to_one_match.h); whatever does not match is a kPresenceMetric change, even when the run is
 /// not deterministic, and only matched cases contribute timings. Throws SuiteMismatch when the suite blocks differ

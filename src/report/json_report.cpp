@@ -5,6 +5,7 @@
 #include "paper/paper_tables.h"
 #include "report/fidelity_json.h"
 #include "report/op_work_json.h"
+#include "report/shard_merge.h"
 
 namespace tcsb {
 namespace {
@@ -221,6 +222,7 @@ ojson native_json(const RunResult& result) {
   doc["schema_version"] = kNativeJsonSchemaVersion;
   doc["tool"] = "tcsb";
   doc["context"] = context_json(result.context, result.suite);
+  if (result.shard) doc["context"]["shard"] = {{"k", result.shard->k}, {"n", result.shard->n}};
   doc["suite"] = suite_json(result.suite);
   doc["cases"] = std::move(cases);
   doc["table1"] = table1_json(result);
@@ -229,6 +231,7 @@ ojson native_json(const RunResult& result) {
   add_fidelity_json(result, doc);  // fidelity, pareto, max_compression: only when the run has a fidelity pass
   doc["status"] = diverged ? "diverged" : "ok";
   doc["wall_s"] = json_number(result.wall_s);
+  if (result.shard) doc["merge_data"] = merge_data_json(result);  // what `tcsb merge` needs beyond the summaries
   return doc;
 }
 

@@ -12,6 +12,7 @@
 #include "run/context.h"
 #include "softbody/op_sample.h"
 #include "suite/case_plan.h"
+#include "suite/shard_plan.h"
 #include "suite/suite.h"
 
 namespace tcsb {
@@ -81,6 +82,9 @@ struct RunResult {
   std::vector<CaseResult> cases;
   std::optional<FidelityResult> fidelity;  ///< the fidelity pass, when the suite enables it and runs TC-SB
   double wall_s = 0;                       ///< wall time of the run (the fidelity pass included)
+  /// Set when this run is one shard of its suite (`tcsb run --shard K/N`): `cases` then holds only the shard's nets'
+  /// cases, and the JSON carries what `tcsb merge` needs (report/shard_merge.h).
+  std::optional<ShardIndex> shard;
 };
 
 }  // namespace tcsb

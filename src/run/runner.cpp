@@ -152,11 +152,17 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
   return rep;
 }
 
-/// The nets of a suite, built once per call (they are immutable and shared by every case of the net).
+/// The nets of a suite, built once per call (they are immutable and shared by every case of the net); a net not
+/// the suite does not run here (Suite::run_nets) is not built (null): a shard must not pay for another's largest net.
 std::vector<std::shared_ptr<const Net>> build_nets(const Suite& suite) {
   std::vector<std::shared_ptr<const Net>> nets;
   nets.reserve(suite.nets.size());
-  for (const NetSpec& spec : suite.nets) {
+  for (std::size_t i = 0; i < suite.nets.size(); ++i) {
+    const NetSpec& spec = suite.nets[i];
+    if (!runs_net(suite, i)) {
+      nets.push_back(nullptr);
+      continue;
+    }
     nets.push_back(naming_out_of_memory("suite " + suite.name + ", net " + spec.name,
                                         [&spec] { return std::make_shared<const Net>(spec); }));
   }
@@ -189,15 +195,18 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
   result.suite = suite;
   result.context = context;
   const std::vector<CaseKey> keys = expand_cases(suite);
-  const std::vector<PlannedRun> plan = interleaved_plan(suite, keys);
+  std::vector<PlannedRun> plan = interleaved_plan(suite, keys);
+  // A shard runs the whole suite's plan restricted to its nets: the order among its cases is the unsharded one.
+  std::erase_if(plan, [&](const PlannedRun& run) { return !runs_net(suite, keys[run.case_index].net); });
 
   const std::vector<std::shared_ptr<const Net>> nets = build_nets(suite);
 
   result.cases.resize(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i) {
     CaseResult& c = result.cases[i];
-    const Net& net = *nets[keys[i].net];
     c.key = keys[i];
+    if (!nets[keys[i].net]) continue;  // another shard's case: dropped below
+    const Net& net = *nets[keys[i].net];
     c.label = case_label(suite, keys[i]);
     c.net_name = net.spec().name;
     c.net_nodes = static_cast<std::int64_t>(net.node_count());
@@ -207,10 +216,13 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
 
   // The fidelity pass runs after every timed repetition, one pass per net, so it cannot disturb their timings.
   const bool fidelity = !fidelity_plan(suite).empty();
-  const int total = static_cast<int>(plan.size() + (fidelity ? nets.size() : 0));
+  const auto built = static_cast<std::size_t>(std::count_if(nets.begin(), nets.end(), [](const auto& n) { return n; }));
+  const int total = static_cast<int>(plan.size() + (fidelity ? built : 0));
   int done = 0;
   run_plan(result, plan, std::vector<int>(keys.size(), 0), nets, options, done, total);
   for (CaseResult& c : result.cases) summarize_case(c);
+  // Only now, when no index into result.cases is needed any more: drop the cases of nets this process did not run.
+  std::erase_if(result.cases, [&](const CaseResult& c) { return !runs_net(suite, c.key.net); });
   if (fidelity) {
     result.fidelity = naming_out_of_memory("suite " + suite.name + ", fidelity pass", [&] {
       return run_fidelity(suite, nets, [&](const std::string& net) {

@@ -161,6 +161,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   Suite s;
   s.path = file;
   s.sha256 = sha256_hex(text);
+  s.source = text;
   s.name = r.string(root.need("name"), "name");
   if (s.name.empty()) r.fail("name", "must not be empty");
   if (const json* d = root.find("description")) s.description = r.string(*d, "description");

@@ -46,6 +46,7 @@ struct Suite {
   std::string description;
   std::filesystem::path path;  ///< where it was read from
   std::string sha256;          ///< SHA-256 of the file's bytes
+  std::string source;          ///< the file's bytes (a shard carries them, so `tcsb merge` can rebuild the suite)
   std::vector<NetSpec> nets;
   std::vector<Method> methods;  ///< in the order repetitions interleave them
   /// TC-SB (and plain_equal) node budgets as fractions of the initial count; 1.0 = none.
@@ -59,7 +60,15 @@ struct Suite {
   TcSettings tcsb;
   FeedbackSettings feedback;
   FidelitySettings fidelity;
+  /// The nets this process runs, indexed like `nets` (a shard's, suite/shard_plan.h); empty: all. Not a setting of
+  /// the suite (results never record it): the runner runs and the memory check counts only these nets' cases.
+  std::vector<bool> run_nets;
 };
+
+/// Whether `suite` runs net `net` in this process (Suite::run_nets).
+inline bool runs_net(const Suite& suite, std::size_t net) {
+  return suite.run_nets.empty() || (net < suite.run_nets.size() && suite.run_nets[net]);
+}
 
 /// Changes the command line makes to a parsed suite (--repetitions, --compression, ...); throws to reject them.
 using SuiteAdjustment = std::function<void(Suite&)>;

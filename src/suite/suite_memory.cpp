@@ -64,18 +64,21 @@ double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
 }  // namespace
 
 double recorder_peak_bytes(const Suite& suite) {
-  const double runs = static_cast<double>(expand_cases(suite).size()) * suite.repetitions;
+  double cases = 0;
+  for (const CaseKey& key : expand_cases(suite)) cases += runs_net(suite, key.net) ? 1 : 0;
+  const double runs = cases * suite.repetitions;
   return runs * (static_cast<double>(suite.steps) + suite.warmup_steps) * kSampleBytes;
 }
 
 namespace {
 
 std::size_t peak_net_index(const Suite& suite) {
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < suite.nets.size(); ++i) {
-    if (net_peak_bytes(suite, suite.nets[i]) > net_peak_bytes(suite, suite.nets[best])) best = i;
+  std::optional<std::size_t> best;
+  for (std::size_t i = 0; i < suite.nets.size(); ++i) {
+    if (!runs_net(suite, i)) continue;
+    if (!best || net_peak_bytes(suite, suite.nets[i]) > net_peak_bytes(suite, suite.nets[*best])) best = i;
   }
-  return best;
+  return best.value_or(0);
 }
 
 }  // namespace
@@ -91,7 +94,8 @@ std::string format_bytes(double bytes) {
 
 std::uint64_t estimate_peak_bytes(const Suite& suite) {
   double peak = 0;
-  for (const NetSpec& net : suite.nets) peak = std::max(peak, net_peak_bytes(suite, net));
+  for (std::size_t i = 0; i < suite.nets.size(); ++i)
+    if (runs_net(suite, i)) peak = std::max(peak, net_peak_bytes(suite, suite.nets[i]));
   const double bytes = std::ceil(peak + recorder_peak_bytes(suite));
   constexpr double kMax = 1.8e19;  // just under 2^64: saturate rather than overflow
   return bytes >= kMax ? std::numeric_limits<std::uint64_t>::max() : static_cast<std::uint64_t>(bytes);
@@ -99,7 +103,9 @@ std::uint64_t estimate_peak_bytes(const Suite& suite) {
 
 std::optional<MemoryShortfall> memory_shortfall(const Suite& suite, const std::vector<MemoryHeadroom>& headrooms) {
   const std::optional<MemoryHeadroom> smallest = smallest_headroom(headrooms);
-  if (!smallest || suite.nets.empty()) return std::nullopt;
+  bool runs_any = false;
+  for (std::size_t i = 0; i < suite.nets.size(); ++i) runs_any = runs_any || runs_net(suite, i);
+  if (!smallest || !runs_any) return std::nullopt;
   MemoryShortfall s;
   s.needed = static_cast<double>(estimate_peak_bytes(suite));
   s.headroom = *smallest;

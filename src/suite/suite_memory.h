@@ -14,7 +14,8 @@
 namespace tcsb {
 
 /// Bytes a run of this suite needs at most for its largest net (all methods' bodies alive at once), an estimate
-/// used to reject suites that would not fit.
+/// used to reject suites that would not fit. Only the nets the suite runs in this process count (Suite::run_nets),
+/// here and below: a shard of small nets fits where the whole suite would not.
 std::uint64_t estimate_peak_bytes(const Suite& suite);
 
 /// Bytes the step recorder needs: one sample per step (warm-up included) of every repetition of every case.

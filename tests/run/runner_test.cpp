@@ -106,5 +106,30 @@ TEST(Runner, StepBreakdownAccountsForTheOperationsAndForStockSteps) {
   }
 }
 
+TEST(Runner, ASelectionOfNetsRunsOnlyTheirCasesAndEachAsInTheWholeRun) {
+  const Suite suite = two_nets();
+  const RunResult whole = run_suite(suite, Context{});
+  Suite second_net_only = suite;
+  second_net_only.run_nets = {false, true};
+  const RunResult part = run_suite(second_net_only, Context{});
+  ASSERT_EQ(part.cases.size(), 3u);  // net b: plain, tcsb@1.0, tcsb@0.5
+  for (std::size_t i = 0; i < part.cases.size(); ++i) {
+    const CaseResult& c = part.cases[i];
+    const CaseResult& w = whole.cases[3 + i];
+    EXPECT_EQ(c.label, w.label);
+    EXPECT_EQ(c.key.net, 1u);  // the suite-wide net index, so seeds and labels are the whole suite's
+    ASSERT_EQ(c.repetitions.size(), w.repetitions.size());
+    for (std::size_t r = 0; r < c.repetitions.size(); ++r) {
+      EXPECT_EQ(c.repetitions[r].final_state_hash, w.repetitions[r].final_state_hash) << c.label;
+      EXPECT_EQ(c.repetitions[r].mean_nodes, w.repetitions[r].mean_nodes) << c.label;
+      EXPECT_EQ(c.repetitions[r].operations, w.repetitions[r].operations) << c.label;
+    }
+    EXPECT_EQ(c.ops.samples.size(), w.ops.samples.size()) << c.label;
+  }
+  Suite none = suite;
+  none.run_nets = {false, false};
+  EXPECT_TRUE(run_suite(none, Context{}).cases.empty());  // an empty shard: nothing runs, nothing fails
+}
+
 }  // namespace
 }  // namespace tcsb

@@ -49,6 +49,34 @@ TEST(SuiteMemory, ShortfallNamesTheLargestNet) {
   EXPECT_FALSE(shortfall->recorder);
 }
 
+// A shard (Suite::run_nets) needs only its own nets' memory: a shard of small nets fits where the whole suite,
+// with a net far too large, would not.
+TEST(SuiteMemory, OnlyTheNetsRunCount) {
+  Suite s;
+  s.methods = {Method::kPlain, Method::kTcsb};
+  s.compression = {1.0};
+  s.repetitions = 2;
+  NetSpec small;
+  small.width = small.height = 33;
+  NetSpec huge = small;
+  huge.width = huge.height = 1 << 17;
+  s.nets = {small, huge, small};
+  const std::uint64_t whole = estimate_peak_bytes(s);
+  const double whole_recorder = recorder_peak_bytes(s);
+  const std::vector<MemoryHeadroom> plenty_for_small{{"MemAvailable", 1ull << 32}};
+  ASSERT_TRUE(memory_shortfall(s, plenty_for_small));
+  s.run_nets = {true, false, true};
+  EXPECT_LT(estimate_peak_bytes(s), whole / 1000);
+  EXPECT_DOUBLE_EQ(recorder_peak_bytes(s), whole_recorder * 2 / 3);  // two of the three nets' cases
+  EXPECT_FALSE(memory_shortfall(s, plenty_for_small));
+  s.run_nets = {false, true, false};
+  const std::optional<MemoryShortfall> huge_alone = memory_shortfall(s, plenty_for_small);
+  ASSERT_TRUE(huge_alone);
+  EXPECT_EQ(huge_alone->net, 1u);
+  s.run_nets = {false, false, false};  // an empty shard runs nothing: nothing to refuse
+  EXPECT_FALSE(memory_shortfall(s, plenty_for_small));
+}
+
 // Issue 23: the guard read only MemAvailable; the smallest headroom (a cgroup, ulimit -v) is the one that binds.
 TEST(SuiteMemory, ShortfallUsesTheSmallestHeadroom) {
   Suite s;

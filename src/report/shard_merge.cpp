@@ -1,0 +1,420 @@
+#include "report/shard_merge.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "gate/result_comparison.h"
+#include "report/json_report.h"
+#include "run/case_summary.h"
+#include "suite/fidelity_plan.h"
+
+namespace tcsb {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+/// The OpSample columns, in merge_data order, besides the work counts.
+constexpr const char* kSampleColumns[] = {"kind", "node_ns", "link_ns", "nodes", "links", "interior"};
+
+/// The context fields that make two shards different builds: their cases would not be one program's measurements.
+constexpr const char* kBuildKeys[] = {"git_commit", "tcsb_version", "compiler",       "cxx_flags",
+                                      "build_type", "sanitized",    "bullet_version", "bullet_precision"};
+
+/// The context fields that tell machines apart for absolute times (what `tcsb compare` warns about, and the host).
+constexpr const char* kMachineKeys[] = {"host", "cpu_model", "cores", "transparent_hugepages", "glibc_tunables"};
+
+/// Typed reading of one shard document; every failure names the file and the field.
+class Reader {
+ public:
+  explicit Reader(const std::string& file) : file_(file) {}
+  [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
+    throw ResultFileError(file_, field, problem);
+  }
+  const ojson& at(const ojson& parent, const std::string& path, const std::string& key) const {
+    const std::string field = path.empty() ? key : path + "." + key;
+    if (!parent.is_object() || !parent.contains(key)) fail(field, "missing");
+    return parent[key];
+  }
+  std::string string(const ojson& parent, const std::string& path, const std::string& key) const {
+    const ojson& j = at(parent, path, key);
+    if (!j.is_string()) fail(path + "." + key, "must be a string");
+    return j.get<std::string>();
+  }
+  /// A number; null (what the writer makes of NaN) reads as NaN, so writing it again gives null again.
+  double number(const ojson& parent, const std::string& path, const std::string& key) const {
+    const ojson& j = at(parent, path, key);
+    if (j.is_null()) return std::numeric_limits<double>::quiet_NaN();
+    if (!j.is_number()) fail(path + "." + key, "must be a number or null");
+    return j.get<double>();
+  }
+  std::int64_t integer(const ojson& parent, const std::string& path, const std::string& key) const {
+    const ojson& j = at(parent, path, key);
+    if (!j.is_number_integer()) fail(path + "." + key, "must be an integer");
+    return j.get<std::int64_t>();
+  }
+  std::optional<int> integer_or_null(const ojson& parent, const std::string& path, const std::string& key) const {
+    if (at(parent, path, key).is_null()) return std::nullopt;
+    return static_cast<int>(integer(parent, path, key));
+  }
+  std::optional<double> number_or_null(const ojson& parent, const std::string& path, const std::string& key) const {
+    if (at(parent, path, key).is_null()) return std::nullopt;
+    return number(parent, path, key);
+  }
+
+ private:
+  const std::string& file_;
+};
+
+/// A shard's index from context.shard.
+ShardIndex shard_index_of(const ShardDocument& shard) {
+  const Reader r(shard.file);
+  const ojson& context = r.at(shard.document, "", "context");
+  if (!context.contains("shard")) {
+    r.fail("context.shard", "missing: not a shard's result (write shards with `tcsb run SUITE --shard K/N`)");
+  }
+  const ojson& s = context["shard"];
+  const std::int64_t k = r.integer(s, "context.shard", "k"), n = r.integer(s, "context.shard", "n");
+  if (n < 1 || n > kMaxShards || k < 1 || k > n) {
+    r.fail("context.shard", "k " + std::to_string(k) + " of n " + std::to_string(n) + " is not a shard index");
+  }
+  return {static_cast<int>(k), static_cast<int>(n)};
+}
+
+/// The suite the shards ran: the file's text from merge_data, with the effective settings of the result's suite
+/// block (a run may narrow the methods and override compression, repetitions and the time budget), checked to
+/// render exactly as that block.
+Suite rebuild_suite(const ShardDocument& shard) {
+  const Reader r(shard.file);
+  const ojson& doc = shard.document;
+  const std::string text = r.string(r.at(doc, "", "merge_data"), "merge_data", "suite_file");
+  const ojson& block = r.at(doc, "", "suite");
+  Suite suite;
+  try {
+    suite = parse_suite_text(text, shard.file + ": merge_data.suite_file", [&](Suite& s) {
+      s.methods.clear();
+      for (const ojson& m : r.at(block, "suite", "methods")) {
+        const std::string name = m.is_string() ? m.get<std::string>() : "";
+        const Method known[] = {Method::kPlain, Method::kBulletPatch, Method::kTcsb};
+        const auto* it =
+            std::find_if(std::begin(known), std::end(known), [&](Method k) { return name == method_name(k); });
+        if (it == std::end(known)) r.fail("suite.methods", "unknown method " + m.dump());
+        s.methods.push_back(*it);
+      }
+      s.compression.clear();
+      for (const ojson& c : r.at(block, "suite", "compression"))
+        s.compression.push_back(c.is_number() ? c.get<double>() : 0);
+      s.repetitions = static_cast<int>(r.integer(block, "suite", "repetitions"));
+      s.feedback.max_step_ms = r.number(r.at(block, "suite", "feedback"), "suite.feedback", "max_step_ms");
+      s.run_nets.assign(s.nets.size(), false);  // merging runs nothing: no memory check for the suite's nets here
+    });
+  } catch (const InputError& e) {
+    throw ResultFileError(shard.file, "merge_data.suite_file", e.what());
+  }
+  suite.run_nets.clear();
+  suite.path = r.string(block, "suite", "path");
+  if (const std::string d = first_json_difference(suite_json(suite), block, "suite"); !d.empty()) {
+    r.fail("suite", "does not match the suite file in merge_data.suite_file (" + d + ")");
+  }
+  return suite;
+}
+
+/// A repetition as the result records it (the per-step series are not in the file and no table reads them).
+RepetitionResult read_repetition(const Reader& r, const ojson& j, const std::string& path) {
+  RepetitionResult rep;
+  rep.repetition = static_cast<int>(r.integer(j, path, "repetition"));
+  rep.status = r.string(j, path, "status");
+  rep.diverged_step = r.integer_or_null(j, path, "diverged_step");
+  rep.diverged_reason = r.string(j, path, "diverged_reason");
+  rep.mean_step_ms = r.number(j, path, "mean_step_ms");
+  rep.median_step_ms = r.number(j, path, "median_step_ms");
+  rep.mean_nodes = r.number(j, path, "mean_nodes");
+  rep.mean_links = r.number(j, path, "mean_links");
+  rep.mean_interpolations = r.number(j, path, "mean_interpolations");
+  rep.mean_feedback_ms = r.number(j, path, "mean_feedback_ms");
+  rep.mean_feedback_total_ms = r.number(j, path, "mean_feedback_total_ms");
+  rep.operations = r.integer(j, path, "operations");
+  rep.final_state_hash = r.string(j, path, "final_state_hash");
+  rep.build_ms = r.number(j, path, "build_ms");
+  return rep;
+}
+
+/// A TC-SB case's operation samples from merge_data.op_samples, column by column.
+std::vector<OpSample> read_op_samples(const Reader& r, const ojson& data, const std::string& label) {
+  const std::string path = "merge_data.op_samples." + label;
+  const ojson& columns = r.at(r.at(data, "merge_data", "op_samples"), "merge_data.op_samples", label);
+  const ojson& work = r.at(columns, path, "work");
+  std::vector<const ojson*> all;
+  for (const char* c : kSampleColumns) all.push_back(&r.at(columns, path, c));
+  for (int w = 0; w < kOpWorkCountKinds; ++w)
+    all.push_back(&r.at(work, path + ".work", op_work_count_name(OpWorkCount(w))));
+  const std::size_t size = all.front()->is_array() ? all.front()->size() : 0;
+  for (const ojson* column : all) {
+    if (!column->is_array() || column->size() != size) r.fail(path, "columns must be arrays of one length");
+    for (const ojson& v : *column)
+      if (!v.is_number_integer()) r.fail(path, "columns must hold integers");
+  }
+  const auto value = [&](std::size_t column, std::size_t i) { return (*all[column])[i].get<std::int32_t>(); };
+  std::vector<OpSample> samples(size);
+  for (std::size_t i = 0; i < size; ++i) {
+    const std::int32_t kind = value(0, i);
+    if (kind < 0 || kind >= kOpKindCount) r.fail(path + ".kind", "must be 0 to " + std::to_string(kOpKindCount - 1));
+    OpWork w;
+    std::int32_t* counts[] = {
+        &w.nodes,         &w.links, &w.tree_records, &w.dbvt_leaves, &w.relocation_nodes, &w.relocation_links,
+        &w.dbvt_ancestors};
+    for (int c = 0; c < kOpWorkCountKinds; ++c) *counts[c] = value(6 + static_cast<std::size_t>(c), i);
+    w.interior = value(5, i) != 0;
+    samples[i] = OpSample(static_cast<OpKind>(kind), value(1, i), value(2, i), value(3, i), value(4, i), w);
+  }
+  return samples;
+}
+
+/// A fidelity case of net `net`, subject `subject`, as the shard's fidelity section records it.
+FidelityCase read_fidelity_case(const Reader& r, const ojson& j, const std::string& path, std::size_t net,
+                                const FidelitySubjectSpec& subject) {
+  FidelityCase c;
+  c.net = net;
+  c.net_name = r.string(j, path, "net");
+  c.subject = subject;
+  if (r.string(j, path, "method") != fidelity_method_name(subject.method)) {
+    r.fail(path + ".method", "expected " + std::string(fidelity_method_name(subject.method)) + " here");
+  }
+  c.target_nodes = static_cast<int>(r.integer(j, path, "target_nodes"));
+  c.mean_nodes = r.number(j, path, "N");
+  const ojson& grid = r.at(j, path, "grid");
+  c.grid = grid.is_string() ? grid.get<std::string>() : "";
+  c.status = r.string(j, path, "status");
+  c.diverged_step = r.integer_or_null(j, path, "diverged_step");
+  c.diverged_reason = r.string(j, path, "diverged_reason");
+  const auto metric = [&](const char* key) {
+    MetricSummary m;
+    const ojson& s = r.at(j, path, key);
+    const std::string sub = path + "." + key;
+    if (r.at(s, sub, "mean").is_null()) return m;  // never measured: count 0, as the writer's null says
+    m.count = 1;  // the file does not keep the step count; the tables only ask whether there is one
+    m.mean = r.number(s, sub, "mean");
+    m.p95 = r.number(s, sub, "p95");
+    m.max = r.number(s, sub, "max");
+    return m;
+  };
+  c.rms_pct = metric("rms_pct");
+  c.max_pct = metric("max_pct");
+  c.weighted_rms_pct = metric("weighted_rms_pct");
+  c.popping_pct = metric("popping_pct");
+  c.energy_drift_pct = metric("energy_drift_pct");
+  c.step_ms = r.number(j, path, "step_ms");
+  c.reference_step_ms = r.number(j, path, "reference_step_ms");
+  c.switch_ms = r.number_or_null(j, path, "switch_ms");
+  c.switch_step = r.integer_or_null(j, path, "switch_step");
+  c.converged_step = r.integer_or_null(j, path, "converged_step");
+  c.final_state_hash = r.string(j, path, "final_state_hash");
+  return c;
+}
+
+/// What one shard contributes: its cases (by suite-wide case index) and fidelity cases (by net).
+struct ShardPart {
+  std::map<std::size_t, CaseResult> cases;
+  std::map<std::size_t, std::vector<FidelityCase>> fidelity;
+  double fidelity_wall_s = 0;
+};
+
+/// Reads the cases of `shard`, which must be exactly those its index assigns, in the unsharded order.
+ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const ShardIndex& index) {
+  const Reader r(shard.file);
+  const ojson& doc = shard.document;
+  const std::vector<bool> nets = shard_nets(suite, index);
+  const std::vector<CaseKey> keys = expand_cases(suite);
+  std::vector<std::size_t> expected;
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    if (nets[keys[i].net]) expected.push_back(i);
+  const ojson& cases = r.at(doc, "", "cases");
+  if (!cases.is_array() || cases.size() != expected.size()) {
+    r.fail("cases", std::to_string(cases.is_array() ? cases.size() : 0) + " cases, but shard " + shard_text(index) +
+                        " of suite " + suite.name + " has " + std::to_string(expected.size()));
+  }
+  ShardPart part;
+  for (std::size_t e = 0; e < expected.size(); ++e) {
+    const std::size_t index_in_suite = expected[e];
+    const std::string path = "cases[" + std::to_string(e) + "]";
+    const ojson& j = cases[e];
+    CaseResult c;
+    c.key = keys[index_in_suite];
+    c.label = r.string(j, path, "label");
+    if (c.label != case_label(suite, c.key)) {
+      r.fail(path + ".label",
+             "\"" + c.label + "\", but shard " + shard_text(index) + " has \"" + case_label(suite, c.key) + "\" here");
+    }
+    c.net_name = r.string(j, path, "net");
+    c.net_nodes = r.integer(j, path, "net_nodes");
+    c.net_links = r.integer(j, path, "net_links");
+    c.target_nodes = static_cast<int>(r.integer(j, path, "target_nodes"));
+    const ojson& reps = r.at(j, path, "repetitions");
+    for (std::size_t k = 0; k < reps.size(); ++k) {
+      c.repetitions.push_back(read_repetition(r, reps[k], path + ".repetitions[" + std::to_string(k) + "]"));
+    }
+    if (c.key.method == Method::kTcsb) c.ops.samples = read_op_samples(r, r.at(doc, "", "merge_data"), c.label);
+    summarize_case(c);  // the run's own summary of the repetitions, so the merged case is the unsharded one
+    part.cases.emplace(index_in_suite, std::move(c));
+  }
+  const std::vector<FidelitySubjectSpec> plan = fidelity_plan(suite);
+  if (plan.empty()) return part;
+  const ojson& fidelity = r.at(doc, "", "fidelity");
+  const ojson& fcases = r.at(fidelity, "fidelity", "cases");
+  std::size_t next = 0;
+  for (std::size_t net = 0; net < suite.nets.size(); ++net) {
+    if (!nets[net]) continue;
+    for (const FidelitySubjectSpec& subject : plan) {
+      const std::string path = "fidelity.cases[" + std::to_string(next) + "]";
+      if (next >= fcases.size()) r.fail(path, "missing (net " + suite.nets[net].name + ")");
+      part.fidelity[net].push_back(read_fidelity_case(r, fcases[next], path, net, subject));
+      ++next;
+    }
+  }
+  if (next != fcases.size()) r.fail("fidelity.cases", "more cases than shard " + shard_text(index) + " runs");
+  part.fidelity_wall_s = r.number(fidelity, "fidelity", "wall_s");
+  return part;
+}
+
+/// Fails naming `shard` when its `key` in `block` differs from the first shard's.
+void check_same(const ShardDocument& first, const ShardDocument& shard, const char* block, const char* key,
+                const char* what) {
+  const ojson& a = first.document[block];
+  const ojson& b = shard.document[block];
+  const ojson va = a.contains(key) ? a[key] : ojson(), vb = b.contains(key) ? b[key] : ojson();
+  if (va != vb) {
+    throw ResultFileError(shard.file, std::string(block) + "." + key,
+                          vb.dump() + ", but " + first.file + " has " + va.dump() + ": " + what);
+  }
+}
+
+}  // namespace
+
+ojson merge_data_json(const RunResult& result) {
+  ojson samples = ojson::object();
+  for (const CaseResult& c : result.cases) {
+    if (c.key.method != Method::kTcsb) continue;
+    ojson columns = ojson::object();
+    for (const char* name : kSampleColumns) columns[name] = ojson::array();
+    ojson work = ojson::object();
+    for (int w = 0; w < kOpWorkCountKinds; ++w) work[op_work_count_name(OpWorkCount(w))] = ojson::array();
+    for (const OpSample& s : c.ops.samples) {
+      columns["kind"].push_back(static_cast<int>(s.kind));
+      columns["node_ns"].push_back(s.node_ns);
+      columns["link_ns"].push_back(s.link_ns);
+      columns["nodes"].push_back(s.nodes);
+      columns["links"].push_back(s.links);
+      columns["interior"].push_back(s.work.interior ? 1 : 0);
+      for (int w = 0; w < kOpWorkCountKinds; ++w) {
+        work[op_work_count_name(OpWorkCount(w))].push_back(op_work_count(s.work, OpWorkCount(w)));
+      }
+    }
+    columns["work"] = std::move(work);
+    samples[c.label] = std::move(columns);
+  }
+  return {{"suite_file", result.suite.source}, {"op_samples", std::move(samples)}};
+}
+
+MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
+  if (shards.empty()) throw ResultFileError("tcsb merge", "", "no shard results given");
+  std::vector<ShardIndex> indices;
+  for (const ShardDocument& s : shards) indices.push_back(shard_index_of(s));
+  const ShardDocument& first = shards.front();
+  const int n = indices.front().n;
+  std::map<int, std::size_t> given;  // k -> position in `shards`
+  for (std::size_t i = 0; i < shards.size(); ++i) {
+    const ShardDocument& s = shards[i];
+    if (indices[i].n != n) {
+      throw ResultFileError(s.file, "context.shard",
+                            "shard " + shard_text(indices[i]) + ", but " + first.file + " is a shard of " +
+                                std::to_string(n) + ": not one split");
+    }
+    check_same(first, s, "context", "suite_sha256", "shards of different suite files");
+    check_same(first, s, "suite", "name", "shards of different suites");
+    check_same(first, s, "context", "seed", "shards of different seeds");
+    for (const char* key : kBuildKeys) check_same(first, s, "context", key, "shards of different builds");
+    ojson a = first.document["suite"], b = s.document["suite"];
+    a.erase("path");
+    b.erase("path");
+    if (const std::string d = first_json_difference(b, a, "suite"); !d.empty()) {
+      throw ResultFileError(s.file, "suite", "settings differ from " + first.file + "'s (" + d + ")");
+    }
+    if (const auto [it, fresh] = given.emplace(indices[i].k, i); !fresh) {
+      throw ResultFileError(s.file, "context.shard",
+                            "shard " + shard_text(indices[i]) + " given twice (also " + shards[it->second].file + ")");
+    }
+  }
+  for (int k = 1; k <= n; ++k) {
+    if (!given.contains(k)) {
+      std::string files;
+      for (const ShardDocument& s : shards) files += (files.empty() ? "" : ", ") + s.file;
+      throw ResultFileError(files, "context.shard", "shard " + shard_text({k, n}) + " is missing");
+    }
+  }
+
+  MergedShards merged;
+  RunResult& result = merged.result;
+  result.suite = rebuild_suite(shards[given.at(1)]);
+  std::map<std::size_t, CaseResult> cases;
+  std::map<std::size_t, std::vector<FidelityCase>> fidelity;
+  double fidelity_wall_s = 0;
+  for (const auto& [k, i] : given) {
+    ShardPart part = read_shard(shards[i], result.suite, indices[i]);
+    cases.merge(part.cases);
+    fidelity.merge(part.fidelity);
+    fidelity_wall_s += part.fidelity_wall_s;
+    // The sum of the shards' wall times: the machine time the suite took, wherever and however parallel it ran.
+    const ojson& wall = shards[i].document["wall_s"];
+    if (wall.is_number()) result.wall_s += wall.get<double>();
+  }
+  for (auto& [index, c] : cases) result.cases.push_back(std::move(c));
+  if (!fidelity_plan(result.suite).empty()) {
+    FidelityResult f;
+    f.rms_threshold_pct = result.suite.fidelity.rms_threshold_pct;
+    for (auto& [net, list] : fidelity)
+      for (FidelityCase& c : list) f.cases.push_back(std::move(c));
+    f.wall_s = fidelity_wall_s;
+    result.fidelity = std::move(f);
+  }
+
+  // The context: shard 1's, without its index, with every shard's warnings once and the merge's own.
+  merged.context = shards[given.at(1)].document["context"];
+  merged.context.erase("shard");
+  std::vector<std::string> warnings;
+  for (const auto& [k, i] : given) {
+    const ojson& list = shards[i].document["context"]["warnings"];
+    for (const ojson& w : list) {
+      const std::string text = "shard " + std::to_string(k) + ": " + w.get<std::string>();
+      warnings.push_back(text);
+    }
+  }
+  std::set<std::string> machines;
+  std::string machine_list;
+  for (const auto& [k, i] : given) {
+    ojson facts = ojson::object();
+    for (const char* key : kMachineKeys) facts[key] = shards[i].document["context"].value(key, ojson());
+    if (machines.insert(facts.dump()).second) {
+      machine_list += (machine_list.empty() ? "" : "; ") + std::string("shard ") + std::to_string(k) + " on " +
+                      facts["host"].dump() + " (" + facts["cpu_model"].dump() + ")";
+    }
+  }
+  if (machines.size() > 1) {
+    merged.warnings.push_back("shards ran on different machines (" + machine_list +
+                              "): absolute step times mix machines; the same-run ratios stay valid, each measured "
+                              "within one shard");
+  }
+  for (const std::string& w : merged.warnings) warnings.push_back(w);
+  merged.context["warnings"] = warnings;
+  merged.context["merged_shards"] = n;
+  return merged;
+}
+
+ojson merged_json(const MergedShards& merged) {
+  ojson doc = native_json(merged.result);
+  doc["context"] = merged.context;
+  return doc;
+}
+
+}  // namespace tcsb

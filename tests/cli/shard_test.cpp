@@ -1,0 +1,302 @@
+// `tcsb run --shard K/N` and `tcsb merge`: merged shards are the unsharded run in every deterministic field, and bad
+// sets of shards are refused with one line naming the file, nothing written.
+#include <nlohmann/json.hpp>
+
+#include <set>
+
+#include "cli_fixture.h"
+
+namespace tcsb::cli_test {
+namespace {
+
+using json = nlohmann::json;
+
+/// Three small nets, plain and TC-SB: quick shards with a real split (the nets land in different shards).
+std::string three_net_suite(const std::string& name, bool fidelity = false) {
+  std::string nets;
+  for (const int w : {9, 11, 13}) {
+    nets += std::string(nets.empty() ? "" : ", ") + R"({"name": "n)" + std::to_string(w) + R"(", "width": )" +
+            std::to_string(w) + R"(, "height": )" + std::to_string(w) +
+            R"(, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0}, "pinned": "corners"})";
+  }
+  return R"({"name": ")" + name + R"(", "description": "three small nets for the shard tests", "nets": [)" + nets +
+         R"(], "methods": ["plain", "tcsb"], "compression": [1.0, 0.5], "dt": 0.016666666666666666, "gravity": 9.81,
+  "steps": 16, "warmup_steps": 4, "repetitions": 2, "seed": 3, "solver": {"piterations": 2},
+  "fidelity": {"enabled": )" +
+         (fidelity ? "true" : "false") + R"(, "rms_threshold_pct": 1.0, "pareto_targets": [], "ablations": false}})";
+}
+
+/// Every field of a result that does not depend on the machine's speed must be equal: the cases in order with their
+/// N, L, I, statuses, operation work and every repetition's counts and final-state hash; the tables' deterministic
+/// columns; the suite; the fidelity pass's deterministic fields.
+void expect_same_deterministic_fields(const json& a, const json& b) {
+  json sa = a["suite"], sb = b["suite"];
+  EXPECT_EQ(sa, sb);
+  EXPECT_EQ(a["status"], b["status"]);
+  ASSERT_EQ(a["cases"].size(), b["cases"].size());
+  for (std::size_t i = 0; i < a["cases"].size(); ++i) {
+    const json &ca = a["cases"][i], &cb = b["cases"][i];
+    SCOPED_TRACE(ca["label"].get<std::string>());
+    for (const char* key : {"label", "net", "method", "compression", "target_nodes", "net_nodes", "net_links", "status",
+                            "mean_nodes", "mean_links", "mean_interpolations"}) {
+      EXPECT_EQ(ca[key], cb[key]) << key;
+    }
+    EXPECT_EQ(ca.value("op_work", json()), cb.value("op_work", json()));
+    EXPECT_EQ(ca["step_ms"]["count"], cb["step_ms"]["count"]);
+    ASSERT_EQ(ca["repetitions"].size(), cb["repetitions"].size());
+    for (std::size_t r = 0; r < ca["repetitions"].size(); ++r) {
+      const json &ra = ca["repetitions"][r], &rb = cb["repetitions"][r];
+      for (const char* key : {"repetition", "status", "diverged_step", "mean_nodes", "mean_links",
+                              "mean_interpolations", "operations", "final_state_hash"}) {
+        EXPECT_EQ(ra[key], rb[key]) << "repetition " << r << " " << key;
+      }
+    }
+  }
+  ASSERT_EQ(a["table1"].size(), b["table1"].size());
+  for (std::size_t i = 0; i < a["table1"].size(); ++i) {
+    for (const char* key : {"operation", "N", "L", "count"}) EXPECT_EQ(a["table1"][i][key], b["table1"][i][key]);
+  }
+  ASSERT_EQ(a["table2"].size(), b["table2"].size());
+  for (std::size_t i = 0; i < a["table2"].size(); ++i) {
+    for (const char* key : {"method", "compression", "N", "L", "I", "node_ratio", "nets", "status"}) {
+      EXPECT_EQ(a["table2"][i][key], b["table2"][i][key]) << key;
+    }
+  }
+  ASSERT_EQ(a["scaling"]["step_ms_vs_nodes"].size(), b["scaling"]["step_ms_vs_nodes"].size());
+  ASSERT_EQ(a.contains("fidelity"), b.contains("fidelity"));
+  if (a.contains("fidelity")) {
+    ASSERT_EQ(a["fidelity"]["cases"].size(), b["fidelity"]["cases"].size());
+    for (std::size_t i = 0; i < a["fidelity"]["cases"].size(); ++i) {
+      const json &fa = a["fidelity"]["cases"][i], &fb = b["fidelity"]["cases"][i];
+      for (const char* key : {"net", "method", "compression", "target_nodes", "N", "status", "rms_pct", "max_pct",
+                              "popping_pct", "energy_drift_pct", "converged_step", "final_state_hash"}) {
+        EXPECT_EQ(fa[key], fb[key]) << "fidelity case " << i << " " << key;
+      }
+    }
+    for (std::size_t i = 0; i < a["fidelity"]["rows"].size(); ++i) {
+      EXPECT_EQ(a["fidelity"]["rows"][i]["rms_pct"], b["fidelity"]["rows"][i]["rms_pct"]);
+    }
+    EXPECT_EQ(a["max_compression"]["compression"], b["max_compression"]["compression"]);
+  }
+}
+
+class Shards : public Cli {
+ protected:
+  json load(const std::string& file) const { return json::parse(read_file(dir_ / file)); }
+
+  /// Runs every shard of `n` of `suite` (with `flags`) into shard_N_K.json and merges them into merged_N.json.
+  void run_and_merge(const std::string& suite, int n, const std::string& flags) {
+    std::string files;
+    for (int k = 1; k <= n; ++k) {
+      const std::string file = "shard_" + std::to_string(n) + "_" + std::to_string(k) + ".json";
+      const Outcome o = tcsb("run " + suite + " --quiet " + flags + " --shard " + std::to_string(k) + "/" +
+                             std::to_string(n) + " --out " + file);
+      ASSERT_EQ(o.exit_code, 0) << o.err;
+      const json shard = load(file);
+      EXPECT_EQ(shard["context"]["shard"], (json{{"k", k}, {"n", n}}));
+      files += " " + file;
+    }
+    // Given in reverse: the order of the files on the command line does not matter.
+    std::string reversed;
+    for (int k = n; k >= 1; --k) reversed += " shard_" + std::to_string(n) + "_" + std::to_string(k) + ".json";
+    const Outcome m = tcsb("merge --quiet" + reversed + " --out merged_" + std::to_string(n) + ".json");
+    ASSERT_EQ(m.exit_code, 0) << m.err;
+    // The merged file is a result like any other: export reads it (and checks it against the schema).
+    const Outcome e = tcsb("export merged_" + std::to_string(n) + ".json --format markdown");
+    EXPECT_EQ(e.exit_code, 0) << e.err;
+  }
+};
+
+TEST_F(Shards, MergedShardsOfTheCiSuiteEqualTheUnshardedRun) {
+  // Two repetitions instead of nine keep the test short; every run here uses the same override, so the settings
+  // agree, and the split and the merge do not depend on the repetition count.
+  const std::string flags = "--repetitions 2";
+  ASSERT_EQ(tcsb("run ci --quiet " + flags + " --out whole.json").exit_code, 0);
+  const json whole = load("whole.json");
+  // Under AddressSanitizer every run is several times slower: one split there, all four in the Release build.
+  const std::vector<int> splits = kAddressSanitized ? std::vector<int>{3} : std::vector<int>{1, 2, 3, 7};
+  for (const int n : splits) {
+    SCOPED_TRACE("n = " + std::to_string(n));
+    run_and_merge("ci", n, flags);
+    const json merged = load("merged_" + std::to_string(n) + ".json");
+    expect_same_deterministic_fields(whole, merged);
+    EXPECT_EQ(merged["context"]["merged_shards"], n);
+    EXPECT_FALSE(merged["context"].contains("shard"));
+    EXPECT_FALSE(merged.contains("merge_data"));
+  }
+}
+
+TEST_F(Shards, ShardsSplitByNetAndCoverEveryCaseOnce) {
+  write_file(dir_ / "three.json", three_net_suite("three"));
+  std::multiset<std::string> labels;
+  std::set<std::string> nets_with_cases;
+  for (int k = 1; k <= 2; ++k) {
+    std::string file = "s";  // (appended: GCC 12 warns falsely on "literal" + std::string&&)
+    file += std::to_string(k) + ".json";
+    ASSERT_EQ(tcsb("run three.json --quiet --shard " + std::to_string(k) + "/2 --out " + file).exit_code, 0);
+    std::set<std::string> nets;
+    const json shard = load(file);  // named: a range-for over a temporary's member would dangle
+    for (const json& c : shard["cases"]) {
+      labels.insert(c["label"].get<std::string>());
+      nets.insert(c["net"].get<std::string>());
+    }
+    for (const std::string& net : nets) EXPECT_TRUE(nets_with_cases.insert(net).second) << net << " in two shards";
+  }
+  EXPECT_EQ(labels.size(), 9u);  // 3 nets x (plain, tcsb@1.0, tcsb@0.5), each once
+  EXPECT_EQ(std::set<std::string>(labels.begin(), labels.end()).size(), 9u);
+  EXPECT_EQ(nets_with_cases.size(), 3u);
+}
+
+TEST_F(Shards, AnEmptyShardWritesAValidEmptyResultAndMerges) {
+  write_file(dir_ / "three.json", three_net_suite("three"));
+  ASSERT_EQ(tcsb("run three.json --quiet --out whole.json").exit_code, 0);
+  run_and_merge("three.json", 5, "");  // five shards of three nets: two are empty
+  int empty = 0;
+  for (int k = 1; k <= 5; ++k) {
+    const json shard = load("shard_5_" + std::to_string(k) + ".json");
+    empty += shard["cases"].empty();
+  }
+  EXPECT_EQ(empty, 2);
+  EXPECT_EQ(tcsb("export shard_5_5.json --format markdown").exit_code, 0);  // valid against the schema
+  expect_same_deterministic_fields(load("whole.json"), load("merged_5.json"));
+}
+
+TEST_F(Shards, AFidelityPassIsShardedAndMergedToo) {
+  write_file(dir_ / "fid.json", three_net_suite("fid", true));
+  ASSERT_EQ(tcsb("run fid.json --quiet --out whole.json").exit_code, 0);
+  run_and_merge("fid.json", 2, "");
+  const json whole = load("whole.json");
+  ASSERT_TRUE(whole.contains("fidelity"));
+  expect_same_deterministic_fields(whole, load("merged_2.json"));
+}
+
+TEST_F(Shards, BadShardIndicesAreRefusedNamingTheFlag) {
+  write_file(dir_ / "three.json", three_net_suite("three"));
+  for (const std::string bad : {"0/3", "4/3", "3", "1/0", "a/b", "1/3x", "-1/3", "1//3", "+1/3"}) {
+    const Outcome o = tcsb("run three.json --quiet --shard '" + bad + "' --out x.json");
+    EXPECT_EQ(o.exit_code, 2) << bad;
+    EXPECT_EQ(count_lines(o.err), 1) << o.err;
+    EXPECT_NE(o.err.find("--shard"), std::string::npos) << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "x.json"));
+  }
+  const Outcome other_format = tcsb("run three.json --quiet --shard 1/2 --format gbench");
+  EXPECT_EQ(other_format.exit_code, 2);
+  EXPECT_NE(other_format.err.find("--shard"), std::string::npos);
+}
+
+// A shard is checked against the machine's memory for its own nets only: under a limit the whole suite does not fit
+// (its 1025 x 1025 net), the shard of the small net runs.
+TEST_F(Shards, AShardOfSmallNetsRunsWhereTheWholeSuiteWouldNotFit) {
+  if (kAddressSanitized) GTEST_SKIP() << "no sanitized process starts under ulimit -v (cli_fixture.h)";
+  write_file(dir_ / "mixed.json", R"({"name": "mixed", "description": "a net too large for the limit and a small one",
+  "nets": [{"name": "n9", "width": 9, "height": 9, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0}},
+           {"name": "n1025", "width": 1025, "height": 1025, "size": [8.0, 8.0], "elevation": 8.0,
+            "mass": {"total": 1.0}}],
+  "methods": ["plain"], "dt": 0.016666666666666666, "gravity": 9.81, "steps": 10, "warmup_steps": 2,
+  "repetitions": 1, "seed": 1, "solver": {"piterations": 2}})");
+  const std::string limited =
+      "sh -c 'ulimit -v 150000; exec \"" + std::string(TCSB_BINARY) + "\" run mixed.json --quiet ";
+  const Outcome whole = shell(limited + "--out whole.json'");
+  EXPECT_EQ(whole.exit_code, 2) << whole.err;
+  EXPECT_NE(whole.err.find("n1025"), std::string::npos) << whole.err;
+  // The largest net goes to shard 1, so shard 2 of 2 holds n9 alone.
+  const Outcome small = shell(limited + "--shard 2/2 --out small.json'");
+  ASSERT_EQ(small.exit_code, 0) << small.err;
+  const json shard = load("small.json");
+  ASSERT_EQ(shard["cases"].size(), 1u);
+  EXPECT_EQ(shard["cases"][0]["label"], "n9/plain");
+}
+
+class BadShardSets : public Shards {
+ protected:
+  void SetUp() override {
+    Shards::SetUp();
+    write_file(dir_ / "three.json", three_net_suite("three"));
+    write_file(dir_ / "other.json", three_net_suite("other"));
+    for (int k = 1; k <= 3; ++k) {
+      const std::string shard = std::to_string(k) + "/3";
+      ASSERT_EQ(tcsb("run three.json --quiet --shard " + shard + " --out s" + std::to_string(k) + ".json").exit_code,
+                0);
+    }
+    ASSERT_EQ(tcsb("run other.json --quiet --shard 2/3 --out foreign2.json").exit_code, 0);
+    ASSERT_EQ(tcsb("run three.json --quiet --shard 2/4 --out quarter2.json").exit_code, 0);
+    ASSERT_EQ(tcsb("run three.json --quiet --out whole.json").exit_code, 0);
+  }
+
+  /// `tcsb merge FILES --out merged.json` must exit 2 with one line naming `culprit`, and write nothing.
+  void expect_refused(const std::string& files, const std::string& culprit) {
+    const Outcome o = tcsb("merge " + files + " --out merged.json");
+    EXPECT_EQ(o.exit_code, 2) << files << "\n" << o.err;
+    EXPECT_EQ(count_lines(o.err), 1) << o.err;
+    EXPECT_NE(o.err.find(culprit), std::string::npos) << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "merged.json")) << files;
+  }
+};
+
+TEST_F(BadShardSets, TheGoodSetMerges) { EXPECT_EQ(tcsb("merge s1.json s2.json s3.json --quiet").exit_code, 0); }
+
+TEST_F(BadShardSets, AMissingShardIsRefused) {
+  expect_refused("s1.json s3.json", "shard 2/3 is missing");
+  expect_refused("s1.json s3.json", "s1.json");
+}
+
+TEST_F(BadShardSets, TheSameShardTwiceIsRefused) {
+  expect_refused("s1.json s2.json s2.json s3.json", "given twice");
+  fs::copy_file(dir_ / "s2.json", dir_ / "copy2.json");
+  expect_refused("s1.json s2.json copy2.json s3.json", "copy2.json");
+}
+
+TEST_F(BadShardSets, ShardsOfTwoSuitesAreRefused) { expect_refused("s1.json foreign2.json s3.json", "foreign2.json"); }
+
+TEST_F(BadShardSets, ShardsOfTwoSplitsAreRefused) { expect_refused("s1.json quarter2.json s3.json", "quarter2.json"); }
+
+TEST_F(BadShardSets, ATruncatedShardIsRefused) {
+  const std::string text = read_file(dir_ / "s2.json");
+  write_file(dir_ / "cut2.json", text.substr(0, text.size() / 2));
+  expect_refused("s1.json cut2.json s3.json", "cut2.json");
+}
+
+TEST_F(BadShardSets, AnUnshardedResultIsRefused) { expect_refused("s1.json whole.json s3.json", "whole.json"); }
+
+TEST_F(BadShardSets, AShardWithEditedCasesIsRefused) {
+  json shard = json::parse(read_file(dir_ / "s1.json"));
+  shard["cases"].erase(shard["cases"].begin());  // still valid against the schema, but not shard 1's cases
+  write_file(dir_ / "edited1.json", shard.dump());
+  expect_refused("edited1.json s2.json s3.json", "edited1.json");
+}
+
+TEST_F(BadShardSets, ShardsOfTwoBuildsAreRefused) {
+  json shard = json::parse(read_file(dir_ / "s3.json"));
+  shard["context"]["git_commit"] = "0000000000000000000000000000000000000000";
+  write_file(dir_ / "build3.json", shard.dump());
+  expect_refused("s1.json s2.json build3.json", "build3.json");
+}
+
+TEST_F(BadShardSets, ShardsOfDifferentMachinesMergeWithAWarning) {
+  json shard = json::parse(read_file(dir_ / "s2.json"));
+  shard["context"]["host"] = "another-node";
+  write_file(dir_ / "elsewhere2.json", shard.dump());
+  const Outcome o = tcsb("merge --quiet s1.json elsewhere2.json s3.json --out merged.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(o.err.find("tcsb: warning: shards ran on different machines"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("another-node"), std::string::npos) << o.err;
+  bool recorded = false;
+  const json merged = load("merged.json");
+  for (const json& w : merged["context"]["warnings"]) {
+    recorded = recorded || w.get<std::string>().find("different machines") != std::string::npos;
+  }
+  EXPECT_TRUE(recorded);
+  // Without the edit: one machine, no such warning.
+  const Outcome same = tcsb("merge --quiet s1.json s2.json s3.json");
+  EXPECT_EQ(same.err.find("different machines"), std::string::npos) << same.err;
+}
+
+TEST_F(BadShardSets, AnExistingOutputIsLeftAloneWhenRefused) {
+  write_file(dir_ / "merged.json", "keep");
+  const Outcome o = tcsb("merge s1.json s3.json --out merged.json");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_EQ(read_file(dir_ / "merged.json"), "keep");
+}
+
+}  // namespace
+}  // namespace tcsb::cli_test

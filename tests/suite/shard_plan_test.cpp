@@ -1,0 +1,101 @@
+// Shard indices and the split of a suite's nets into shards.
+#include "suite/shard_plan.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace tcsb {
+namespace {
+
+const std::filesystem::path kSourceDir = TCSB_SOURCE_DIR;
+
+Suite suite_of_widths(const std::vector<int>& widths) {
+  Suite s;
+  for (const int w : widths) {
+    NetSpec n;
+    n.name = "n";
+    n.name += std::to_string(w);
+    n.width = n.height = w;
+    s.nets.push_back(n);
+  }
+  s.methods = {Method::kPlain, Method::kTcsb};
+  s.compression = {1.0, 0.3};
+  return s;
+}
+
+TEST(ShardIndex, ParsesKOfN) {
+  EXPECT_EQ(parse_shard_index("1/1"), (ShardIndex{1, 1}));
+  EXPECT_EQ(parse_shard_index("3/7"), (ShardIndex{3, 7}));
+  EXPECT_EQ(shard_text({3, 7}), "3/7");
+}
+
+TEST(ShardIndex, RefusesAnythingElse) {
+  for (const char* bad : {"", "/", "1", "1/", "/3", "0/3", "4/3", "1/0", "-1/3", "+1/3", "1/+3", " 1/3", "1/3 ", "1//3",
+                          "a/3", "1/3x", "1.0/3", "1/100001", "99999999999/3"}) {
+    EXPECT_FALSE(parse_shard_index(bad).has_value()) << bad;
+  }
+}
+
+TEST(ShardPlan, EveryNetIsInExactlyOneShard) {
+  const Suite s = suite_of_widths({9, 33, 17, 65, 17, 129, 9});
+  for (int n = 1; n <= 10; ++n) {
+    std::vector<int> owners(s.nets.size(), 0);
+    for (int k = 1; k <= n; ++k) {
+      const std::vector<bool> mine = shard_nets(s, {k, n});
+      ASSERT_EQ(mine.size(), s.nets.size());
+      for (std::size_t i = 0; i < mine.size(); ++i) owners[i] += mine[i];
+    }
+    for (std::size_t i = 0; i < owners.size(); ++i) EXPECT_EQ(owners[i], 1) << "net " << i << ", n = " << n;
+  }
+}
+
+TEST(ShardPlan, OneShardRunsEverything) {
+  const Suite s = suite_of_widths({9, 33, 17});
+  EXPECT_EQ(shard_nets(s, {1, 1}), std::vector<bool>(3, true));
+}
+
+TEST(ShardPlan, MoreShardsThanNetsLeavesTheLastOnesEmpty) {
+  const Suite s = suite_of_widths({9, 33, 17});
+  EXPECT_EQ(shard_nets(s, {1, 5}), (std::vector<bool>{false, true, false}));  // the largest first
+  EXPECT_EQ(shard_nets(s, {2, 5}), (std::vector<bool>{false, false, true}));
+  EXPECT_EQ(shard_nets(s, {3, 5}), (std::vector<bool>{true, false, false}));
+  EXPECT_EQ(shard_nets(s, {4, 5}), std::vector<bool>(3, false));
+  EXPECT_EQ(shard_nets(s, {5, 5}), std::vector<bool>(3, false));
+}
+
+TEST(ShardPlan, BalancesByEstimatedCostLargestFirst) {
+  // Costs 100, 60, 50, 40, 10 (node counts), each in turn to the lightest shard so far.
+  Suite s = suite_of_widths({10, 2, 2, 2, 2});
+  s.nets[1].width = 6;  // 60 nodes
+  s.nets[1].height = 10;
+  s.nets[2].width = 5;  // 50
+  s.nets[2].height = 10;
+  s.nets[3].width = 4;  // 40
+  s.nets[3].height = 10;
+  s.nets[4].width = 1;  // 10
+  s.nets[4].height = 10;
+  // 100 -> 1; 60 -> 2; 50 -> 2 (60 < 100); 40 -> 1 (100 < 110); 10 -> 2 (110 < 140): 140 and 120.
+  EXPECT_EQ(shard_nets(s, {1, 2}), (std::vector<bool>{true, false, false, true, false}));
+  EXPECT_EQ(shard_nets(s, {2, 2}), (std::vector<bool>{false, true, true, false, true}));
+}
+
+TEST(ShardPlan, TcsbCasesWeighByTheirBudget) {
+  Suite s = suite_of_widths({10});
+  s.compression = {1.0, 0.3};
+  EXPECT_DOUBLE_EQ(net_cost_estimate(s, 0), 100.0 * (1 + 1.0 + 0.3));
+}
+
+TEST(ShardPlan, TheScalingSuiteInFourShardsGivesTheLargestNetAShardOfItsOwn) {
+  const Suite s = parse_suite(kSourceDir / "suites" / "scaling.json");
+  ASSERT_EQ(s.nets.size(), 6u);
+  const std::size_t largest = 5;  // n1025
+  ASSERT_EQ(s.nets[largest].name, "n1025");
+  EXPECT_EQ(shard_nets(s, {1, 4}), (std::vector<bool>{false, false, false, false, false, true}));
+  EXPECT_EQ(shard_nets(s, {2, 4}), (std::vector<bool>{false, false, false, false, true, false}));
+  EXPECT_EQ(shard_nets(s, {3, 4}), (std::vector<bool>{false, false, false, true, false, false}));
+  EXPECT_EQ(shard_nets(s, {4, 4}), (std::vector<bool>{true, true, true, false, false, false}));
+}
+
+}  // namespace
+}  // namespace tcsb
