@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "feedback/feedback_settings.h"
+#include "harness/calibration_file.h"
 #include "net/net_spec.h"
 #include "softbody/solver_settings.h"
 #include "softbody/tc_settings.h"
@@ -30,6 +31,9 @@ struct FidelitySettings {
   double rms_threshold_pct = 1.0;      ///< maximal compression: smallest budget whose RMS error stays under this
   std::vector<double> pareto_targets;  ///< extra compression targets for the Pareto sweep (empty: none)
   bool ablations = false;              ///< run the equal-budget ablations
+  /// The suite's calibration file as written ("converged.calibration.json", relative to the suite file); empty:
+  /// none. With one, the pass adds calibrated TC-SB and the calibrated uniform grid at each target below 1.
+  std::string calibration_path;
 };
 
 /// A validated suite.
@@ -53,6 +57,9 @@ struct Suite {
   TcSettings tcsb;
   FeedbackSettings feedback;
   FidelitySettings fidelity;
+  /// The calibration fidelity.calibration_path names, read and checked against this suite (calibration_mismatch)
+  /// when the suite was parsed; nullopt without one.
+  std::optional<Calibration> calibration;
 };
 
 /// A suite file that cannot be used. what() is one line naming the file and the field.
