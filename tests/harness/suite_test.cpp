@@ -96,6 +96,11 @@ TEST(ShippedSuites, ConvergedIsThePaperSuiteAtThirtyTwoIterationsWithTheWholeFid
   EXPECT_TRUE(c.fidelity.ablations);
   EXPECT_FALSE(c.fidelity.pareto_targets.empty());
   EXPECT_NE(c.description.find("32 solver iterations"), std::string::npos);
+  // Its calibration was fitted for exactly this regime (parsing checked the key) at both budgets below 1.
+  ASSERT_TRUE(c.calibration);
+  EXPECT_EQ(c.calibration->piterations, 32);
+  EXPECT_FALSE(c.calibration->levels.empty());
+  EXPECT_TRUE(c.calibration->uniform_stiffness(0.75) && c.calibration->uniform_stiffness(0.3));
 }
 
 TEST(ShippedSuites, FidelityIsThePaperSuiteWithTheFidelityPass) {
