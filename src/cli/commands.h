@@ -65,6 +65,13 @@ struct ValidateArgs {
   std::string suite;
 };
 
+/// Options of `tcsb calibrate`.
+struct CalibrateArgs {
+  std::string suite;
+  std::string out;  ///< calibration file; empty: the suite's fidelity.calibration path, else SUITE.calibration.json
+  bool quiet = false;
+};
+
 /// Options of `tcsb compare`.
 struct CompareArgs {
   std::string base;         ///< baseline result file
@@ -100,6 +107,11 @@ int merge_command(const MergeArgs& args);
 CLI::App* add_list_command(CLI::App& app);
 /// Prints the bundled suites: name, nets, methods, the description's first line.
 int list_command();
+
+/// Registers `calibrate SUITE [--out FILE]`.
+CLI::App* add_calibrate_command(CLI::App& app, CalibrateArgs& args);
+/// Fits the suite's per-level link stiffness and uniform-grid stiffness and writes the calibration file.
+int calibrate_command(const CalibrateArgs& args);
 
 /// Registers `validate SUITE`.
 CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args);

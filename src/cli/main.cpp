@@ -27,6 +27,7 @@ int dispatch(int argc, char** argv) {
   ExportArgs export_args;
   FramesArgs frames_args;
   MergeArgs merge_args;
+  CalibrateArgs calibrate_args;
   CLI::App* run = add_run_command(app, run_args);
   CLI::App* list = add_list_command(app);
   CLI::App* validate = add_validate_command(app, validate_args);
@@ -35,6 +36,7 @@ int dispatch(int argc, char** argv) {
   CLI::App* export_ = add_export_command(app, export_args);
   CLI::App* frames = add_frames_command(app, frames_args);
   CLI::App* merge = add_merge_command(app, merge_args);
+  CLI::App* calibrate = add_calibrate_command(app, calibrate_args);
   reject_empty_values(app);  // after every option exists: "--out ''" must not mean stdout, nor '' mean 0
 
   try {
@@ -55,6 +57,7 @@ int dispatch(int argc, char** argv) {
     if (*export_) return export_command(export_args);
     if (*frames) return frames_command(frames_args);
     if (*merge) return merge_command(merge_args);
+    if (*calibrate) return calibrate_command(calibrate_args);
     // `reproduce`, or no subcommand at all: the default job.
     return reproduce_command(reproduce_args);
   });

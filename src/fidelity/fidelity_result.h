@@ -49,11 +49,28 @@ struct FidelityCase {
                                       ///< case's hash at the same target: the pass measured the timed trajectory)
 };
 
+/// The interpolation floor of one budget on one net (fidelity/fidelity_floors.h).
+struct InterpolationFloor {
+  double compression = 1.0;  ///< the budget, as a fraction of the net's nodes
+  std::string grid;          ///< the uniform rest grid of the budget's node count ("70x70")
+  MetricSummary rms_pct;     ///< RMS of the reference's surface resampled through that grid, per measured step
+};
+
+/// What no subject on a net can be expected to beat (fidelity/fidelity_floors.h), in % of the net's extent, per
+/// measured step; count 0 where the reference diverged first.
+struct FidelityFloors {
+  std::size_t net = 0;  ///< index into Suite::nets
+  std::string net_name;
+  MetricSummary noise_rms_pct;  ///< RMS of the reference started perturbed (kNoiseFloorPerturbation) against itself
+  std::vector<InterpolationFloor> interpolation;  ///< one per distinct budget of the plan, ascending
+};
+
 /// The whole fidelity pass of a run.
 struct FidelityResult {
-  double rms_threshold_pct = 1.0;   ///< the suite's threshold for the maximal compression
-  std::vector<FidelityCase> cases;  ///< per net (suite order), subjects in fidelity_plan() order
-  double wall_s = 0;                ///< wall time of the pass (included in the run's wall_s)
+  double rms_threshold_pct = 1.0;      ///< the suite's threshold for the maximal compression
+  std::vector<FidelityCase> cases;     ///< per net (suite order), subjects in fidelity_plan() order
+  std::vector<FidelityFloors> floors;  ///< per net (suite order)
+  double wall_s = 0;                   ///< wall time of the pass (included in the run's wall_s)
 };
 
 }  // namespace tcsb

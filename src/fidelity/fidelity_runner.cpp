@@ -12,6 +12,7 @@
 #include "case/step_clock.h"
 #include "feedback/cut_snapshot.h"
 #include "feedback/saliency.h"
+#include "fidelity/fidelity_floors.h"
 #include "fidelity/fidelity_subject.h"
 #include "fidelity/reconstruction.h"
 #include "softbody/bullet_setup.h"
@@ -223,10 +224,86 @@ class Track {
   std::vector<double> rms_, max_, weighted_, popping_, drift_, step_ms_, nodes_;
 };
 
+/// Seed of the noise floor's perturbation on net 0 (net k uses this + k): any fixed value serves, it only has to be
+/// the same on every run.
+constexpr std::uint64_t kNoiseFloorSeed = 0x6e6f697365ULL;
+
+/// The floors of one net (fidelity/fidelity_floors.h): a perturbed copy of the reference stepped in lockstep with it,
+/// and the reference's recorded frames resampled through each budget's uniform rest grid, both compared with the
+/// reference's frames of the measured steps by the subjects' metric.
+class FloorTrack {
+ public:
+  FloorTrack(const Suite& suite, std::size_t net_index, const std::shared_ptr<const Net>& net,
+             const std::vector<FidelitySubjectSpec>& plan)
+      : suite_(suite), net_(net), world_(suite.world), body_(make_plain_softbody(world_, *net, suite.solver)) {
+    perturb_positions(*body_, kNoiseFloorPerturbation * net->extent(), kNoiseFloorSeed + net_index);
+    result.net = net_index;
+    result.net_name = net->spec().name;
+    std::vector<double> budgets;
+    for (const FidelitySubjectSpec& spec : plan)
+      if (std::none_of(budgets.begin(), budgets.end(), [&](double b) { return b == spec.compression; }))
+        budgets.push_back(spec.compression);
+    std::sort(budgets.begin(), budgets.end());
+    for (const double b : budgets) {
+      const CoarseGrid g =
+          coarse_grid_for(net->width(), net->height(), subject_budget(*net, {FidelityMethod::kTcsb, b}));
+      grids_.push_back({g.width, g.height});
+      result.interpolation.push_back({b, std::to_string(g.width) + "x" + std::to_string(g.height), {}});
+    }
+    interpolation_.resize(budgets.size());
+  }
+
+  /// Steps the perturbed body over [first, last) and measures both floors at every measured step.
+  void run_block(int first, int last, const ReferenceBlock& reference) {
+    const double to_pct = 100.0 / net_->extent();
+    const GridSize fine{net_->width(), net_->height()};
+    for (int s = first; s < last; ++s) {
+      if (perturbed_alive_) {
+        step_soft_body(*body_, static_cast<btScalar>(suite_.world.dt));
+        if (divergence_now(*body_, net_->extent())) {
+          perturbed_alive_ = false;  // no floor rather than one over part of the steps
+          noise_.clear();
+        }
+      }
+      if (s < suite_.warmup_steps) continue;
+      reference.frame(s, reference_x_);
+      if (perturbed_alive_) {
+        copy_positions(*body_, x_);
+        noise_.push_back(to_pct * surface_error(x_, reference_x_).rms);
+      }
+      for (std::size_t k = 0; k < grids_.size(); ++k) {
+        resample_through(fine, reference_x_, grids_[k], coarse_, x_);
+        interpolation_[k].push_back(to_pct * surface_error(x_, reference_x_).rms);
+      }
+    }
+  }
+
+  FidelityFloors finish() {
+    result.noise_rms_pct = summarize_metric(noise_);
+    for (std::size_t k = 0; k < grids_.size(); ++k)
+      result.interpolation[k].rms_pct = summarize_metric(interpolation_[k]);
+    return result;
+  }
+
+  FidelityFloors result;
+
+ private:
+  const Suite& suite_;
+  std::shared_ptr<const Net> net_;
+  SoftBodyWorld world_;
+  std::unique_ptr<btSoftBody> body_;
+  bool perturbed_alive_ = true;
+  std::vector<GridSize> grids_;
+  std::vector<Eigen::Vector3d> reference_x_, x_, coarse_;
+  std::vector<double> noise_;
+  std::vector<std::vector<double>> interpolation_;
+};
+
 /// The pass on one net: the reference and every subject, interleaved in blocks.
 void run_net(const Suite& suite, std::size_t net_index, const std::shared_ptr<const Net>& net,
-             const std::vector<FidelitySubjectSpec>& plan, std::vector<FidelityCase>& out) {
+             const std::vector<FidelitySubjectSpec>& plan, FidelityResult& out) {
   Reference reference(suite, net);
+  FloorTrack floors(suite, net_index, net, plan);
   std::vector<std::unique_ptr<Track>> tracks;
   for (const FidelitySubjectSpec& spec : plan) {
     // fidelity_plan() lists TC-SB at every suite target before the ablations, so a switch finds its pace here and
@@ -246,11 +323,13 @@ void run_net(const Suite& suite, std::size_t net_index, const std::shared_ptr<co
         if (t->alive()) t->stop(*reference.diverged_step, reference.diverged_reason);
       break;
     }
+    floors.run_block(first, last, reference.block);
     for (auto& t : tracks)
       if (t->alive()) t->run_block(first, last, reference.block, reference.initial_energy);
   }
   const double reference_ms = mean(reference.step_ms);
-  for (auto& t : tracks) out.push_back(t->finish(reference_ms));
+  for (auto& t : tracks) out.cases.push_back(t->finish(reference_ms));
+  out.floors.push_back(floors.finish());
 }
 
 }  // namespace
@@ -276,7 +355,7 @@ FidelityResult run_fidelity(const Suite& suite, const std::vector<std::shared_pt
   if (!plan.empty()) {
     for (std::size_t n = 0; n < nets.size(); ++n) {
       if (!nets[n]) continue;  // another shard's net
-      run_net(suite, n, nets[n], plan, result.cases);
+      run_net(suite, n, nets[n], plan, result);
       if (progress) progress(nets[n]->spec().name);
     }
   }

@@ -100,9 +100,10 @@ class TreeCutSubject final : public FidelitySubject {
 /// A static coarse grid of the same cloth, compared through bilinear interpolation of its nodes.
 class UniformSubject final : public FidelitySubject {
  public:
-  UniformSubject(SoftBodyWorld& world, const Suite& suite, std::shared_ptr<const Net> fine, int budget)
+  /// `solver`: the suite's, or with the calibration's stiffness for the budget.
+  UniformSubject(SoftBodyWorld& world, const SolverSettings& solver, std::shared_ptr<const Net> fine, int budget)
       : fine_(std::move(fine)), coarse_(coarse_net_spec(fine_->spec(), budget)),
-        body_(make_plain_softbody(world, coarse_, suite.solver)) {}
+        body_(make_plain_softbody(world, coarse_, solver)) {}
   void boundary(int) override {}
   void simulate(btScalar dt) override { step_soft_body(*body_, dt); }
   void reconstruct(std::vector<Eigen::Vector3d>& leaves) override {
@@ -205,15 +206,28 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
                                                        int fallback_switch_step) {
   const int budget = subject_budget(*net, spec);
   switch (spec.method) {
-    case FidelityMethod::kUniform: return std::make_unique<UniformSubject>(world, suite, std::move(net), budget);
+    case FidelityMethod::kUniform: return std::make_unique<UniformSubject>(world, suite.solver, std::move(net), budget);
+    case FidelityMethod::kUniformCalibrated: {
+      SolverSettings solver = suite.solver;
+      const std::optional<double> k =
+          suite.calibration ? suite.calibration->uniform_stiffness(spec.compression) : std::nullopt;
+      if (!k) throw std::invalid_argument("uniform_grid_calibrated: the calibration has no fit for this budget");
+      solver.linear_stiffness = *k;
+      return std::make_unique<UniformSubject>(world, solver, std::move(net), budget);
+    }
     case FidelityMethod::kSwitch:
       return std::make_unique<SwitchSubject>(world, suite, std::move(net), budget, pace, fallback_switch_step);
     case FidelityMethod::kTcsb:
     case FidelityMethod::kTcsbRandom:
     case FidelityMethod::kTcsbRigid:
-    case FidelityMethod::kTcsbNoGeomorph: {
+    case FidelityMethod::kTcsbNoGeomorph:
+    case FidelityMethod::kTcsbCalibrated: {
       TcSettings tc = suite.tcsb;
       if (spec.method == FidelityMethod::kTcsbRigid) tc.placement = Placement::kRigid;
+      if (spec.method == FidelityMethod::kTcsbCalibrated) {
+        if (!suite.calibration) throw std::invalid_argument("tcsb_calibrated: the suite has no calibration");
+        tc.level_stiffness = suite.calibration->level_stiffness();
+      }
       FeedbackSettings feedback = suite.feedback;
       if (spec.method == FidelityMethod::kTcsbRandom) feedback.policy = PolicyKind::kRandom;
       const bool compressed = budget < static_cast<int>(net->node_count());

@@ -47,6 +47,32 @@ std::optional<double> measured(const FidelityRow* row, double MetricSummary::*fi
   return (row->*metric).*field;
 }
 
+/// The floors of net `net`, or null when the result has none for it.
+const FidelityFloors* floors_of(const FidelityResult& result, std::size_t net) {
+  for (const FidelityFloors& f : result.floors)
+    if (f.net == net) return &f;
+  return nullptr;
+}
+
+/// Mean over `cases`' nets of a floor picked from each net's floors (nullopt from `pick`: that net has none); nullopt
+/// unless every net has it.
+template <class Pick>
+std::optional<double> mean_floor(const FidelityResult& result, const std::vector<const FidelityCase*>& cases,
+                                 Pick pick) {
+  std::vector<double> values;
+  for (const FidelityCase* c : cases) {
+    const FidelityFloors* f = floors_of(result, c->net);
+    const std::optional<double> v = f ? pick(*f) : std::nullopt;
+    if (!v) return std::nullopt;
+    values.push_back(*v);
+  }
+  return finite_mean(values);
+}
+
+std::optional<double> summary_mean(const MetricSummary& s) {
+  return s.count > 0 ? std::optional(s.mean) : std::nullopt;
+}
+
 }  // namespace
 
 std::vector<FidelityRow> fidelity_rows(const FidelityResult& result) {
@@ -100,6 +126,12 @@ std::vector<FidelityRow> fidelity_rows(const FidelityResult& result) {
     const std::optional<double> subject = finite_mean(ms), reference = finite_mean(reference_ms);
     if (subject && reference && *reference > 0) row.time_ratio_vs_plain = *subject / *reference;
     row.switch_ms = finite_mean(switch_ms);
+    row.noise_floor_pct = mean_floor(result, ok, [](const FidelityFloors& f) { return summary_mean(f.noise_rms_pct); });
+    row.interpolation_floor_pct = mean_floor(result, ok, [&](const FidelityFloors& f) -> std::optional<double> {
+      for (const InterpolationFloor& i : f.interpolation)
+        if (same_compression(i.compression, row.compression)) return summary_mean(i.rms_pct);
+      return std::nullopt;
+    });
   }
   return rows;
 }

@@ -23,9 +23,14 @@ struct FidelityRow {
   /// Mean over nets of the subject's mean step ms / mean over nets of the reference's, both timed in the pass.
   std::optional<double> time_ratio_vs_plain;
   std::optional<double> switch_ms;  ///< switch_body: mean over nets
-  std::string grid;                 ///< uniform/switch: the coarse grids, e.g. "25x25..44x44"
-  int nets = 0;                     ///< ok nets combined
-  std::string status = "ok";        ///< "ok", "partial" (some nets diverged, left out), "diverged" (none ok)
+  /// Mean over the row's ok nets of each net's noise floor (FidelityFloors::noise_rms_pct mean); nullopt when a
+  /// net has none (a result without floors, or a perturbed reference that diverged).
+  std::optional<double> noise_floor_pct;
+  /// Mean over the row's ok nets of each net's interpolation floor at the row's budget (its uniform rest grid).
+  std::optional<double> interpolation_floor_pct;
+  std::string grid;           ///< uniform/switch: the coarse grids, e.g. "25x25..44x44"
+  int nets = 0;               ///< ok nets combined
+  std::string status = "ok";  ///< "ok", "partial" (some nets diverged, left out), "diverged" (none ok)
 };
 
 /// Rows in order of first appearance among the cases (fidelity_plan order). Diverged cases are left out.

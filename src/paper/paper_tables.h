@@ -81,9 +81,6 @@ inline constexpr double kFlatnessTarget = 0.2;
 /// diverged in one method cannot bias the other's ratio.
 std::vector<Table2Row> table2(const RunResult& result);
 
-/// Whether two compression targets are the same one (up to binary noise such as 100 * 0.3 = 30.000000000000004).
-inline bool same_compression(double a, double b) { return std::abs(a - b) < 1e-9; }
-
 /// A compression target as a whole percentage for claim ids: 0.75 -> "75".
 std::string compression_percent(double compression);
 

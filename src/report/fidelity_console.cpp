@@ -27,6 +27,8 @@ void print_rows(const std::vector<FidelityRow>& rows, std::ostream& out) {
                {"E drift %"},
                {"time/plain"},
                {"switch ms"},
+               {"noise fl %"},
+               {"interp fl %"},
                {"nets"},
                {"status", Align::kLeft}});
   for (const FidelityRow& r : rows) {
@@ -35,10 +37,42 @@ void print_rows(const std::vector<FidelityRow>& rows, std::ostream& out) {
                fixed(value(r.weighted_rms_pct, r.weighted_rms_pct.mean), 3),
                fixed(value(r.popping_pct, r.popping_pct.max), 3),
                fixed(value(r.energy_drift_pct, r.energy_drift_pct.mean), 3), fixed(r.time_ratio_vs_plain, 3),
-               fixed(r.switch_ms, 3), std::to_string(r.nets), r.status});
+               fixed(r.switch_ms, 3), fixed(r.noise_floor_pct, 4), fixed(r.interpolation_floor_pct, 3),
+               std::to_string(r.nets), r.status});
   }
   out << "Fidelity against full-resolution plain Bullet (% of net extent; RMS, w-RMS, E drift: mean over steps and "
-         "nets; max and pop: max over steps and nets; time/plain: mean steps of this pass):\n";
+         "nets; max and pop: max over steps and nets; time/plain: mean steps of this pass; noise fl, interp fl: "
+         "the floors below):\n";
+  t.print(out);
+}
+
+std::optional<double> summary_mean(const MetricSummary& s) {
+  return s.count > 0 ? std::optional(s.mean) : std::nullopt;
+}
+
+/// Per net: the noise floor and the interpolation floor at each of the suite's compression targets below 1.
+void print_floors(const std::vector<FidelityFloors>& floors, const std::vector<double>& targets, std::ostream& out) {
+  std::vector<TextTable::Column> columns{{"net", Align::kLeft}, {"noise floor %"}};
+  std::vector<double> shown;
+  for (const double t : targets)
+    if (t < 1.0) {
+      shown.push_back(t);
+      columns.push_back({"interp floor " + compression_label(t) + " %"});
+    }
+  TextTable t(columns);
+  for (const FidelityFloors& f : floors) {
+    std::vector<std::string> cells{f.net_name, fixed(summary_mean(f.noise_rms_pct), 4)};
+    for (const double target : shown) {
+      std::optional<double> v;
+      for (const InterpolationFloor& i : f.interpolation)
+        if (same_compression(i.compression, target)) v = summary_mean(i.rms_pct);
+      cells.push_back(fixed(v, 3));
+    }
+    t.add_row(cells);
+  }
+  out << "Floors (% of net extent, mean over steps): noise = the reference against itself with every initial "
+         "position moved by 1e-6 of the extent; interp = the reference's surface through the budget's uniform rest "
+         "grid, the error of a perfect body of that resolution:\n";
   t.print(out);
 }
 
@@ -70,6 +104,10 @@ void print_fidelity_report(const RunResult& result, std::ostream& out) {
   const std::vector<FidelityRow> rows = fidelity_rows(*result.fidelity);
   print_rows(rows, out);
   out << '\n';
+  if (!result.fidelity->floors.empty()) {
+    print_floors(result.fidelity->floors, result.suite.compression, out);
+    out << '\n';
+  }
   const std::vector<ParetoPoint> sweep = pareto_sweep(rows);
   print_sweep(sweep, max_compression(sweep, result.fidelity->rms_threshold_pct), out);
   out << '\n';

@@ -36,6 +36,8 @@ ojson row_json(const FidelityRow& r) {
           {"time_ratio_vs_plain", json_number(r.time_ratio_vs_plain)},
           {"switch_ms", json_number(r.switch_ms)},
           {"worst_net_rms_pct", json_number(r.worst_net_rms_pct)},
+          {"noise_floor_pct", json_number(r.noise_floor_pct)},
+          {"interpolation_floor_pct", json_number(r.interpolation_floor_pct)},
           {"grid", r.grid.empty() ? ojson(nullptr) : ojson(r.grid)},
           {"nets", r.nets},
           {"status", r.status}};
@@ -66,6 +68,21 @@ ojson case_json(const FidelityCase& c) {
           {"final_state_hash", c.final_state_hash}};
 }
 
+std::optional<double> summary_mean(const MetricSummary& s) {
+  return s.count > 0 ? std::optional(s.mean) : std::nullopt;
+}
+
+ojson floors_json(const FidelityFloors& f) {
+  ojson interpolation = ojson::array();
+  for (const InterpolationFloor& i : f.interpolation)
+    interpolation.push_back({{"compression", json_number(i.compression)},
+                             {"grid", i.grid},
+                             {"rms_pct", json_number(summary_mean(i.rms_pct))}});
+  return {{"net", f.net_name},
+          {"noise_floor_pct", json_number(summary_mean(f.noise_rms_pct))},
+          {"interpolation_floor_pct", std::move(interpolation)}};
+}
+
 }  // namespace
 
 void add_fidelity_json(const RunResult& result, nlohmann::ordered_json& doc) {
@@ -76,6 +93,8 @@ void add_fidelity_json(const RunResult& result, nlohmann::ordered_json& doc) {
   ojson row_list = ojson::array(), cases = ojson::array(), targets = ojson::array(), targets_list = ojson::array();
   for (const FidelityRow& r : rows) row_list.push_back(row_json(r));
   for (const FidelityCase& c : f.cases) cases.push_back(case_json(c));
+  ojson floors = ojson::array();
+  for (const FidelityFloors& n : f.floors) floors.push_back(floors_json(n));
   for (const Claim& c : fidelity_targets(rows)) targets.push_back(claim_json(c));
   ojson pareto_targets = ojson::array();
   for (const double t : settings.pareto_targets) pareto_targets.push_back(json_number(t));
@@ -87,12 +106,17 @@ void add_fidelity_json(const RunResult& result, nlohmann::ordered_json& doc) {
                 "M g h (y from 0), each per step and summarised as mean, p95 and max over the measured steps "
                 "(popping: over every step, warm-up included); rows combine nets as mean of means "
                 "and p95s, max of maxima; time_ratio_vs_plain = subject's mean step / reference's mean step, "
-                "both timed in this pass"},
+                "both timed in this pass; floors: mean over the measured steps of the RMS that no subject can be "
+                "expected to beat, per net: noise_floor_pct (the reference against itself started with every initial "
+                "position perturbed by 1e-6 of the extent) and interpolation_floor_pct per budget (the reference's "
+                "surface sampled at the budget's uniform rest grid and interpolated back); rows: their mean over the "
+                "row's nets"},
       {"rms_threshold_pct", json_number(settings.rms_threshold_pct)},
       {"ablations", settings.ablations},
       {"pareto_targets", std::move(pareto_targets)},
       {"rows", std::move(row_list)},
       {"cases", std::move(cases)},
+      {"floors", std::move(floors)},
       {"targets", std::move(targets)},
       {"wall_s", json_number(f.wall_s)},
   };

@@ -1,6 +1,8 @@
 // TcSettings: how a TreeCut soft body performs its operations.
 #pragma once
 
+#include <vector>
+
 namespace tcsb {
 
 /// Where refine places the children of a node.
@@ -13,6 +15,11 @@ enum class Placement {
 struct TcSettings {
   int blend_steps = 5;  ///< K: steps over which leaving links fade out and arriving links fade in
   Placement placement = Placement::kAffine;
+  /// Resolution-consistent material: the link stiffness kLST per LOD level, from level 1 on (entry i is level i + 1;
+  /// levels past the end use the last entry). A link belongs to the level of its coarser endpoint; level-0 links
+  /// (and every link, when this is empty: uncalibrated) use the solver's material. Values from a calibration
+  /// (fidelity/calibration.h), each in (0, 1]. Applied through Bullet's per-link materials: no per-step cost.
+  std::vector<double> level_stiffness;
 };
 
 }  // namespace tcsb

@@ -1,6 +1,7 @@
 // TcSoftBody: construction and the O(1)/O(degree) node and link primitives every operation is made of.
 #include "softbody/tc_softbody.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <stdexcept>
@@ -39,6 +40,17 @@ TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, con
   // raw Node* held by links and DBVT leaves stay valid (docs/design.md, "The node array and raw pointers").
   init_net_nodes(*this, *net_, static_cast<int>(tree_size));
   apply_solver_settings(*this, solver);
+  for (const double k : settings_.level_stiffness)
+    if (!(k > 0 && k <= 1)) throw std::invalid_argument("TcSoftBody: level stiffness must lie in (0, 1]");
+  if (!settings_.level_stiffness.empty()) {
+    level_materials_.push_back(m_materials[0]);  // level 0: the solver's, as the full-resolution reference's
+    for (int level = 1; level < lod.level_count(); ++level) {
+      const std::size_t i = std::min(static_cast<std::size_t>(level - 1), settings_.level_stiffness.size() - 1);
+      Material* m = appendMaterial();  // a copy of m_materials[0] (flags included)
+      m->m_kLST = static_cast<btScalar>(settings_.level_stiffness[i]);
+      level_materials_.push_back(m);
+    }
+  }
   // Room for every link the body can hold at once: the finest cut's links plus what blending operations add. The
   // counter link_reallocations() proves in tests that this never runs out.
   m_links.reserve(static_cast<int>(3 * net_->links().size() + 64));
@@ -161,7 +173,8 @@ int TcSoftBody::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
   Link& l = m_links.expandNonInitializing();  // zeroed in place, as add_node does
   const int index = m_links.size() - 1;
   std::memset(static_cast<void*>(&l), 0, sizeof(Link));
-  l.m_material = m_materials[0];
+  // Uncalibrated, every link uses the body's one material without reading the tree (bit for bit as before).
+  l.m_material = calibrated() ? link_material(a, b) : m_materials[0];
   l.m_n[0] = &m_nodes[record(a).bullet];
   l.m_n[1] = &m_nodes[record(b).bullet];
   l.m_rl = rest_length(a, b);
@@ -207,6 +220,12 @@ btScalar TcSoftBody::inverse_mass(TreeId id, double mass) const {
   return tree().node(id).pinned() ? btScalar(0) : static_cast<btScalar>(1.0 / mass);
 }
 
+btSoftBody::Material* TcSoftBody::link_material(TreeId a, TreeId b) const {
+  if (!calibrated()) return m_materials[0];
+  const int level = std::max(tree().node(a).level, tree().node(b).level);
+  return level_materials_[static_cast<std::size_t>(level)];
+}
+
 double TcSoftBody::op_progress(const Op& op) const {
   return static_cast<double>(op.step + 1) / (settings_.blend_steps + 1);
 }
@@ -237,7 +256,9 @@ void TcSoftBody::write_link_constant(int link) {
   // only the line holding m_c0 is touched, not the link's first line too (a 72-byte link usually spans two). A
   // blend divides it by alpha, which scales the solver's correction by alpha without touching the rest length
   // (docs/design.md, "Blending through m_c0").
-  l.m_c0 = (record(meta.a).inv_mass + record(meta.b).inv_mass) / m_materials[0]->m_kLST;
+  // Calibrated, each link's own material (its level's stiffness): a fading link fades from its level's constant.
+  const btScalar stiffness = calibrated() ? l.m_material->m_kLST : m_materials[0]->m_kLST;
+  l.m_c0 = (record(meta.a).inv_mass + record(meta.b).inv_mass) / stiffness;
   const double alpha = blend_alpha(meta);
   if (alpha != 1.0) l.m_c0 = static_cast<btScalar>(l.m_c0 / alpha);
 }

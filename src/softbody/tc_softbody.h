@@ -157,6 +157,12 @@ class TcSoftBody : public btSoftBody {
   /// fading-in links carry now, rising by 1/(K + 1) per step; 1 for a node that is not arriving. O(1).
   double arrival_weight(TreeId id) const;
 
+  /// Whether links above level 0 use their level's calibrated stiffness (TcSettings::level_stiffness).
+  bool calibrated() const { return !level_materials_.empty(); }
+  /// The material a link between tree nodes a and b uses: the solver's (Bullet's m_materials[0]) when uncalibrated
+  /// or both are leaves, else the one of the coarser endpoint's level. O(1).
+  Material* link_material(TreeId a, TreeId b) const;
+
   /// Linear momentum of the simulated nodes (pinned nodes excluded), kg m/s.
   Eigen::Vector3d linear_momentum() const;
   /// Total simulated mass (pinned nodes included through their bookkeeping mass), kg.
@@ -247,8 +253,11 @@ class TcSoftBody : public btSoftBody {
   std::vector<NodeRecord> record_;        // per tree node
   std::vector<TreeId> tree_of_;           // per Bullet node
   std::vector<CutLink> link_meta_;        // per Bullet link
-  DbvtNodeCache dbvt_nodes_;              // spare nodes for the node DBVT's local edits
-  std::vector<Op> ops_;                   // operation pool
+  /// Per LOD level, the material its links use (level 0: the solver's); empty when uncalibrated. Owned by Bullet
+  /// (appendMaterial; freed with the body), made once at construction: materials cannot be freed before the body.
+  std::vector<Material*> level_materials_;
+  DbvtNodeCache dbvt_nodes_;  // spare nodes for the node DBVT's local edits
+  std::vector<Op> ops_;       // operation pool
   std::vector<std::int32_t> free_ops_;
   std::vector<std::int32_t> inflight_;  // operations blending
   int committed_count_ = 0;

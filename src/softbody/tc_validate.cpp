@@ -87,7 +87,7 @@ Validation TcSoftBody::validate() const {
     if (l.m_rl != rest_length(meta.a, meta.b) || l.m_c1 != l.m_rl * l.m_rl) fail(name + ": rest length changed");
     const bool blended = meta.role == LinkRole::kFadeIn || meta.role == LinkRole::kFadeOut;
     if ((meta.role == LinkRole::kSteady) != (meta.op < 0)) fail(name + ": steady links own no operation");
-    if (l.m_material != m_materials[0]) fail(name + ": not the body's material");
+    if (l.m_material != link_material(meta.a, meta.b)) fail(name + ": not the material of its level");
     btScalar c0 = (l.m_n[0]->m_im + l.m_n[1]->m_im) / l.m_material->m_kLST;
     if (blended) c0 = static_cast<btScalar>(c0 / blend_alpha(meta));
     if (std::abs(l.m_c0 - c0) > 1e-5f * std::abs(c0)) fail(name + ": m_c0 does not match masses and blend");

@@ -2,6 +2,7 @@
 // run order that interleaves methods and nets so ratios and fits are measured under the same machine conditions.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -11,6 +12,9 @@
 #include "suite/suite.h"
 
 namespace tcsb {
+
+/// Whether two compression targets are the same one (up to binary noise such as 100 * 0.3 = 30.000000000000004).
+inline bool same_compression(double a, double b) { return std::abs(a - b) < 1e-9; }
 
 /// One case: a net, a method, and (TC-SB only) a compression target.
 struct CaseKey {

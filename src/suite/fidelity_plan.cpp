@@ -13,6 +13,8 @@ const char* fidelity_method_name(FidelityMethod method) {
     case FidelityMethod::kTcsbRandom: return "tcsb_random";
     case FidelityMethod::kTcsbRigid: return "tcsb_rigid";
     case FidelityMethod::kTcsbNoGeomorph: return "tcsb_no_geomorph";
+    case FidelityMethod::kTcsbCalibrated: return "tcsb_calibrated";
+    case FidelityMethod::kUniformCalibrated: return "uniform_grid_calibrated";
   }
   return "unknown";
 }
@@ -26,11 +28,17 @@ std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
   std::sort(targets.begin(), targets.end());
   targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
   for (const double c : targets) plan.push_back({FidelityMethod::kTcsb, c});
-  if (!suite.fidelity.ablations) return plan;
-  for (const FidelityMethod m : {FidelityMethod::kUniform, FidelityMethod::kSwitch, FidelityMethod::kTcsbRandom,
-                                 FidelityMethod::kTcsbRigid, FidelityMethod::kTcsbNoGeomorph})
+  const auto add_at_targets = [&](FidelityMethod m) {
     for (const double c : suite.compression)
       if (c < 1.0) plan.push_back({m, c});
+  };
+  if (suite.fidelity.ablations)
+    for (const FidelityMethod m : {FidelityMethod::kUniform, FidelityMethod::kSwitch, FidelityMethod::kTcsbRandom,
+                                   FidelityMethod::kTcsbRigid, FidelityMethod::kTcsbNoGeomorph})
+      add_at_targets(m);
+  if (suite.calibration)
+    for (const FidelityMethod m : {FidelityMethod::kTcsbCalibrated, FidelityMethod::kUniformCalibrated})
+      add_at_targets(m);
   return plan;
 }
 

@@ -106,7 +106,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
   }
 
   if (const json* j = root.find("fidelity")) {
-    const Object fi(r, *j, "fidelity", {"enabled", "rms_threshold_pct", "pareto_targets", "ablations"});
+    const Object fi(r, *j, "fidelity", {"enabled", "rms_threshold_pct", "pareto_targets", "ablations", "calibration"});
     fi.read("enabled", s.fidelity.enabled);
     fi.read("rms_threshold_pct", s.fidelity.rms_threshold_pct, kPositive);
     if (const json* targets = fi.find("pareto_targets")) {
@@ -116,6 +116,10 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
       }
     }
     fi.read("ablations", s.fidelity.ablations);
+    if (const json* c = fi.find("calibration")) {
+      s.fidelity.calibration_path = r.string(*c, fi.at("calibration"));
+      if (s.fidelity.calibration_path.empty()) r.fail(fi.at("calibration"), "must name a file");
+    }
   }
 }
 
@@ -237,6 +241,15 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   // is nothing to measure, and silently measuring nothing would look like a pass.
   if (s.fidelity.enabled && !has_tcsb) r.fail("fidelity.enabled", "requires methods to contain \"tcsb\"");
   if (adjust) adjust(s);  // before the memory check: it must see the suite that will run
+  if (!s.fidelity.calibration_path.empty()) {
+    if (!has_tcsb) r.fail("fidelity.calibration", "requires methods to contain \"tcsb\"");
+    // Relative to the suite file, so a suite and its calibration travel together.
+    const std::filesystem::path path = std::filesystem::path(file).parent_path() / s.fidelity.calibration_path;
+    Calibration c = parse_calibration_file(path);
+    if (const std::string why = calibration_mismatch(c, s); !why.empty())
+      r.fail("fidelity.calibration", path.string() + " does not fit this suite: " + why);
+    s.calibration = std::move(c);
+  }
   check_memory(s, r);
   return s;
 }

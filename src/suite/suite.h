@@ -15,6 +15,7 @@
 #include "net/net_spec.h"
 #include "softbody/solver_settings.h"
 #include "softbody/tc_settings.h"
+#include "suite/calibration_file.h"
 
 namespace tcsb {
 
@@ -35,6 +36,9 @@ struct FidelitySettings {
   double rms_threshold_pct = 1.0;      ///< maximal compression: smallest budget whose RMS error stays under this
   std::vector<double> pareto_targets;  ///< extra compression targets for the Pareto sweep (empty: none)
   bool ablations = false;              ///< run the equal-budget ablations
+  /// The suite's calibration file as written ("converged.calibration.json", relative to the suite file); empty:
+  /// none. With one, the pass adds calibrated TC-SB and the calibrated uniform grid at each target below 1.
+  std::string calibration_path;
 };
 
 /// A validated suite.
@@ -63,6 +67,9 @@ struct Suite {
   /// The nets this process runs, indexed like `nets` (a shard's, suite/shard_plan.h); empty: all. Not a setting of
   /// the suite (results never record it): the runner runs and the memory check counts only these nets' cases.
   std::vector<bool> run_nets;
+  /// The calibration fidelity.calibration_path names, read and checked against this suite (calibration_mismatch)
+  /// when the suite was parsed; nullopt without one.
+  std::optional<Calibration> calibration;
 };
 
 /// Whether `suite` runs net `net` in this process (Suite::run_nets).

@@ -300,3 +300,42 @@ TEST_F(Cli, BadFramesArgumentsAreUsageErrors) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace tcsb::cli_test;
+
+TEST_F(Cli, CalibrateWritesTheFileASuiteThenUsesAndValidateChecks) {
+  write_file(dir_ / "s.json", nine_by_nine_suite("s", 1));
+  const Outcome made = tcsb("calibrate s.json --quiet");
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  EXPECT_TRUE(made.out.empty()) << made.out;
+  ASSERT_TRUE(fs::exists(dir_ / "s.calibration.json"));  // beside the suite by default
+  EXPECT_NE(read_file(dir_ / "s.calibration.json").find("\"levels\""), std::string::npos);
+  // The suite names it: validate reads and checks it; a run adds the calibrated rows.
+  std::string suite = nine_by_nine_suite("s", 1);
+  suite.replace(suite.rfind('}'), 1, ", \"fidelity\": {\"enabled\": true, \"calibration\": \"s.calibration.json\"}}");
+  write_file(dir_ / "with.json", suite);
+  const Outcome valid = tcsb("validate with.json");
+  EXPECT_EQ(valid.exit_code, 0) << valid.err;
+  const Outcome run = tcsb("run with.json --quiet --out out.json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string result = read_file(dir_ / "out.json");
+  EXPECT_NE(result.find("\"tcsb_calibrated\""), std::string::npos);
+  EXPECT_NE(result.find("\"uniform_grid_calibrated\""), std::string::npos);
+  // Another iteration count: refused in one line naming the field, nothing written.
+  std::string other = suite;
+  other.replace(other.find("\"piterations\": 2"), 16, "\"piterations\": 3");
+  write_file(dir_ / "other.json", other);
+  const Outcome refused = tcsb("run other.json --out refused.json");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(count_lines(refused.err), 1) << refused.err;
+  EXPECT_NE(refused.err.find("fidelity.calibration"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(dir_ / "refused.json"));
+  // A missing suite: exit 2, no calibration written.
+  const Outcome missing = tcsb("calibrate nope.json");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(count_lines(missing.err), 1) << missing.err;
+}
+
+}  // namespace

@@ -113,5 +113,36 @@ TEST(FidelityPass, NotRunWhenDisabled) {
   EXPECT_FALSE(run_suite(s, Context{}).fidelity);
 }
 
+TEST(FidelityPass, FloorsPerNetAreSmallNonNegativeAndZeroAtFullResolution) {
+  const Suite s = tiny_suite(9.81);
+  const RunResult run = run_suite(s, Context{});
+  ASSERT_TRUE(run.fidelity);
+  ASSERT_EQ(run.fidelity->floors.size(), 1u);
+  const FidelityFloors& f = run.fidelity->floors.front();
+  EXPECT_EQ(f.net_name, s.nets.front().name);
+  EXPECT_EQ(f.noise_rms_pct.count, 40u);  // every measured step
+  EXPECT_GE(f.noise_rms_pct.mean, 0.0);
+  EXPECT_LT(f.noise_rms_pct.max, 0.01);  // 1e-6 of the extent, grown over 70 steps: far below any subject's error
+  // One floor per distinct budget of the plan, ascending: 0.25 (Pareto), 0.5, 1.
+  ASSERT_EQ(f.interpolation.size(), 3u);
+  EXPECT_EQ(f.interpolation[0].compression, 0.25);
+  EXPECT_EQ(f.interpolation[2].compression, 1.0);
+  EXPECT_EQ(f.interpolation[2].grid, "17x17");
+  EXPECT_EQ(f.interpolation[2].rms_pct.count, 40u);
+  EXPECT_EQ(f.interpolation[2].rms_pct.max, 0.0);   // the full-resolution grid loses nothing
+  EXPECT_GT(f.interpolation[1].rms_pct.mean, 0.0);  // a sagging cloth is not bilinear over a coarse grid
+  EXPECT_GT(f.interpolation[0].rms_pct.mean, f.interpolation[1].rms_pct.mean);  // coarser loses more
+  // Each row stands beside the floors of its budget (one net: its own).
+  for (const FidelityRow& r : fidelity_rows(*run.fidelity)) {
+    ASSERT_TRUE(r.noise_floor_pct && r.interpolation_floor_pct) << r.method << "@" << r.compression;
+    EXPECT_EQ(*r.noise_floor_pct, f.noise_rms_pct.mean);
+    for (const InterpolationFloor& i : f.interpolation) {
+      if (i.compression == r.compression) {
+        EXPECT_EQ(*r.interpolation_floor_pct, i.rms_pct.mean);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tcsb

@@ -47,6 +47,11 @@ RunResult run_with_fidelity() {
   f.cases[3].switch_ms = 1.5;
   f.cases[3].switch_step = 12;
   f.cases[2].step_ms = std::numeric_limits<double>::quiet_NaN();  // must come out as null
+  FidelityFloors floors;
+  floors.net_name = std::string("n0");
+  floors.noise_rms_pct = {400, 0.0042, 0.005, 0.006};
+  floors.interpolation = {{0.5, "7x7", {400, 0.25, 0.3, 0.4}}, {1.0, "10x10", {400, 0.0, 0.0, 0.0}}};
+  f.floors = {floors};
   r.fidelity = f;
   return r;
 }
@@ -96,6 +101,26 @@ TEST(FidelityJson, RowsParetoAndMaxCompression) {
   EXPECT_TRUE(weighted_target);
 }
 
+TEST(FidelityJson, FloorsPerNetAndBesideEveryRow) {
+  const ojson doc = native_json(run_with_fidelity());
+  const ojson& f = doc["fidelity"];
+  ASSERT_EQ(f["floors"].size(), 1u);
+  EXPECT_EQ(f["floors"][0]["net"], "n0");
+  EXPECT_EQ(f["floors"][0]["noise_floor_pct"], 0.0042);
+  ASSERT_EQ(f["floors"][0]["interpolation_floor_pct"].size(), 2u);
+  EXPECT_EQ(f["floors"][0]["interpolation_floor_pct"][0]["grid"], "7x7");
+  EXPECT_EQ(f["floors"][0]["interpolation_floor_pct"][0]["rms_pct"], 0.25);
+  EXPECT_EQ(f["rows"][0]["noise_floor_pct"], 0.0042);        // tcsb@0.5
+  EXPECT_EQ(f["rows"][0]["interpolation_floor_pct"], 0.25);  // its budget's grid
+  EXPECT_EQ(f["rows"][1]["interpolation_floor_pct"], 0.0);   // tcsb@1: the full grid
+  RunResult unmeasured = run_with_fidelity();
+  unmeasured.fidelity->floors[0].noise_rms_pct = {};  // the perturbed reference diverged
+  const ojson u = native_json(unmeasured);
+  EXPECT_TRUE(u["fidelity"]["floors"][0]["noise_floor_pct"].is_null());
+  EXPECT_TRUE(u["fidelity"]["rows"][0]["noise_floor_pct"].is_null());
+  EXPECT_FALSE(has_nan_or_inf(u));
+}
+
 TEST(FidelityJson, UnmeasuredMetricsAreNull) {
   RunResult r = run_with_fidelity();
   r.fidelity->cases[0].status = "diverged";
@@ -111,8 +136,9 @@ TEST(FidelityConsole, PrintsRowsSweepAndTargets) {
   std::ostringstream out;
   print_console_report(run_with_fidelity(), out);
   const std::string text = out.str();
-  for (const char* expected : {"Fidelity against full-resolution", "uniform_grid", "switch_body", "Pareto sweep",
-                               "Maximal compression", "fidelity_rms_75", "FAIL"})
+  for (const char* expected :
+       {"Fidelity against full-resolution", "uniform_grid", "switch_body", "Pareto sweep", "Maximal compression",
+        "fidelity_rms_75", "FAIL", "Floors", "noise floor %", "interp floor 50% %", "0.0042", "0.250"})
     EXPECT_NE(text.find(expected), std::string::npos) << expected;
   std::ostringstream none;
   RunResult r = run_with_fidelity();

@@ -79,6 +79,20 @@ TEST(ResultSchema, OptionalSectionsOfOtherCommandsConform) {
   EXPECT_EQ(problems(doc), Lines{});
 }
 
+TEST(ResultSchema, FidelityFloorsArePinned) {
+  ojson doc = native_json(run_with_cases());
+  doc["fidelity"] = {{"rows", ojson::array({{{"method", "tcsb"}, {"noise_floor_pct", 0.01}}})},
+                     {"floors",
+                      ojson::array({{{"net", "n0"},
+                                     {"noise_floor_pct", nullptr},
+                                     {"interpolation_floor_pct",
+                                      ojson::array({{{"compression", 0.5}, {"grid", "7x7"}, {"rms_pct", 0.2}}})}}})}};
+  EXPECT_EQ(problems(doc), Lines{});
+  doc["fidelity"]["rows"][0]["interpolation_floor_pct"] = "low";
+  doc["fidelity"]["floors"][0].erase("noise_floor_pct");
+  EXPECT_EQ(problems(doc).size(), 2u) << ::testing::PrintToString(problems(doc));
+}
+
 TEST(ResultSchema, AReproductionVerdictIsOneOfThree) {
   ojson doc = native_json(run_with_cases());
   doc["reproduction"] = {{"verdict", "maybe"}, {"claims", ojson::array({{{"id", "a"}, {"verdict", true}}})}};

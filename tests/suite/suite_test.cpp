@@ -77,6 +77,33 @@ TEST(ShippedSuites, Ci) {
   EXPECT_EQ(s.warmup_steps, 60);
 }
 
+TEST(ShippedSuites, ConvergedIsThePaperSuiteAtThirtyTwoIterationsWithTheWholeFidelityPass) {
+  const Suite c = parse_suite(kSourceDir / "suites/converged.json");
+  const Suite p = parse_suite(kSourceDir / "suites/paper.json");
+  EXPECT_EQ(c.name, "converged");
+  ASSERT_EQ(c.nets.size(), p.nets.size());
+  for (std::size_t i = 0; i < c.nets.size(); ++i) {
+    EXPECT_EQ(c.nets[i].width, p.nets[i].width);
+    EXPECT_EQ(c.nets[i].size_x, p.nets[i].size_x);
+    EXPECT_EQ(c.nets[i].pinned_corners, p.nets[i].pinned_corners);
+  }
+  EXPECT_EQ(c.compression, p.compression);
+  EXPECT_EQ(c.steps, p.steps);
+  EXPECT_EQ(c.warmup_steps, p.warmup_steps);
+  EXPECT_EQ(c.world.dt, p.world.dt);
+  EXPECT_EQ(c.solver.piterations, 32);  // converged links: strain of a few percent, noise floor <= 0.01 %
+  EXPECT_EQ(c.tcsb.blend_steps, p.tcsb.blend_steps);
+  EXPECT_TRUE(c.fidelity.enabled);
+  EXPECT_TRUE(c.fidelity.ablations);
+  EXPECT_FALSE(c.fidelity.pareto_targets.empty());
+  EXPECT_NE(c.description.find("32 solver iterations"), std::string::npos);
+  // Its calibration was fitted for exactly this regime (parsing checked the key) at both budgets below 1.
+  ASSERT_TRUE(c.calibration);
+  EXPECT_EQ(c.calibration->piterations, 32);
+  EXPECT_FALSE(c.calibration->levels.empty());
+  EXPECT_TRUE(c.calibration->uniform_stiffness(0.75) && c.calibration->uniform_stiffness(0.3));
+}
+
 TEST(ShippedSuites, FidelityIsThePaperSuiteWithTheFidelityPass) {
   const Suite f = parse_suite(kSourceDir / "suites/fidelity.json");
   const Suite p = parse_suite(kSourceDir / "suites/paper.json");
