@@ -218,8 +218,39 @@ FidelityCase read_fidelity_case(const Reader& r, const ojson& j, const std::stri
 struct ShardPart {
   std::map<std::size_t, CaseResult> cases;
   std::map<std::size_t, std::vector<FidelityCase>> fidelity;
+  std::map<std::size_t, FidelityFloors> floors;  ///< by net; none from a result that records no floors
   double fidelity_wall_s = 0;
 };
+
+/// A summary as the fidelity JSON records it: its mean alone (null when never measured). Every table reads only
+/// the mean (summary_mean), so the merged run's tables and JSON are the unsharded run's.
+MetricSummary summary_of_mean(double mean) {
+  MetricSummary s;
+  if (!std::isnan(mean)) {
+    s.count = 1;
+    s.mean = s.p95 = s.max = mean;
+  }
+  return s;
+}
+
+/// The floors of net `net` as the shard's `fidelity.floors[k]` records them.
+FidelityFloors read_floors(const Reader& r, const ojson& j, const std::string& path, std::size_t net,
+                           const std::string& net_name) {
+  FidelityFloors f;
+  f.net = net;
+  f.net_name = r.string(j, path, "net");
+  if (f.net_name != net_name) r.fail(path + ".net", "expected " + net_name + " here");
+  f.noise_rms_pct = summary_of_mean(r.number(j, path, "noise_floor_pct"));
+  const ojson& list = r.at(j, path, "interpolation_floor_pct");
+  if (!list.is_array()) r.fail(path + ".interpolation_floor_pct", "must be an array");
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::string at = path + ".interpolation_floor_pct[" + std::to_string(k) + "]";
+    f.interpolation.push_back({.compression = r.number(list[k], at, "compression"),
+                               .grid = r.string(list[k], at, "grid"),
+                               .rms_pct = summary_of_mean(r.number(list[k], at, "rms_pct"))});
+  }
+  return f;
+}
 
 /// Reads the cases of `shard`, which must be exactly those its index assigns, in the unsharded order.
 ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const ShardIndex& index) {
@@ -274,6 +305,19 @@ ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const Shard
     }
   }
   if (next != fcases.size()) r.fail("fidelity.cases", "more cases than shard " + shard_text(index) + " runs");
+  if (fidelity.contains("floors")) {  // optional: results from before the floors have none
+    const ojson& floors = fidelity["floors"];
+    if (!floors.is_array()) r.fail("fidelity.floors", "must be an array");
+    std::size_t k = 0;
+    for (std::size_t net = 0; net < suite.nets.size(); ++net) {
+      if (!nets[net]) continue;
+      const std::string path = "fidelity.floors[" + std::to_string(k) + "]";
+      if (k >= floors.size()) r.fail(path, "missing (net " + suite.nets[net].name + ")");
+      part.floors.emplace(net, read_floors(r, floors[k], path, net, suite.nets[net].name));
+      ++k;
+    }
+    if (k != floors.size()) r.fail("fidelity.floors", "more nets than shard " + shard_text(index) + " runs");
+  }
   part.fidelity_wall_s = r.number(fidelity, "fidelity", "wall_s");
   return part;
 }
@@ -359,11 +403,13 @@ MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
   result.suite = rebuild_suite(shards[given.at(1)]);
   std::map<std::size_t, CaseResult> cases;
   std::map<std::size_t, std::vector<FidelityCase>> fidelity;
+  std::map<std::size_t, FidelityFloors> floors;
   double fidelity_wall_s = 0;
   for (const auto& [k, i] : given) {
     ShardPart part = read_shard(shards[i], result.suite, indices[i]);
     cases.merge(part.cases);
     fidelity.merge(part.fidelity);
+    floors.merge(part.floors);
     fidelity_wall_s += part.fidelity_wall_s;
     // The sum of the shards' wall times: the machine time the suite took, wherever and however parallel it ran.
     const ojson& wall = shards[i].document["wall_s"];
@@ -375,6 +421,7 @@ MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
     f.rms_threshold_pct = result.suite.fidelity.rms_threshold_pct;
     for (auto& [net, list] : fidelity)
       for (FidelityCase& c : list) f.cases.push_back(std::move(c));
+    for (auto& [net, net_floors] : floors) f.floors.push_back(std::move(net_floors));
     f.wall_s = fidelity_wall_s;
     result.fidelity = std::move(f);
   }

@@ -75,7 +75,13 @@ void expect_same_deterministic_fields(const json& a, const json& b) {
     }
     for (std::size_t i = 0; i < a["fidelity"]["rows"].size(); ++i) {
       EXPECT_EQ(a["fidelity"]["rows"][i]["rms_pct"], b["fidelity"]["rows"][i]["rms_pct"]);
+      EXPECT_EQ(a["fidelity"]["rows"][i]["noise_floor_pct"], b["fidelity"]["rows"][i]["noise_floor_pct"]);
+      EXPECT_EQ(a["fidelity"]["rows"][i]["interpolation_floor_pct"],
+                b["fidelity"]["rows"][i]["interpolation_floor_pct"]);
     }
+    // The floors per net (deterministic: the perturbation is seeded), in suite order.
+    EXPECT_EQ(a["fidelity"]["floors"], b["fidelity"]["floors"]);
+    EXPECT_FALSE(a["fidelity"]["floors"].empty());
     EXPECT_EQ(a["max_compression"]["compression"], b["max_compression"]["compression"]);
   }
 }
