@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "analysis/statistics.h"
 #include "paper/paper_tables.h"
@@ -177,6 +178,45 @@ MaxCompression max_compression(const std::vector<ParetoPoint>& sweep, double thr
   return m;
 }
 
+namespace {
+
+/// The converged regime's targets, for a suite with a calibration (its rows `tcsb_calibrated` and
+/// `uniform_grid_calibrated`): calibrated TC-SB within 0.5 % RMS at 75 % and 1 % at 30 %, and its saliency-weighted
+/// RMS at most 0.7 x the calibrated uniform grid's of the same node count, the fair rival.
+void add_calibrated_targets(const std::vector<FidelityRow>& rows, std::vector<Claim>& targets) {
+  struct RmsLimit {
+    double compression, limit_pct;
+    const char* text;
+  };
+  for (const auto& [compression, limit, text] : {RmsLimit{0.75, 0.5, "0.5"}, RmsLimit{0.3, 1.0, "1"}}) {
+    const FidelityRow* row = row_of(rows, "tcsb_calibrated", compression);
+    if (row == nullptr) continue;
+    const std::string p = compression_percent(compression);
+    targets.push_back(check_claim("fidelity_calibrated_rms_" + p,
+                                  "calibrated TC-SB at " + p + "%: RMS error at most " + text +
+                                      "% of the net's extent (mean over steps and nets)",
+                                  Comparison::kAtMost, limit, 0.0,
+                                  measured(row, &MetricSummary::mean, &FidelityRow::rms_pct)));
+  }
+  for (const FidelityRow& grid : rows) {
+    if (grid.method != "uniform_grid_calibrated") continue;
+    const FidelityRow* tc = row_of(rows, "tcsb_calibrated", grid.compression);
+    if (tc == nullptr) continue;
+    const std::optional<double> a = measured(tc, &MetricSummary::mean, &FidelityRow::weighted_rms_pct),
+                                b = measured(&grid, &MetricSummary::mean, &FidelityRow::weighted_rms_pct);
+    std::optional<double> ratio;
+    if (a && b && *b > 0) ratio = *a / *b;
+    const std::string p = compression_percent(grid.compression);
+    targets.push_back(check_claim("fidelity_calibrated_weighted_vs_uniform_" + p,
+                                  "calibrated TC-SB at " + p +
+                                      "%: saliency-weighted RMS at most 0.7 x the calibrated uniform grid's "
+                                      "with the same node count (ratio)",
+                                  Comparison::kAtMost, 0.7, 0.0, ratio));
+  }
+}
+
+}  // namespace
+
 std::vector<Claim> fidelity_targets(const std::vector<FidelityRow>& rows) {
   std::vector<Claim> targets;
   const auto rms = [&](double c) {
@@ -205,6 +245,7 @@ std::vector<Claim> fidelity_targets(const std::vector<FidelityRow>& rows) {
                                       "with the same node count (ratio)",
                                   Comparison::kAtMost, 0.5, 0.0, ratio));
   }
+  add_calibrated_targets(rows, targets);
   for (const FidelityRow& r : rows) {
     if (r.method != "tcsb" || r.compression >= 1.0) continue;
     const std::string p = compression_percent(r.compression);

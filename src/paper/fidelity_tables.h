@@ -63,7 +63,9 @@ MaxCompression max_compression(const std::vector<ParetoPoint>& sweep, double thr
 
 /// The fidelity targets (reported, not gating): TC-SB RMS at most 1 % of the net's extent at 75 % and 2 % at 30 %;
 /// saliency-weighted RMS of TC-SB at most half the uniform coarse grid's at each ablated target; popping at most
-/// 0.5 % of the extent for every operation (TC-SB at every target below 1). A target with no measurement fails.
+/// 0.5 % of the extent for every operation (TC-SB at every target below 1). With a calibration's rows, also the
+/// converged regime's: calibrated TC-SB RMS at most 0.5 % at 75 % and 1 % at 30 %, and its saliency-weighted RMS at
+/// most 0.7 x the calibrated uniform grid's. A target with no measurement fails.
 std::vector<Claim> fidelity_targets(const std::vector<FidelityRow>& rows);
 
 }  // namespace tcsb

@@ -118,6 +118,33 @@ TEST(FidelityTargets, PassAndFailAsMeasured) {
   EXPECT_EQ(targets.size(), 5u);
 }
 
+TEST(FidelityTargets, CalibratedRowsAreJudgedAgainstTheConvergedTargets) {
+  FidelityResult r;
+  r.cases = {make(0, FidelityMethod::kTcsbCalibrated, 0.75, 0.4, 1.0),
+             make(0, FidelityMethod::kTcsbCalibrated, 0.3, 1.5, 1.0),
+             make(0, FidelityMethod::kUniformCalibrated, 0.3, 3.0, 1.0),
+             make(0, FidelityMethod::kUniformCalibrated, 0.75, 0.5, 1.0)};
+  const std::vector<Claim> targets = fidelity_targets(fidelity_rows(r));
+  const auto find = [&](const std::string& id) -> const Claim* {
+    for (const Claim& c : targets)
+      if (c.id == id) return &c;
+    return nullptr;
+  };
+  ASSERT_NE(find("fidelity_calibrated_rms_75"), nullptr);
+  EXPECT_TRUE(passed(*find("fidelity_calibrated_rms_75")));   // 0.4 <= 0.5
+  EXPECT_FALSE(passed(*find("fidelity_calibrated_rms_30")));  // 1.5 > 1
+  ASSERT_NE(find("fidelity_calibrated_weighted_vs_uniform_30"), nullptr);
+  EXPECT_DOUBLE_EQ(*find("fidelity_calibrated_weighted_vs_uniform_30")->measured, 1.5 / 3.0);
+  EXPECT_TRUE(passed(*find("fidelity_calibrated_weighted_vs_uniform_30")));
+  EXPECT_FALSE(passed(*find("fidelity_calibrated_weighted_vs_uniform_75")));  // 0.8 > 0.7
+}
+
+TEST(FidelityTargets, NoCalibratedTargetsWithoutACalibration) {
+  FidelityResult r;
+  r.cases = {make(0, FidelityMethod::kTcsb, 0.75, 0.8, 1.0), make(0, FidelityMethod::kTcsb, 0.3, 2.5, 1.0)};
+  for (const Claim& c : fidelity_targets(fidelity_rows(r))) EXPECT_EQ(c.id.find("calibrated"), std::string::npos);
+}
+
 TEST(FidelityTargets, FailWhenNothingWasMeasured) {
   const std::vector<Claim> targets = fidelity_targets({});
   ASSERT_EQ(targets.size(), 2u);
