@@ -288,6 +288,13 @@ ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const Shard
     }
     if (c.key.method == Method::kTcsb) c.ops.samples = read_op_samples(r, r.at(doc, "", "merge_data"), c.label);
     summarize_case(c);  // the run's own summary of the repetitions, so the merged case is the unsharded one
+    // The step breakdown is summarised from per-repetition parts the result does not record: the shard's own
+    // summary of the case is the one its repetitions give (they all ran in that shard), so it is read back.
+    if (const auto b = j.find("step_breakdown_ms"); b != j.end()) {
+      const std::string at = path + ".step_breakdown_ms";
+      c.breakdown = {r.number(*b, at, "bullet"), r.number(*b, at, "feedback"), r.number(*b, at, "operations"),
+                     r.number(*b, at, "blending")};
+    }
     part.cases.emplace(index_in_suite, std::move(c));
   }
   const std::vector<FidelitySubjectSpec> plan = fidelity_plan(suite);

@@ -241,6 +241,26 @@ class BadShardSets : public Shards {
 
 TEST_F(BadShardSets, TheGoodSetMerges) { EXPECT_EQ(tcsb("merge s1.json s2.json s3.json --quiet").exit_code, 0); }
 
+// Timings are not deterministic, so the merged case must carry what its shard measured: the step breakdown too,
+// which the result records per case only.
+TEST_F(BadShardSets, TheMergedCasesKeepTheirShardsStepBreakdown) {
+  ASSERT_EQ(tcsb("merge s1.json s2.json s3.json --quiet --out merged.json").exit_code, 0);
+  const json merged = load("merged.json");
+  std::size_t compared = 0;
+  for (const std::string file : {"s1.json", "s2.json", "s3.json"}) {
+    const json shard = load(file);
+    for (const json& c : shard["cases"]) {
+      for (const json& m : merged["cases"]) {
+        if (m["label"] != c["label"]) continue;
+        EXPECT_EQ(m["step_breakdown_ms"], c["step_breakdown_ms"]) << c["label"];
+        EXPECT_GT(m["step_breakdown_ms"]["bullet"].get<double>(), 0) << c["label"];
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, merged["cases"].size());
+}
+
 TEST_F(BadShardSets, AMissingShardIsRefused) {
   expect_refused("s1.json s3.json", "shard 2/3 is missing");
   expect_refused("s1.json s3.json", "s1.json");
