@@ -11,6 +11,9 @@
 # Prints per step: Ir, D1 misses (reads + writes), LL misses (reads + writes), and their ratios TC-SB / plain_equal;
 # then the inclusive instructions and LL misses per step of the functions a TC-SB step spends them in.
 # Usage: bash scripts/step-profile.sh [build-dir] [width] [compression]   (defaults: build 129 0.3; needs valgrind)
+#   TCSB_PROFILE_SUITE=paper takes the net's settings from suites/paper.json instead (2 solver iterations, evaluation
+#   every 4 steps); TCSB_PROFILE_TCSB='{"restore_order": false}' overrides TC-SB settings (here: Bullet's arrays left
+#   in the order operations leave them, for the profile before restore_order).
 #   TCSB_PROFILE_EVALUATION_INTERVAL=k evaluates the feedback every k steps instead of the suite's every step: a
 #   callgrind run simulates one cache for everything, so the evaluation (on a worker thread and its core in real
 #   runs) evicts Bullet's data here; a sparse evaluation shows what the step misses without that.
@@ -27,10 +30,11 @@ fi
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 
-python3 - "$dir" "$width" "$compression" "${TCSB_PROFILE_EVALUATION_INTERVAL:-}" <<'EOF'
+python3 - "$dir" "$width" "$compression" "${TCSB_PROFILE_EVALUATION_INTERVAL:-}" "${TCSB_PROFILE_SUITE:-scaling}" \
+  "${TCSB_PROFILE_TCSB:-}" <<'EOF'
 import json, sys
-out, width, compression, interval = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), sys.argv[4]
-with open("suites/scaling.json") as f:
+out, width, compression, interval, suite_name, tcsb = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), *sys.argv[4:]
+with open(f"suites/{suite_name}.json") as f:
     scaling = json.load(f)
 net = dict(scaling["nets"][0], name=f"n{width}", width=width, height=width)
 for method in ("tcsb", "plain_equal"):
@@ -40,6 +44,8 @@ for method in ("tcsb", "plain_equal"):
         suite["feedback"] = dict(scaling["feedback"], parallel=False)
         if interval:
             suite["feedback"]["evaluation_interval"] = int(interval)
+        if tcsb:
+            suite["tcsb"] = dict(scaling.get("tcsb", {}), **json.loads(tcsb))
         suite["fidelity"] = dict(scaling["fidelity"], enabled=False)
         with open(f"{out}/{method}-{steps}.json", "w") as f:
             json.dump(suite, f)
@@ -113,13 +119,13 @@ parts = ["TcSoftBody::advance_blends", "SaliencyController::before_step", "Salie
          "TcSoftBody::begin_refine", "TcSoftBody::begin_coarse", "TcSoftBody::end_refine", "TcSoftBody::end_coarse",
          "TcSoftBody::simulate_step", "btSoftBody::predictMotion", "btDbvt::update", "btSoftBody::solveConstraints",
          "btSoftBody::PSolve_Links", "btSoftBody::integrateMotion", "btSoftBody::applyClusters"]
-print("inclusive per step        tcsb Ir   plain_equal Ir     tcsb LL  plain_equal LL")
+print("inclusive per step        tcsb Ir   plain_equal Ir     tcsb D1  plain_equal D1     tcsb LL  plain_equal LL")
 dumps = {m: functions(m) for m in ("tcsb", "plain_equal")}
 for part in parts:
     row = []
     for method in ("tcsb", "plain_equal"):
         cost = {}
-        for ev in ("Ir", "DLmr", "DLmw"):
+        for ev in ("Ir", "D1mr", "D1mw", "DLmr", "DLmw"):
             vals = {}
             for steps in (10, 30):
                 vals[steps] = sum(v for (name, e), v in dumps[method][steps].items() if e == ev and part + "(" in name)
@@ -127,6 +133,7 @@ for part in parts:
         row.append(cost)
     if all(c["Ir"] == 0 for c in row):
         continue
-    print(f"{part:32s} {row[0]['Ir']:12.0f} {row[1]['Ir']:12.0f} {row[0]['DLmr'] + row[0]['DLmw']:10.0f} "
+    print(f"{part:32s} {row[0]['Ir']:12.0f} {row[1]['Ir']:12.0f} {row[0]['D1mr'] + row[0]['D1mw']:10.0f} "
+          f"{row[1]['D1mr'] + row[1]['D1mw']:10.0f} {row[0]['DLmr'] + row[0]['DLmw']:10.0f} "
           f"{row[1]['DLmr'] + row[1]['DLmw']:10.0f}")
 EOF

@@ -76,6 +76,32 @@ LodTree::LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_re
       }
     }
   }
+  rank_block_centres();
+}
+
+void LodTree::rank_block_centres() {
+  // Twice a block's centre in leaf units, so that every centre is an integer: leaf (x, y) is at (2x, 2y). Two
+  // stable counting sorts, column first, then row: O(size + width + height).
+  const auto size = nodes_.size();
+  const auto column = [&](std::size_t i) {
+    return static_cast<std::size_t>(nodes_[i].leaf_x0 + nodes_[i].leaf_x1 - 1);
+  };
+  const auto row = [&](std::size_t i) { return static_cast<std::size_t>(nodes_[i].leaf_y0 + nodes_[i].leaf_y1 - 1); };
+  std::vector<std::int32_t> by_column(size), by_row(size);
+  const auto counting_sort = [&](const auto& key, std::size_t keys, const auto& in, std::vector<std::int32_t>& out) {
+    std::vector<std::size_t> start(keys + 1, 0);
+    for (std::size_t k = 0; k < size; ++k) ++start[key(in(k)) + 1];
+    for (std::size_t k = 0; k < keys; ++k) start[k + 1] += start[k];
+    for (std::size_t k = 0; k < size; ++k) out[start[key(in(k))]++] = static_cast<std::int32_t>(in(k));
+  };
+  counting_sort(
+      column, 2 * static_cast<std::size_t>(level_width(0)), [](std::size_t k) { return k; }, by_column);
+  counting_sort(
+      row, 2 * static_cast<std::size_t>(level_height(0)),
+      [&](std::size_t k) { return static_cast<std::size_t>(by_column[k]); }, by_row);
+  spatial_rank_.resize(size);
+  for (std::size_t r = 0; r < size; ++r)
+    spatial_rank_[static_cast<std::size_t>(by_row[r])] = static_cast<std::int32_t>(r);
 }
 
 }  // namespace tcsb

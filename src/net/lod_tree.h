@@ -61,6 +61,10 @@ class LodTree {
   int level_width(int level) const { return level_width_[static_cast<std::size_t>(level)]; }
   int level_height(int level) const { return level_height_[static_cast<std::size_t>(level)]; }
   TreeId root() const { return static_cast<TreeId>(nodes_.size() - 1); }
+  /// The node's place in the row-major order of every node's block centre on the net (ties: lower id first), a
+  /// permutation of 0..size()-1. Sorting a cut by it puts the finest cut in grid order, and coarser blocks between
+  /// the rows and columns of their leaves: how TcSoftBody keeps Bullet's arrays in a plain body's order.
+  std::int32_t spatial_rank(TreeId id) const { return spatial_rank_[static_cast<std::size_t>(id)]; }
 
   /// The node at (gx, gy) of a level, or kNoTreeNode outside the level's grid. O(1).
   TreeId at(int level, int gx, int gy) const {
@@ -71,8 +75,12 @@ class LodTree {
   }
 
  private:
+  /// Fills spatial_rank_ once the nodes' leaf ranges are known.
+  void rank_block_centres();
+
   std::vector<LodNode> nodes_;
   std::vector<Eigen::Vector3d> centroid_, rest_;  // per node, beside nodes_: read only when building and measuring
+  std::vector<std::int32_t> spatial_rank_;        // per node
   std::vector<int> level_width_, level_height_;
   std::vector<TreeId> level_offset_;
 };

@@ -44,6 +44,12 @@ class alignas(64) IncidenceList {
       }
     return false;
   }
+  /// Rewrites every entry e into position[e] (the links were permuted).
+  template <class Positions>
+  void renumber(const Positions& position) {
+    for (int i = 0; i < count_; ++i)
+      links_[static_cast<std::size_t>(i)] = position[static_cast<std::size_t>(links_[static_cast<std::size_t>(i)])];
+  }
   bool contains(std::int32_t link) const {
     for (int i = 0; i < count_; ++i)
       if (links_[static_cast<std::size_t>(i)] == link) return true;

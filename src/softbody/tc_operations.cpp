@@ -258,6 +258,9 @@ void TcSoftBody::advance_blends() {
     ramp(op.parent);
     for (int c = 0; c < pn.child_count; ++c) ramp(pn.children[static_cast<std::size_t>(c)]);
   }
+  if (settings_.restore_order &&
+      displaced_ > TcSettings::kReorderFraction * static_cast<double>(m_nodes.size() + m_links.size()))
+    restore_order();
 }
 
 void TcSoftBody::end_op(std::int32_t index) {

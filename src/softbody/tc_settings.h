@@ -20,6 +20,15 @@ struct TcSettings {
   /// (and every link, when this is empty: uncalibrated) use the solver's material. Values from a calibration
   /// (fidelity/calibration.h), each in (0, 1]. Applied through Bullet's per-link materials: no per-step cost.
   std::vector<double> level_stiffness;
+  /// Keep Bullet's node and link arrays in a plain body's spatial order (TcSoftBody::restore_order) while
+  /// operations change the cut. Off: the arrays stay in the order the operations leave them (for measuring what the
+  /// order costs; docs/methodology.md, "The tax of adaptivity").
+  bool restore_order = true;
+  /// restore_order runs once operations have displaced this fraction of the nodes and links simulated: the arrays
+  /// stay at least 3/4 in order, and the O(N + L) pass runs once per (N + L)/4 displacements, amortised O(1) each
+  /// (about 4 x 50 instructions). 1/8 missed the L1 no less often in Bullet's step and cost twice the passes; 1/2
+  /// fewer passes, but half the arrays out of order (callgrind, scripts/step-profile.sh; docs/methodology.md).
+  static constexpr double kReorderFraction = 1.0 / 4;
 };
 
 }  // namespace tcsb

@@ -121,6 +121,7 @@ int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, Tree
                          &added, &work_.dbvt_ancestors);
   tree_of_.push_back(id);
   set_bullet_index(id, index);
+  ++displaced_;             // appended at the end, away from its neighbours
   work_.nodes += 2;         // the appended node, and the node beside whose leaf it goes
   work_.tree_records += 2;  // id's and beside's
   ++work_.dbvt_leaves;
@@ -138,6 +139,7 @@ void TcSoftBody::remove_node(TreeId id) {
   const int last = m_nodes.size() - 1;
   if (k != last) {
     ++work_.relocation_nodes;  // the last node, copied into the hole: its leaf, Bullet index and tree entry
+    ++displaced_;
     // Swap-with-last: the moved node's leaf and incident links are re-pointed, O(degree).
     Node* from = &m_nodes[last];
     m_nodes[k] = m_nodes[last];
@@ -183,6 +185,7 @@ int TcSoftBody::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
   incidence_[static_cast<std::size_t>(a)].add(index);
   incidence_[static_cast<std::size_t>(b)].add(index);
   write_link_constant(index);
+  ++displaced_;
   ++work_.links;
   work_.tree_records += 2;  // both endpoints: records read, incidence lists written
   return index;
@@ -197,6 +200,7 @@ void TcSoftBody::remove_link(int link) {
   const int last = m_links.size() - 1;
   if (link != last) {
     ++work_.relocation_links;  // the last link, copied into the hole; its endpoints' incidence entries re-pointed
+    ++displaced_;
     // Swap-with-last: Bullet keeps no pointer to links, only our incidence lists name the moved one.
     m_links[link] = m_links[last];
     link_meta_[static_cast<std::size_t>(link)] = link_meta_[static_cast<std::size_t>(last)];

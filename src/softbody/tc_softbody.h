@@ -130,12 +130,28 @@ class TcSoftBody : public btSoftBody {
   /// Begins replacing the children of `parent` by `parent`. Requires can_coarsen(parent).ok. O(1).
   void begin_coarse(TreeId parent);
   /// Advances every blending operation by one step; ends those whose K steps are done. Call once per step boundary,
-  /// before beginning new operations. O(interpolations).
+  /// before beginning new operations. O(interpolations); when TcSettings::restore_order is on and operations have
+  /// displaced more than TcSettings::kReorderFraction of the arrays' elements, it then restores their order
+  /// (restore_order(): O(N + L) once per that many displacements, so O(1) amortised per operation).
   void advance_blends();
   /// One Bullet step, exactly as the plain baseline steps.
   void simulate_step(btScalar dt);
   /// Receives every operation's timing (may be null).
   void set_op_sink(OpSink* sink) { sink_ = sink; }
+
+  // ---- array order (tc_order.cpp) ----------------------------------------------------------------------------
+  /// Puts Bullet's node array back into the row-major order of the nodes' blocks on the net, and its link array
+  /// into the order of their endpoints (lower index first, then higher), the order a plain body of the same nodes
+  /// has from the start; the node DBVT's leaves follow their nodes. Operations append at the end and fill holes by
+  /// swap-with-last, which would otherwise scatter neighbours over the arrays and cost the solver cache misses a
+  /// plain body does not pay. Positions, velocities and every invariant are unchanged; the links' order is Bullet's
+  /// solving order, so the simulation goes on differently (deterministically). On the finest cut it changes nothing.
+  /// O(N + L), no allocation after the first call. Must not run while a worker reads the cut (CutView).
+  void restore_order();
+  /// Nodes and links moved by operations since the arrays were last in order (appended, or moved into a hole).
+  int displaced() const { return displaced_; }
+  /// Times restore_order() has run (by advance_blends() or a direct call).
+  int order_restorations() const { return order_restorations_; }
 
   // ---- invariants --------------------------------------------------------------------------------------------
   /// Checks every invariant: incidence lists equal Bullet's link set; node and link pointers consistent; one DBVT
@@ -257,7 +273,12 @@ class TcSoftBody : public btSoftBody {
   /// (appendMaterial; freed with the body), made once at construction: materials cannot be freed before the body.
   std::vector<Material*> level_materials_;
   DbvtNodeCache dbvt_nodes_;  // spare nodes for the node DBVT's local edits
-  std::vector<Op> ops_;       // operation pool
+  int displaced_ = 0;         // nodes and links out of order since restore_order() (see displaced())
+  int order_restorations_ = 0;
+  /// restore_order()'s scratch, kept to reuse the room: a permutation (new -> old), its inverse, and one slot per
+  /// spatial rank of the tree.
+  std::vector<std::int32_t> order_, position_, rank_slots_;
+  std::vector<Op> ops_;  // operation pool
   std::vector<std::int32_t> free_ops_;
   std::vector<std::int32_t> inflight_;  // operations blending
   int committed_count_ = 0;

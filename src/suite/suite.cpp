@@ -80,9 +80,10 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
   solver.read("stiffness", s.solver.linear_stiffness, kFraction);
 
   if (const json* j = root.find("tcsb")) {
-    const Object tc(r, *j, "tcsb", {"blend_steps", "placement"});
+    const Object tc(r, *j, "tcsb", {"blend_steps", "placement", "restore_order"});
     tc.read("blend_steps", s.tcsb.blend_steps, 1, 1000);
     tc.read("placement", s.tcsb.placement, {{"affine", Placement::kAffine}, {"rigid", Placement::kRigid}});
+    tc.read("restore_order", s.tcsb.restore_order);
   }
 
   if (const json* j = root.find("feedback")) {

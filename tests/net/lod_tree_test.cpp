@@ -172,6 +172,31 @@ TEST(LodTree, LeafBlocksFollowTheLevelGrid) {
   });
 }
 
+TEST(LodTree, SpatialRanksOrderEveryBlockCentreRowMajor) {
+  for_each_tree([](const LodTree& tree, const Net&) {
+    std::vector<TreeId> by_rank(tree.size(), kNoTreeNode);
+    for (std::size_t id = 0; id < tree.size(); ++id) {
+      const std::int32_t r = tree.spatial_rank(static_cast<TreeId>(id));
+      ASSERT_GE(r, 0);
+      ASSERT_LT(static_cast<std::size_t>(r), tree.size());
+      ASSERT_EQ(by_rank[static_cast<std::size_t>(r)], kNoTreeNode) << "rank " << r << " given twice";
+      by_rank[static_cast<std::size_t>(r)] = static_cast<TreeId>(id);
+    }
+    // Twice the block centre, (row, column), never decreases along the ranks; ties keep the lower id first.
+    const auto centre = [&](TreeId id) {
+      const LodNode& n = tree.node(id);
+      return std::make_pair(n.leaf_y0 + n.leaf_y1, n.leaf_x0 + n.leaf_x1);
+    };
+    for (std::size_t r = 1; r < by_rank.size(); ++r) {
+      ASSERT_LE(centre(by_rank[r - 1]), centre(by_rank[r])) << "rank " << r;
+      if (centre(by_rank[r - 1]) == centre(by_rank[r])) ASSERT_LT(by_rank[r - 1], by_rank[r]);
+    }
+    // So the finest cut alone comes out in grid order.
+    for (std::size_t leaf = 1; leaf < tree.leaf_count(); ++leaf)
+      ASSERT_LT(tree.spatial_rank(static_cast<TreeId>(leaf - 1)), tree.spatial_rank(static_cast<TreeId>(leaf)));
+  });
+}
+
 TEST(LodTree, ChildrenPartitionTheParentsBlock) {
   for_each_tree([](const LodTree& tree, const Net&) {
     for (const LodNode& n : tree.nodes()) {

@@ -1,0 +1,125 @@
+// TcSoftBody::restore_order(): Bullet's node and link arrays back in a plain body's spatial order.
+//
+// Why (docs/methodology.md, "The tax of adaptivity"): Bullet's step walks its node array (integration, one DBVT
+// update per node) and its link array (the solver), and a plain body's arrays are row-major, so consecutive
+// elements are neighbours on the cloth and share cache lines and DBVT ancestors. Operations append new nodes and
+// links at the end and fill holes by swap-with-last; left alone, that scatters neighbours over the arrays, and the
+// same Bullet instructions then miss the L1 cache about twice as often (callgrind, scripts/step-profile.sh).
+#include <array>
+#include <utility>
+
+#include "softbody/tc_softbody.h"
+
+namespace tcsb {
+
+namespace {
+
+/// Moves element order[i] to position i in every array `move(to, from)` and `stash`/`unstash` describe, following
+/// the permutation's cycles: one copy per element and one temporary per cycle, no second array. Marks `order` as it
+/// goes (its entries are negative afterwards).
+template <class Move, class Stash, class Unstash>
+void permute_in_place(std::vector<std::int32_t>& order, Move move, Stash stash, Unstash unstash) {
+  const auto n = static_cast<std::int32_t>(order.size());
+  for (std::int32_t start = 0; start < n; ++start) {
+    if (order[static_cast<std::size_t>(start)] < 0 || order[static_cast<std::size_t>(start)] == start) continue;
+    stash(start);
+    for (std::int32_t to = start;;) {
+      const std::int32_t from = order[static_cast<std::size_t>(to)];
+      order[static_cast<std::size_t>(to)] = -1 - from;
+      if (from == start) {
+        unstash(to);
+        break;
+      }
+      move(to, from);
+      to = from;
+    }
+  }
+}
+
+/// position[order[i]] = i.
+void invert(const std::vector<std::int32_t>& order, std::vector<std::int32_t>& position) {
+  position.resize(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    position[static_cast<std::size_t>(order[i])] = static_cast<std::int32_t>(i);
+}
+
+}  // namespace
+
+void TcSoftBody::restore_order() {
+  const LodTree& lod = tree();
+  const int n = m_nodes.size();
+  // Nodes by their blocks' spatial ranks, which are distinct: each simulated node marks its rank's slot, and a scan
+  // of the slots reads them out in order. O(N + tree size), a write of the slots and a read, no comparison.
+  rank_slots_.assign(lod.size(), -1);
+  for (std::int32_t i = 0; i < n; ++i)
+    rank_slots_[static_cast<std::size_t>(lod.spatial_rank(tree_of_[static_cast<std::size_t>(i)]))] = i;
+  order_.clear();
+  for (const std::int32_t i : rank_slots_)
+    if (i >= 0) order_.push_back(i);
+  invert(order_, position_);
+
+  // Links hold raw pointers into the node array: re-point them to where their nodes go, then move the nodes.
+  Node* const base = &m_nodes[0];
+  for (int li = 0; li < m_links.size(); ++li)
+    for (Node*& end : m_links[li].m_n) end = base + position_[static_cast<std::size_t>(end - base)];
+  Node node_stash;
+  TreeId id_stash = kNoTreeNode;
+  permute_in_place(
+      order_,
+      [&](std::int32_t to, std::int32_t from) {
+        m_nodes[to] = m_nodes[from];
+        tree_of_[static_cast<std::size_t>(to)] = tree_of_[static_cast<std::size_t>(from)];
+      },
+      [&](std::int32_t at) {
+        node_stash = m_nodes[at];
+        id_stash = tree_of_[static_cast<std::size_t>(at)];
+      },
+      [&](std::int32_t at) {
+        m_nodes[at] = node_stash;
+        tree_of_[static_cast<std::size_t>(at)] = id_stash;
+      });
+  for (int i = 0; i < n; ++i) {
+    m_nodes[i].m_leaf->data = &m_nodes[i];
+    set_bullet_index(tree_of_[static_cast<std::size_t>(i)], i);
+  }
+
+  // Links by (lower endpoint, higher endpoint), a plain net's order: each node in turn gives its links to later
+  // nodes, nearest first, read from its incidence list (at most IncidenceList::kCapacity). O(L).
+  order_.clear();
+  for (std::int32_t i = 0; i < n; ++i) {
+    const TreeId id = tree_of_[static_cast<std::size_t>(i)];
+    std::array<std::pair<std::int32_t, std::int32_t>, IncidenceList::kCapacity> later;  // (other endpoint, link)
+    std::size_t count = 0;
+    for (const std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
+      const std::int32_t other = record(link_meta_[static_cast<std::size_t>(li)].other(id)).bullet;
+      if (other < i) continue;
+      std::size_t at = count++;
+      for (; at > 0 && later[at - 1].first > other; --at) later[at] = later[at - 1];
+      later[at] = {other, li};
+    }
+    for (std::size_t k = 0; k < count; ++k) order_.push_back(later[k].second);
+  }
+  invert(order_, position_);
+  Link link_stash;
+  CutLink meta_stash;
+  permute_in_place(
+      order_,
+      [&](std::int32_t to, std::int32_t from) {
+        m_links[to] = m_links[from];
+        link_meta_[static_cast<std::size_t>(to)] = link_meta_[static_cast<std::size_t>(from)];
+      },
+      [&](std::int32_t at) {
+        link_stash = m_links[at];
+        meta_stash = link_meta_[static_cast<std::size_t>(at)];
+      },
+      [&](std::int32_t at) {
+        m_links[at] = link_stash;
+        link_meta_[static_cast<std::size_t>(at)] = meta_stash;
+      });
+  // Incidence lists name links by index: each entry follows its link.
+  for (const TreeId id : tree_of_) incidence_[static_cast<std::size_t>(id)].renumber(position_);
+  displaced_ = 0;
+  ++order_restorations_;
+}
+
+}  // namespace tcsb

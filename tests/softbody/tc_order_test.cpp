@@ -1,0 +1,168 @@
+// TcSoftBody::restore_order(): the arrays go back to a plain body's order, and nothing else changes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "feedback/random_policy.h"
+#include "softbody/bullet_setup.h"
+#include "softbody/plain_softbody.h"
+#include "softbody/tc_softbody.h"
+#include "test_bodies.h"
+
+namespace tcsb {
+namespace {
+
+constexpr btScalar kDt = 1.0f / 60;
+
+TcSettings unordered() {
+  TcSettings s;
+  s.restore_order = false;
+  return s;
+}
+
+/// Steps with random operations towards `target` nodes, as the runner orders a step.
+void operate(TcSoftBody& body, RandomPolicy& policy, int target, int steps) {
+  for (int s = 0; s < steps; ++s) {
+    body.advance_blends();
+    policy.apply(body, target, 32);
+    body.simulate_step(kDt);
+  }
+}
+
+/// What a simulated node is, whatever its place in Bullet's array: its position and velocity bits.
+using NodeState = std::tuple<btScalar, btScalar, btScalar, btScalar, btScalar, btScalar>;
+/// What a link is, whatever its place: endpoints, role, operation, rest length and constant bits.
+using LinkState = std::tuple<TreeId, TreeId, int, int, btScalar, btScalar>;
+
+std::map<TreeId, NodeState> nodes_by_tree_id(const TcSoftBody& body) {
+  std::map<TreeId, NodeState> out;
+  for (int i = 0; i < body.node_count(); ++i) {
+    const btSoftBody::Node& n = body.m_nodes[i];
+    out[body.tree_id(i)] = {n.m_x.x(), n.m_x.y(), n.m_x.z(), n.m_v.x(), n.m_v.y(), n.m_v.z()};
+  }
+  return out;
+}
+
+std::vector<LinkState> link_set(const TcSoftBody& body) {
+  std::vector<LinkState> out;
+  for (int i = 0; i < body.link_count(); ++i) {
+    const CutLink& m = body.cut_links()[static_cast<std::size_t>(i)];
+    out.emplace_back(m.a, m.b, static_cast<int>(m.role), m.op, body.m_links[i].m_rl, body.m_links[i].m_c0);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+int index_of(const TcSoftBody& body, const btSoftBody::Node* n) { return static_cast<int>(n - &body.m_nodes[0]); }
+
+TEST(TcSoftBodyOrder, RestoringKeepsEveryNodeEveryLinkAndEveryInvariant) {
+  const auto net = testing::square_net(33);
+  SoftBodyWorld world({});
+  TcSoftBody tc(world, net, testing::test_solver(), unordered());
+  RandomPolicy policy(7);
+  operate(tc, policy, 400, 60);
+  ASSERT_GT(tc.interpolations(), 0) << "the test wants operations in flight while the order is restored";
+  ASSERT_GT(tc.displaced(), 0);
+  const auto nodes = nodes_by_tree_id(tc);
+  const auto links = link_set(tc);
+  const int interpolations = tc.interpolations();
+
+  tc.restore_order();
+
+  EXPECT_EQ(tc.order_restorations(), 1);
+  EXPECT_EQ(tc.displaced(), 0);
+  EXPECT_EQ(nodes_by_tree_id(tc), nodes);
+  EXPECT_EQ(link_set(tc), links);
+  EXPECT_EQ(tc.interpolations(), interpolations);
+  const Validation v = tc.validate();
+  ASSERT_TRUE(v.ok()) << v.summary();
+
+  // Nodes row-major by their block's centre; links by (lower endpoint, higher endpoint).
+  const LodTree& lod = net->lod();
+  const auto key = [&](int i) {
+    const LodNode& t = lod.node(tc.tree_id(i));
+    return std::make_pair(t.leaf_y0 + t.leaf_y1, t.leaf_x0 + t.leaf_x1);
+  };
+  for (int i = 1; i < tc.node_count(); ++i) EXPECT_LE(key(i - 1), key(i)) << "node " << i;
+  const auto link_key = [&](int li) {
+    const int a = index_of(tc, tc.m_links[li].m_n[0]), b = index_of(tc, tc.m_links[li].m_n[1]);
+    return std::make_pair(std::min(a, b), std::max(a, b));
+  };
+  for (int li = 1; li < tc.link_count(); ++li) EXPECT_LT(link_key(li - 1), link_key(li)) << "link " << li;
+
+  // Operations go on from the restored arrays: blends end, new operations begin, invariants hold.
+  operate(tc, policy, 700, 30);
+  const Validation after = tc.validate();
+  EXPECT_TRUE(after.ok()) << after.summary();
+}
+
+TEST(TcSoftBodyOrder, OnTheFinestCutRestoringChangesNothing) {
+  const auto net = testing::square_net(17);
+  SoftBodyWorld world({});
+  TcSoftBody tc(world, net, testing::test_solver(), {});
+  auto plain = make_plain_softbody(world, *net, testing::test_solver());
+  tc.restore_order();
+  for (int s = 0; s < 50; ++s) {
+    tc.advance_blends();
+    tc.simulate_step(kDt);
+    step_soft_body(*plain, kDt);
+  }
+  for (int i = 0; i < plain->m_nodes.size(); ++i) {
+    ASSERT_EQ(tc.tree_id(i), i);
+    ASSERT_EQ(tc.m_nodes[i].m_x, plain->m_nodes[i].m_x) << "node " << i;
+    ASSERT_EQ(tc.m_nodes[i].m_v, plain->m_nodes[i].m_v) << "node " << i;
+  }
+}
+
+TEST(TcSoftBodyOrder, BackOnTheFinestCutTheArraysAreAPlainBodysOrder) {
+  const auto net = testing::square_net(17);
+  SoftBodyWorld world({});
+  TcSoftBody tc(world, net, testing::test_solver(), unordered());
+  RandomPolicy policy(11);
+  operate(tc, policy, 90, 80);
+  for (int round = 0; round < 500 && tc.committed_count() < 17 * 17; ++round) {
+    tc.advance_blends();
+    for (int i = 0; i < tc.node_count(); ++i)
+      if (tc.can_refine(tc.tree_id(i)).ok) tc.begin_refine(tc.tree_id(i));
+    tc.simulate_step(kDt);
+  }
+  for (int s = 0; s < tc.settings().blend_steps; ++s) tc.advance_blends();
+  ASSERT_EQ(tc.node_count(), 17 * 17);
+  tc.restore_order();
+  auto plain = make_plain_softbody(world, *net, testing::test_solver());
+  ASSERT_EQ(tc.link_count(), plain->m_links.size());
+  for (int i = 0; i < tc.node_count(); ++i) ASSERT_EQ(tc.tree_id(i), i);
+  for (int li = 0; li < tc.link_count(); ++li) {
+    const int a = index_of(tc, tc.m_links[li].m_n[0]), b = index_of(tc, tc.m_links[li].m_n[1]);
+    const auto* base = &plain->m_nodes[0];
+    const int pa = static_cast<int>(plain->m_links[li].m_n[0] - base);
+    const int pb = static_cast<int>(plain->m_links[li].m_n[1] - base);
+    ASSERT_EQ(std::minmax(a, b), std::minmax(pa, pb)) << "link " << li;
+  }
+}
+
+TEST(TcSoftBodyOrder, OperationsRestoreTheOrderOncePastTheFraction) {
+  const auto net = testing::square_net(33);
+  SoftBodyWorld world({});
+  TcSoftBody on(world, net, testing::test_solver(), {});
+  TcSoftBody off(world, net, testing::test_solver(), unordered());
+  RandomPolicy policy_on(3), policy_off(3);
+  for (int s = 0; s < 200; ++s) {
+    operate(on, policy_on, 300 + (s / 40) * 150, 1);
+    operate(off, policy_off, 300 + (s / 40) * 150, 1);
+    // advance_blends() restores once the displaced elements pass the fraction, so right after it they never do;
+    // the operations begun since may add at most their own.
+    const double limit = TcSettings::kReorderFraction * (on.node_count() + on.link_count());
+    ASSERT_LE(on.displaced(), limit + 32 * 40) << "step " << s;
+  }
+  EXPECT_GT(on.order_restorations(), 1);
+  EXPECT_EQ(off.order_restorations(), 0);
+  EXPECT_GT(off.displaced(), TcSettings::kReorderFraction * (off.node_count() + off.link_count()));
+  EXPECT_TRUE(on.validate().ok()) << on.validate().summary();
+}
+
+}  // namespace
+}  // namespace tcsb
