@@ -54,6 +54,7 @@ struct FramesArgs {
   std::string net;                           ///< a net of the suite by name; empty: its last
   std::optional<double> compression;         ///< TC-SB node budget; absent: the suite's smallest target
   std::vector<int> steps{30, 60, 120, 240};  ///< record after these steps (the cloth falls, then swings)
+  bool calibrated = false;                   ///< TC-SB with the suite's calibration (fidelity.calibration)
   std::string out;                           ///< output file; empty: stdout
 };
 

@@ -279,6 +279,7 @@ TEST_F(Cli, FramesRecordsBothBodiesAtTheRequestedSteps) {
   EXPECT_EQ(j["net"]["width"], 9);
   ASSERT_EQ(j["frames"].size(), 3u);
   EXPECT_EQ(j["frames"][2]["step"], 10);
+  EXPECT_EQ(j["calibrated"], false);
   for (const auto& f : j["frames"]) {
     EXPECT_EQ(f["plain"].size(), 81u);
     EXPECT_EQ(f["tcsb_surface"].size(), 81u);
@@ -290,7 +291,7 @@ TEST_F(Cli, FramesRecordsBothBodiesAtTheRequestedSteps) {
 TEST_F(Cli, BadFramesArgumentsAreUsageErrors) {
   write_file(dir_ / "tiny.json", kTinySuite);
   for (const char* flags : {"--net n99", "--steps 5,3", "--steps=-1", "--steps 100001", "--compression 0",
-                            "--compression 1.5", "--steps x"}) {
+                            "--compression 1.5", "--steps x", "--calibrated"}) {  // tiny.json has no calibration
     const std::string line = std::string("frames --suite tiny.json --out frames.json ") + flags;
     const Outcome o = tcsb(line);
     EXPECT_EQ(o.exit_code, 2) << line;
