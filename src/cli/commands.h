@@ -69,7 +69,8 @@ struct ValidateArgs {
 /// Options of `tcsb calibrate`.
 struct CalibrateArgs {
   std::string suite;
-  std::string out;  ///< calibration file; empty: the suite's fidelity.calibration path, else SUITE.calibration.json
+  std::string out;    ///< calibration file; empty: the suite's fidelity.calibration path, else SUITE.calibration.json
+  std::string check;  ///< a calibration file to measure on the suite's nets and regime instead of fitting one
   bool quiet = false;
 };
 

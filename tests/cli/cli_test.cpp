@@ -333,6 +333,17 @@ TEST_F(Cli, CalibrateWritesTheFileASuiteThenUsesAndValidateChecks) {
   EXPECT_EQ(count_lines(refused.err), 1) << refused.err;
   EXPECT_NE(refused.err.find("fidelity.calibration"), std::string::npos) << refused.err;
   EXPECT_FALSE(fs::exists(dir_ / "refused.json"));
+  // --check measures it on another suite's nets (here: the same net under half the gravity) and writes nothing.
+  std::string half = nine_by_nine_suite("s", 1);
+  half.replace(half.find("\"gravity\": 9.81"), 15, "\"gravity\": 4.905");
+  write_file(dir_ / "half.json", half);
+  const Outcome checked = tcsb("calibrate half.json --check s.calibration.json");
+  ASSERT_EQ(checked.exit_code, 0) << checked.err;
+  EXPECT_NE(checked.out.find("level 1: kLST"), std::string::npos) << checked.out;
+  EXPECT_FALSE(fs::exists(dir_ / "half.calibration.json"));
+  const Outcome other_iterations = tcsb("calibrate other.json --check s.calibration.json");
+  EXPECT_EQ(other_iterations.exit_code, 2);
+  EXPECT_NE(other_iterations.err.find("--check"), std::string::npos) << other_iterations.err;
   // A missing suite: exit 2, no calibration written.
   const Outcome missing = tcsb("calibrate nope.json");
   EXPECT_EQ(missing.exit_code, 2);
