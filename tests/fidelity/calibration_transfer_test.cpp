@@ -4,6 +4,7 @@
 // the paper's 45^2-81^2 and ci's 33^2-57^2 scaled down) at converged iterations, so it runs in seconds.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 
 #include "fidelity/calibration.h"
@@ -39,6 +40,9 @@ void expect_transfers(const Calibration& fitted, const Regime& other, const std:
     const StiffnessFit& f = level ? fitted.levels[i] : fitted.uniform_grid[i - fitted.levels.size()];
     const StiffnessFit& m = measured[i];
     const std::string fit = level ? "level " + std::to_string(f.level) : "uniform grid";
+    // The measured ratios, for docs/methodology.md ("The calibration transfers").
+    std::printf("%s, %s: kLST %.4f, fitted RMS %.4f %%, here %.4f %% (%.3fx), uncalibrated %.4f %%\n", what.c_str(),
+                fit.c_str(), f.linear_stiffness, f.rms_pct, m.rms_pct, m.rms_pct / f.rms_pct, m.uncalibrated_rms_pct);
     EXPECT_EQ(m.linear_stiffness, f.linear_stiffness) << what << ", " << fit;
     EXPECT_LE(m.rms_pct, 1.5 * f.rms_pct) << what << ", " << fit << ": fitted " << f.rms_pct << " %";
     EXPECT_LT(m.rms_pct, m.uncalibrated_rms_pct) << what << ", " << fit << ": the calibration still helps";
