@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
 """Figure 6 of the paper, redrawn from a `tcsb frames` file: plain Bullet and TC-SB side by side at a few steps.
 
-Usage: plot_figure6.py FRAMES.json OUTDIR
-  fig6_frames.png  one column per recorded step; rows: plain Bullet (every grid node), TC-SB's surface
+Usage: plot_figure6.py FRAMES.json OUTDIR [NAME]
+  NAME (default fig6_frames.png)
+                   one column per recorded step; rows: plain Bullet (every grid node), TC-SB's surface
                    reconstructed at every grid node, TC-SB's simulated links with those an operation is replacing
                    (fading in or out, tethers, links about to go) in red
+A second figure from another suite is another NAME, e.g. fig6_frames_converged.png from
+`tcsb frames --suite converged --calibrated` (docs/methodology.md, "Figure 6 in the converged regime").
 Reads only what `tcsb frames` wrote, so the figure shows exactly those positions. Needs matplotlib.
 """
 import json
@@ -38,7 +41,7 @@ def draw(ax, segments, color, width):
     ax.add_collection3d(Line3DCollection(to_view(segments), colors=color, linewidths=width))
 
 
-def main(frames_path, outdir):
+def main(frames_path, outdir, name="fig6_frames.png"):
     with open(frames_path) as f:
         doc = json.load(f)
     os.makedirs(outdir, exist_ok=True)
@@ -76,15 +79,17 @@ def main(frames_path, outdir):
             ax.set_axis_off()
             if col == 0:
                 ax.text2D(-0.05, 0.5, rows[row], transform=ax.transAxes, rotation=90, va="center", fontsize=9)
-    source = (f"{doc['suite']['name']} suite, net {net['name']} ({w} x {h}), TC-SB at "
+    tcsb = "calibrated TC-SB" if doc.get("calibrated") else "TC-SB"
+    solver = doc["suite"]["solver"]["piterations"]
+    source = (f"{doc['suite']['name']} suite ({solver} solver iterations), net {net['name']} ({w} x {h}), {tcsb} at "
               f"{round(100 * doc['compression'])}% of the nodes, tcsb {doc['context']['git_commit']}")
     fig.suptitle("Figure 6: Bullet SoftBody and TC-SB at the same steps", fontsize=11)
     fig.text(0.01, 0.005, source, fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "fig6_frames.png"), dpi=110)
+    fig.savefig(os.path.join(outdir, name), dpi=110)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    main(*sys.argv[1:])

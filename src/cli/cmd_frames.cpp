@@ -59,6 +59,8 @@ CLI::App* add_frames_command(CLI::App& app, FramesArgs& args) {
   for (const int step : args.steps) defaults += (defaults.empty() ? "" : ",") + std::to_string(step);
   add_list_option(*cmd, "--steps", args.steps, "Steps after which both bodies are recorded, increasing")
       ->default_str(defaults);
+  cmd->add_flag("--calibrated", args.calibrated,
+                "TC-SB with the suite's calibration (fidelity.calibration), as the fidelity pass's tcsb_calibrated");
   cmd->add_option("--out", args.out, "Write to FILE (atomically) instead of stdout");
   return cmd;
 }
@@ -71,11 +73,13 @@ int frames_command(const FramesArgs& args) {
   const Suite suite = parse_suite(suite_file);
   const std::size_t net = net_index(suite, args.net);
   const double compression = compression_of(suite, args.compression);
+  if (args.calibrated && !suite.calibration)
+    throw UsageError("--calibrated: suite " + suite.name + " names no calibration (fidelity.calibration)");
   // Recorded in the file; not printed, since nothing here is timed (the warnings are about timing).
   const Context context = gather_context();
   const FigureFrames frames =
       naming_out_of_memory("suite " + suite.name + ", frames of net " + suite.nets[net].name,
-                           [&] { return record_figure_frames(suite, net, compression, args.steps); });
+                           [&] { return record_figure_frames(suite, net, compression, args.steps, args.calibrated); });
   if (frames.diverged_step) {
     print_warning("net " + frames.net + " diverged after step " + std::to_string(*frames.diverged_step) + " (" +
                   frames.diverged_reason + "); the frames after it are missing");

@@ -54,6 +54,7 @@ struct FramesArgs {
   std::string net;                           ///< a net of the suite by name; empty: its last
   std::optional<double> compression;         ///< TC-SB node budget; absent: the suite's smallest target
   std::vector<int> steps{30, 60, 120, 240};  ///< record after these steps (the cloth falls, then swings)
+  bool calibrated = false;                   ///< TC-SB with the suite's calibration (fidelity.calibration)
   std::string out;                           ///< output file; empty: stdout
 };
 
@@ -68,7 +69,8 @@ struct ValidateArgs {
 /// Options of `tcsb calibrate`.
 struct CalibrateArgs {
   std::string suite;
-  std::string out;  ///< calibration file; empty: the suite's fidelity.calibration path, else SUITE.calibration.json
+  std::string out;    ///< calibration file; empty: the suite's fidelity.calibration path, else SUITE.calibration.json
+  std::string check;  ///< a calibration file to measure on the suite's nets and regime instead of fitting one
   bool quiet = false;
 };
 

@@ -26,7 +26,8 @@ void keep_best(std::vector<Candidate>& all, int limit, Better better) {
 
 }  // namespace
 
-void rank_candidates(const CutSnapshot& snapshot, std::span<const float> saliency, int limit, Evaluation& out) {
+void rank_candidates(const CutSnapshot& snapshot, std::span<const float> saliency, int limit, Evaluation& out,
+                     const JumpCharge& charge) {
   const LodTree& tree = *snapshot.cut.tree;
   out.snapshot_step = snapshot.step;
   const auto higher = [](const Candidate& a, const Candidate& b) {
@@ -62,7 +63,11 @@ void rank_candidates(const CutSnapshot& snapshot, std::span<const float> salienc
         worst = std::max<double>(worst, saliency[index]);
       }
     }
-    if (all_active) out.coarse.push_back({(worst + kSaliencyFloor) * static_cast<double>(1u << p.level), parent});
+    if (!all_active) continue;
+    double priority = (worst + kSaliencyFloor) * static_cast<double>(1u << p.level);
+    if (charge.per_pct > 0)
+      priority += charge.per_pct * 100.0 * coarse_jump(snapshot, *charge.neighbours, parent) / charge.extent;
+    out.coarse.push_back({priority, parent});
   }
   keep_best(out.refine, limit, higher);
   keep_best(out.coarse, limit, lower);

@@ -5,12 +5,14 @@
 // parent P whose children are all in the cut would, once merged, cost max over children S(c) * 2^level(P): its
 // coarse priority (lower is better to coarsen). The controller pairs them under the budget with the paper's
 // threshold (§5): a node is inserted only if its gain exceeds the penalty of the removal it forces plus the
-// threshold, so nothing flips back and forth.
+// threshold, so nothing flips back and forth. Optionally a coarse candidate is also charged with the jump its
+// coarsen would make the reconstructed surface pop by (feedback/coarse_jump.h), so curved blocks are merged last.
 #pragma once
 
 #include <span>
 #include <vector>
 
+#include "feedback/coarse_jump.h"
 #include "feedback/cut_snapshot.h"
 
 namespace tcsb {
@@ -28,8 +30,18 @@ struct Evaluation {
   std::int64_t snapshot_step = -1;
 };
 
+/// What a coarse candidate is charged for the jump it would cause (FeedbackSettings::popping_charge).
+struct JumpCharge {
+  double per_pct = 0;  ///< priority added per 1 % of `extent` that the surface would jump; 0 charges nothing
+  double extent = 1;   ///< the net's extent, metres
+  const CutNeighbours* neighbours = nullptr;  ///< the snapshot's cut adjacency; required when per_pct > 0
+};
+
 /// Ranks at most `limit` candidates of each kind (ties broken by a hash of the tree id: deterministic, and spread
 /// over the net).
-void rank_candidates(const CutSnapshot& snapshot, std::span<const float> saliency, int limit, Evaluation& out);
+/// With a charge, each coarse candidate's priority grows by per_pct x its jump in % of the extent (the snapshot must
+/// hold positions).
+void rank_candidates(const CutSnapshot& snapshot, std::span<const float> saliency, int limit, Evaluation& out,
+                     const JumpCharge& charge = {});
 
 }  // namespace tcsb

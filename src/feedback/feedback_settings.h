@@ -23,6 +23,10 @@ struct FeedbackSettings {
   bool parallel = false;                                 ///< evaluate on worker threads while Bullet steps
   int threads = 1;                                       ///< worker threads when parallel
   double max_step_ms = 0.0;                              ///< time budget per step; 0 disables it
+  /// Coarse priority added per 1 % of the net's extent that a coarsen would make the reconstructed surface jump
+  /// (feedback/coarse_jump.h); 0 disables the charge (and its cost: positions copied, the jump computed per
+  /// candidate). Against popping (issue 20, part 4); the paper has no such term.
+  double popping_charge = 0.0;
 };
 
 /// Name used in suites and reports: "saliency" or "random".

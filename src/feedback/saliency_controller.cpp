@@ -40,7 +40,12 @@ void SaliencyController::evaluate() {
     local_motion(snapshot_, sums_, 0, n, saliency_);
   }
   finish_saliency(snapshot_, settings_, saliency_);
-  rank_candidates(snapshot_, saliency_, 2 * settings_.max_ops_per_step, evaluation_);
+  JumpCharge charge;
+  if (settings_.popping_charge > 0) {
+    cut_neighbours(snapshot_.cut, neighbours_);
+    charge = {settings_.popping_charge, extent_, &neighbours_};
+  }
+  rank_candidates(snapshot_, saliency_, 2 * settings_.max_ops_per_step, evaluation_, charge);
   evaluation_ms_ = ms_since(t0);
 }
 
@@ -57,7 +62,8 @@ void SaliencyController::before_step(TcSoftBody& body) {
   }
   evaluation_ready_ = false;
   if (boundary_ % settings_.evaluation_interval == 0) {
-    take_snapshot(body, cut_view(body), settings_.illumination, boundary_, snapshot_);
+    extent_ = body.net().extent();
+    take_snapshot(body, cut_view(body), settings_.illumination || settings_.popping_charge > 0, boundary_, snapshot_);
     if (workers_) {
       workers_->post([this] { evaluate(); });
       job_running_ = true;

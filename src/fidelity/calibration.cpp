@@ -1,5 +1,6 @@
 #include "fidelity/calibration.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -121,6 +122,42 @@ std::string fixed(double v, int digits) {
 }
 
 }  // namespace
+
+std::vector<StiffnessFit> evaluate_calibration(const Calibration& calibration, const Suite& suite,
+                                               const std::vector<std::shared_ptr<const Net>>& nets) {
+  std::vector<Trajectory> references;
+  for (const auto& net : nets) references.push_back(record_reference(suite, *net));
+  const double base = suite.solver.linear_stiffness;
+  const std::vector<double> stiffness = calibration.level_stiffness();
+  const int levels = std::min(calibrated_level_count(nets, static_cast<int>(stiffness.size())),
+                              static_cast<int>(calibration.levels.size()));
+  std::vector<StiffnessFit> out;
+  for (int level = 1; level <= levels; ++level) {
+    const auto error = [&](const std::vector<double>& k) {
+      return mean_over_nets(nets.size(),
+                            [&](std::size_t n) { return level_error(suite, nets[n], references[n], level, k); });
+    };
+    StiffnessFit f = calibration.levels[static_cast<std::size_t>(level - 1)];
+    f.rms_pct = error(stiffness);
+    f.uncalibrated_rms_pct = error({});
+    f.evaluations = 2;
+    out.push_back(f);
+  }
+  for (StiffnessFit f : calibration.uniform_grid) {
+    if (std::find(suite.compression.begin(), suite.compression.end(), f.compression) == suite.compression.end())
+      continue;
+    const auto error = [&](double k) {
+      return mean_over_nets(nets.size(), [&](std::size_t n) {
+        return uniform_error(suite, *nets[n], references[n], f.compression, k);
+      });
+    };
+    f.rms_pct = error(f.linear_stiffness);
+    f.uncalibrated_rms_pct = error(base);
+    f.evaluations = 2;
+    out.push_back(f);
+  }
+  return out;
+}
 
 int coarsen_to_level(TcSoftBody& body, int level) {
   const LodTree& tree = body.tree();

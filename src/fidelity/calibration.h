@@ -34,6 +34,16 @@ struct CalibrationSearch {
 Calibration calibrate_suite(const Suite& suite, const std::vector<std::shared_ptr<const Net>>& nets,
                             const CalibrationSearch& search = {}, const CalibrationProgress& progress = {});
 
+/// How `calibration` does on `suite`'s nets (built as `nets`, same order) in `suite`'s regime, which need not be the
+/// one it was fitted in: whether a calibration transfers to other nets or another gravity. One fit per fit of the
+/// calibration: each level's (a TC-SB cut at that level with the calibration's level stiffness), and each uniform
+/// grid's whose budget is one of the suite's compression targets; each with the calibration's stiffness and
+/// rms_pct measured here (mean over the nets, as calibrate_suite measures it; uncalibrated_rms_pct with every link at
+/// the solver's stiffness). Levels the nets are too small for (calibrated_level_count()) are left out.
+/// Deterministic.
+std::vector<StiffnessFit> evaluate_calibration(const Calibration& calibration, const Suite& suite,
+                                               const std::vector<std::shared_ptr<const Net>>& nets);
+
 /// Coarsens `body` (at rest, before its first step) until every block that can be is at `level`: level by level,
 /// rounds of begin_coarse on every node can_coarsen allows, each round's blends run to their end. Returns the
 /// committed node count.

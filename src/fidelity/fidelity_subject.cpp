@@ -50,11 +50,13 @@ class TreeCutSubject final : public FidelitySubject {
   ~TreeCutSubject() override { body_->set_op_sink(nullptr); }
   void boundary(int step) override {
     const std::int64_t before = ops_.count;
-    // A geomorphed surface also moves at a boundary where blends only advance: each is a step of its morph.
-    const bool morphing = morph_ && body_->interpolations() > 0;
     body_->advance_blends();
     if (controller_) controller_->before_step(*body_);
-    changed_ = morphing || ops_.count != before;
+    // A geomorphed surface also moves at a boundary without operations while it spreads an earlier jump.
+    changed_ = ops_.count != before || (morph_ && morph_->morphing());
+    // The morph records the boundary's jump at the next reconstruct(), which the pass makes right away when the
+    // surface changed (untimed, unlike this function), before the body moves.
+    morph_pending_ = morph_ && changed_;
     if (controller_ && !converged_ && body_->node_count() <= budget_) converged_ = step;
   }
   std::optional<int> converged_step() const override { return converged_; }
@@ -70,10 +72,13 @@ class TreeCutSubject final : public FidelitySubject {
     if (controller_) controller_->after_step(*body_);
   }
   void reconstruct(std::vector<Eigen::Vector3d>& leaves) override {
-    if (morph_)
-      morph_->reconstruct(*body_, leaves);
-    else
+    if (!morph_) {
       reconstruct_leaves(*body_, leaves);
+      return;
+    }
+    if (morph_pending_) morph_->boundary(*body_);
+    morph_pending_ = false;
+    morph_->reconstruct(*body_, leaves);
   }
   double energy(double gravity) override {
     copy_positions(*body_, x_);
@@ -93,6 +98,7 @@ class TreeCutSubject final : public FidelitySubject {
   std::optional<int> converged_;
   OpCounter ops_;
   bool changed_ = false;
+  bool morph_pending_ = false;  // a boundary's jump for the morph to record before the body moves
   std::vector<Eigen::Vector3d> x_, v_;
   std::vector<double> mass_;
 };

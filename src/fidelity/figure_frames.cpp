@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "case/case_body.h"
+#include "fidelity/fidelity_subject.h"
 #include "fidelity/reconstruction.h"
-#include "fidelity/surface_morph.h"
 #include "softbody/divergence.h"
 
 namespace tcsb {
@@ -32,9 +32,11 @@ FigureFrame capture(int step, const CaseBody& plain, const TcSoftBody& tc,
 }  // namespace
 
 FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, double compression,
-                                  const std::vector<int>& steps) {
+                                  const std::vector<int>& steps, bool calibrated) {
   if (net_index >= suite.nets.size()) throw std::invalid_argument("record_figure_frames: no such net");
   if (!(compression > 0 && compression <= 1)) throw std::invalid_argument("record_figure_frames: compression");
+  if (calibrated && !suite.calibration)
+    throw std::invalid_argument("record_figure_frames: the suite has no calibration");
   for (std::size_t i = 0; i < steps.size(); ++i) {
     if (steps[i] < 0 || (i > 0 && steps[i] <= steps[i - 1]))
       throw std::invalid_argument("record_figure_frames: steps must be ascending, distinct and >= 0");
@@ -46,36 +48,38 @@ FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, dou
   out.width = spec.width;
   out.height = spec.height;
   out.compression = compression;
+  out.calibrated = calibrated;
 
-  // Built as the timed cases' bodies are; the saliency controller draws no random numbers (a random policy would
-  // draw from the suite's seed).
+  // Plain Bullet built as the timed cases' bodies are; TC-SB as the fidelity pass builds it, so its surface is the
+  // one the pass measures (geomorphed, SurfaceMorph), boundary by boundary. The saliency controller draws no random
+  // numbers (a random policy would draw from the suite's seed).
   const CaseKey plain_key{net_index, Method::kPlain, std::nullopt};
-  const CaseKey tc_key{net_index, Method::kTcsb, compression};
   SoftBodyWorld plain_world(suite.world), tc_world(suite.world);  // one world per body: a body keeps its address
-  const std::uint64_t seed = suite.seed;
-  const std::unique_ptr<CaseBody> plain = make_case_body(suite, plain_key, plain_world, net, seed);
-  const std::unique_ptr<CaseBody> tc = make_case_body(suite, tc_key, tc_world, net, seed);
+  const std::unique_ptr<CaseBody> plain = make_case_body(suite, plain_key, plain_world, net, suite.seed);
+  const FidelitySubjectSpec subject{calibrated ? FidelityMethod::kTcsbCalibrated : FidelityMethod::kTcsb, compression};
+  const std::unique_ptr<FidelitySubject> tc =
+      make_fidelity_subject(suite, subject, tc_world, net, suite.seed, nullptr, 0);
+  const auto& tc_body = dynamic_cast<const TcSoftBody&>(tc->bullet());
 
   if (steps.empty()) return out;
   const btScalar dt = static_cast<btScalar>(suite.world.dt);
-  // The surface as the fidelity pass shows it, geomorphed. The morph must see every step to see each operation
-  // while it starts; a case body steps boundary and Bullet together, so it sees them one step in (near enough for
-  // a figure: the pass itself looks between the two).
-  SurfaceMorph morph;
   std::vector<Eigen::Vector3d> surface;
+  tc->reconstruct(surface);
   std::size_t next = 0;
   for (int s = 0;; ++s) {
-    morph.reconstruct(*tc->tc(), surface);
     if (steps[next] == s) {
-      out.frames.push_back(capture(s, *plain, *tc->tc(), surface));
+      out.frames.push_back(capture(s, *plain, tc_body, surface));
       if (++next == steps.size()) break;
     }
     plain->step(dt);
-    tc->step(dt);
-    for (const CaseBody* body : {plain.get(), tc.get()}) {
-      if (auto diverged = divergence_now(body->bullet(), net->extent())) {  // untimed: check fully every step
+    tc->boundary(s);
+    if (tc->surface_changed()) tc->reconstruct(surface);  // the morph records the boundary's jump before the step
+    tc->simulate(dt);
+    tc->reconstruct(surface);
+    for (const btSoftBody* body : {&plain->bullet(), &tc->bullet()}) {
+      if (auto diverged = divergence_now(*body, net->extent())) {  // untimed: check fully every step
         out.diverged_step = s;
-        out.diverged_reason = std::string(body == plain.get() ? "plain: " : "tcsb: ") + *diverged;
+        out.diverged_reason = std::string(body == &plain->bullet() ? "plain: " : "tcsb: ") + *diverged;
         return out;
       }
     }

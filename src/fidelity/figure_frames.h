@@ -25,7 +25,8 @@ struct FrameLink {
 struct FigureFrame {
   int step = 0;
   std::vector<Eigen::Vector3d> plain;         ///< plain Bullet, one point per grid node (row-major, width x height)
-  std::vector<Eigen::Vector3d> tcsb_surface;  ///< TC-SB reconstructed at every grid node, geomorphed (SurfaceMorph)
+  std::vector<Eigen::Vector3d> tcsb_surface;  ///< TC-SB reconstructed at every grid node, geomorphed as the fidelity
+                                              ///< pass shows it (SurfaceMorph)
   std::vector<Eigen::Vector3d> tcsb_nodes;    ///< TC-SB's simulated (Bullet) nodes
   std::vector<FrameLink> tcsb_links;          ///< TC-SB's Bullet links
   int interpolations = 0;                     ///< operations blending (the paper's I)
@@ -36,16 +37,18 @@ struct FigureFrames {
   std::string net;
   int width = 0, height = 0;
   double compression = 1.0;
+  bool calibrated = false;           ///< TC-SB with the suite's calibration (per-level link stiffness)
   std::vector<FigureFrame> frames;   ///< one per requested step that was reached, in step order
   std::optional<int> diverged_step;  ///< a body diverged after this step; later frames are missing
   std::string diverged_reason;
 };
 
-/// Steps plain Bullet and TC-SB (node budget `compression` of the net's nodes, the suite's feedback) built from the
-/// suite's net `net_index` and records both after each of `steps` (ascending, distinct, >= 0; 0 is the initial
-/// state). Throws std::invalid_argument on an index or steps out of range.
+/// Steps plain Bullet and TC-SB (node budget `compression` of the net's nodes, the suite's feedback; with
+/// `calibrated`, the suite calibration's per-level stiffness, as the pass's tcsb_calibrated) built from the suite's
+/// net `net_index` and records both after each of `steps` (ascending, distinct, >= 0; 0 is the initial state).
+/// Throws std::invalid_argument on an index or steps out of range, or `calibrated` without a calibration.
 FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, double compression,
-                                  const std::vector<int>& steps);
+                                  const std::vector<int>& steps, bool calibrated = false);
 
 /// The name used in JSON for a link role ("steady", "fade_in", "fade_out", "doomed", "tether").
 const char* link_role_name(LinkRole role);

@@ -24,25 +24,7 @@ void fill_leaves(const LodTree& tree, TreeId from, const Eigen::Vector3d& x, con
                 [&](TreeId leaf) { leaves[static_cast<std::size_t>(leaf)] = block_point(tree, from, x, f, leaf); });
 }
 
-/// The same for a simulated node of the body, at its position with its local fit.
-void fill_from(const TcSoftBody& body, TreeId from, TreeId block, std::span<Eigen::Vector3d> leaves) {
-  fill_leaves(body.tree(), from, to_eigen(body.m_nodes[body.bullet_index(from)].m_x), body.local_affine_fit(from),
-              block, leaves);
-}
-
 }  // namespace
-
-void reconstruct_from_leaving(const TcSoftBody& body, TreeId arriving, std::span<Eigen::Vector3d> leaves) {
-  const LodNode& node = body.tree().node(arriving);
-  if (node.parent != kNoTreeNode && body.state(node.parent) == CutState::kLeaving) {
-    fill_from(body, node.parent, arriving, leaves);  // a refine: the parent's block is larger; this child's part
-    return;
-  }
-  for (int i = 0; i < node.child_count; ++i) {  // a coarse: each leaving child over its own block
-    const TreeId child = node.children[static_cast<std::size_t>(i)];
-    fill_from(body, child, child, leaves);
-  }
-}
 
 void fill_block(const LodTree& tree, TreeId id, const Eigen::Vector3d& x, const Eigen::Matrix<double, 3, 2>& f,
                 std::span<Eigen::Vector3d> leaves) {

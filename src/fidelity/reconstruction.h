@@ -27,13 +27,9 @@ void fill_block(const LodTree& tree, TreeId id, const Eigen::Vector3d& x, const 
 /// Every leaf of a TC-SB body reconstructed from its committed cut (active and arriving nodes), with
 /// F = body.local_affine_fit(A) whatever the placement setting, so rigid and affine placement are measured by the
 /// same instrument. The surface takes an operation's new nodes' shape as soon as it begins; SurfaceMorph
-/// (fidelity/surface_morph.h) spreads that change over the blend. `leaves` is resized to the net's node count.
-/// O(N + cut size x degree).
+/// (fidelity/surface_morph.h) spreads every such change over the next K + 1 step boundaries. `leaves` is resized to the
+/// net's node count. O(N + cut size x degree).
 void reconstruct_leaves(const TcSoftBody& body, std::vector<Eigen::Vector3d>& leaves);
-
-/// The leaves of an arriving node's block as the operation's leaving nodes reconstruct them: a refine's parent, or a
-/// coarse's children. Writes only the block's leaves. O(block leaves + degree).
-void reconstruct_from_leaving(const TcSoftBody& body, TreeId arriving, std::span<Eigen::Vector3d> leaves);
 
 /// Calls visit(leaf) for every leaf in the block of tree node `id` (the node itself when it is a leaf), row by row.
 template <class Visit>

@@ -4,34 +4,34 @@
 
 namespace tcsb {
 
-void SurfaceMorph::reconstruct(const TcSoftBody& body, std::vector<Eigen::Vector3d>& leaves) {
-  reconstruct_leaves(body, leaves);
-  if (body.interpolations() == 0) {  // nothing blends: no jump left to spread, and no need to look for one
-    jumps_.clear();
-    return;
+void SurfaceMorph::boundary(const TcSoftBody& body) {
+  const int spread = body.settings().blend_steps + 1;
+  for (auto it = jumps_.begin(); it != jumps_.end();)  // one boundary older; spent ones go
+    it = ++it->age >= spread ? jumps_.erase(it) : std::next(it);
+  std::vector<Eigen::Vector3d> before;
+  before.swap(raw_);
+  reconstruct_leaves(body, raw_);
+  fresh_ = true;
+  if (before.size() != raw_.size()) return;  // nothing reconstructed yet: no jump to measure
+  Jump jump;
+  for (std::size_t l = 0; l < raw_.size(); ++l) {
+    const Eigen::Vector3d d = before[l] - raw_[l];
+    if (d.isZero(0.0)) continue;  // exactly unchanged: the block and its fit are the same
+    jump.leaf.push_back(static_cast<std::int32_t>(l));
+    jump.offset.push_back(d);
   }
-  const LodTree& tree = body.tree();
-  // Operations that ended: their blocks show the committed cut alone now.
-  for (auto it = jumps_.begin(); it != jumps_.end();)
-    it = body.state(it->first) == CutState::kArriving ? std::next(it) : jumps_.erase(it);
-  for (int i = 0; i < body.node_count(); ++i) {
-    const TreeId id = body.tree_id(i);
-    if (body.state(id) != CutState::kArriving) continue;
-    const double w = body.arrival_weight(id);
-    Jump& jump = jumps_[id];
-    if (jump.offset.empty() || w < jump.weight) {  // first seen: record the jump the operation makes
-      old_.resize(leaves.size());
-      reconstruct_from_leaving(body, id, old_);
-      jump.offset.clear();
-      for_each_leaf(tree, id, [&](TreeId leaf) {
-        const auto l = static_cast<std::size_t>(leaf);
-        jump.offset.push_back(old_[l] - leaves[l]);
-      });
-    }
-    jump.weight = w;
-    std::size_t k = 0;
-    for_each_leaf(tree, id,
-                  [&](TreeId leaf) { leaves[static_cast<std::size_t>(leaf)] += (1.0 - w) * jump.offset[k++]; });
+  if (!jump.leaf.empty()) jumps_.push_back(std::move(jump));
+}
+
+void SurfaceMorph::reconstruct(const TcSoftBody& body, std::vector<Eigen::Vector3d>& leaves) {
+  if (!fresh_) reconstruct_leaves(body, raw_);
+  fresh_ = false;
+  leaves = raw_;
+  const double spread = body.settings().blend_steps + 1;
+  for (const Jump& jump : jumps_) {
+    const double unspent = 1.0 - jump.age / spread;
+    for (std::size_t k = 0; k < jump.leaf.size(); ++k)
+      leaves[static_cast<std::size_t>(jump.leaf[k])] += unspent * jump.offset[k];
   }
 }
 

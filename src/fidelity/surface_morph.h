@@ -1,40 +1,55 @@
-// SurfaceMorph: TC-SB's reconstructed surface with each operation's jump spread over its blend — a geomorph (Hoppe,
-// "Progressive Meshes", SIGGRAPH 1996, §4.2), as the paper's link blending spreads the physical change.
+// SurfaceMorph: TC-SB's reconstructed surface with every jump a step boundary makes spread over the next K + 1
+// boundaries — a geomorph (Hoppe, "Progressive Meshes", SIGGRAPH 1996, §4.2), as the paper's link blending spreads
+// the physical change.
 //
-// When an operation begins, its block's surface would jump from what the leaving nodes show to what the arriving
-// ones show. The morph records that jump per leaf, D = old - new, the first time it sees the operation, and then
-// shows new + (1 - w) D, w the weight the operation's fading-in links carry (1/(K+1) at its start, rising by
-// 1/(K+1) per step, 1 when it ends). So the surface moves by D/(K+1) per step boundary instead of D at once, while
-// following the new nodes' motion. The jump is frozen, not recomputed from the leaving nodes each step: those are
-// still simulated while their links fade, and drift from the surface (measured: mixing them in step by step popped
-// 1.2-2.0 % of the net's extent at the worst step, docs/methodology.md, "Tried and left out").
+// At a boundary no simulated time passes, yet the committed cut's reconstruction (fidelity/reconstruction.h) can
+// change: a coarsen or refine replaces a block's nodes, and every block whose neighbourhood changed (its links
+// appearing, fading out, ending) takes another affine fit. The morph records the whole change, per leaf,
+// D = before - after — the reconstruction at the same positions before the boundary's operations and after them —
+// and shows after + (1 - a/(K+1)) D, a the boundaries since D was recorded (1 at its own, then 2, … until K+1, when
+// it is spent). So the surface moves by at most D/(K+1) per boundary for each recent jump, while following the new
+// nodes' motion. The jump is frozen when recorded, not recomputed from the leaving nodes, which are still simulated
+// and drift from the cloth while their links fade (measured: mixing them in step by step popped 1.2-2.0 % of the
+// net's extent at the worst step, docs/methodology.md, "Tried and left out").
+//
+// An earlier morph covered only each operation's own block, from its start: a block next to an operation, and an
+// operation's block when it ended (its tethers leaving its fit), still jumped at once, and those were the worst pops
+// of the converged suite (docs/methodology.md, "Popping: the jumps the geomorph did not cover").
 #pragma once
 
 #include <Eigen/Core>
 
-#include <unordered_map>
 #include <vector>
 
 #include "softbody/tc_softbody.h"
 
 namespace tcsb {
 
-/// The geomorphed surface of one TC-SB body. Stateful: call reconstruct() at every step boundary, after its
-/// operations began (and as often as wanted in between), so that it sees each operation at its first step.
+/// The geomorphed surface of one TC-SB body. Stateful; the calls must follow the body's steps:
+///   reconstruct() once the body is built, and after every Bullet step;
+///   boundary() at every step boundary at which the cut may have changed or a jump is still being spread
+///   (morphing()), after the boundary's operations and before the next Bullet step.
 class SurfaceMorph {
  public:
-  /// Every leaf of the body: reconstruct_leaves() of the committed cut, plus the unspent part of each blending
-  /// operation's jump. `leaves` is resized to the net's node count. O(N + cut size x degree).
+  /// Records the jump the boundary's operations made: the reconstruction now against the last reconstruct()'s (the
+  /// same positions, the cut before the operations). Ages the jumps recorded before. O(N + cut size x degree).
+  void boundary(const TcSoftBody& body);
+  /// Every leaf of the body: reconstruct_leaves() of the committed cut plus the unspent part of each recorded jump.
+  /// `leaves` is resized to the net's node count. O(N + cut size x degree).
   void reconstruct(const TcSoftBody& body, std::vector<Eigen::Vector3d>& leaves);
+  /// Whether a recorded jump is still being spread (the surface moves at the next boundary even without operations).
+  bool morphing() const { return !jumps_.empty(); }
 
  private:
-  /// An operation's jump at its arriving node: one offset per leaf of the node's block, in for_each_leaf() order.
+  /// One boundary's jump over the leaves it moved.
   struct Jump {
-    double weight = 0;  ///< the arrival weight last seen: a lower one means a new operation at the same node
-    std::vector<Eigen::Vector3d> offset;
+    int age = 1;  ///< boundaries since it was recorded, its own included
+    std::vector<std::int32_t> leaf;
+    std::vector<Eigen::Vector3d> offset;  ///< D = before - after, per leaf
   };
-  std::unordered_map<TreeId, Jump> jumps_;
-  std::vector<Eigen::Vector3d> old_;  // scratch: the leaving nodes' surface of a new operation's block
+  std::vector<Jump> jumps_;
+  std::vector<Eigen::Vector3d> raw_;  // the committed cut's reconstruction at the last call
+  bool fresh_ = false;                // raw_ was computed by boundary() and nothing moved since
 };
 
 }  // namespace tcsb

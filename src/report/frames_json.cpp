@@ -30,6 +30,7 @@ nlohmann::ordered_json frames_json(const Suite& suite, const Context& context, c
   doc["suite"] = suite_json(suite);
   doc["net"] = {{"name", f.net}, {"width", f.width}, {"height", f.height}};
   doc["compression"] = f.compression;
+  doc["calibrated"] = f.calibrated;
   doc["dt"] = suite.world.dt;
   doc["status"] = f.diverged_step ? "diverged" : "ok";
   doc["diverged_step"] = json_integer(f.diverged_step);

@@ -35,7 +35,7 @@ ojson suite_json(const Suite& s) {
   ojson compression = ojson::array();
   for (const double c : s.compression) compression.push_back(json_number(c));
   const FeedbackSettings& f = s.feedback;
-  return {
+  ojson out = {
       {"name", s.name},
       {"description", s.description},
       {"path", s.path.string()},
@@ -72,6 +72,10 @@ ojson suite_json(const Suite& s) {
       {"methods", std::move(methods)},
       {"compression", std::move(compression)},
   };
+  // Only when set: a suite that does not charge popping writes what it wrote before the setting existed, so its
+  // results still compare with older baselines (the gate refuses runs whose suite blocks differ).
+  if (f.popping_charge > 0) out["feedback"]["popping_charge"] = json_number(f.popping_charge);
+  return out;
 }
 
 namespace {

@@ -89,7 +89,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
   if (const json* j = root.find("feedback")) {
     const Object fb(r, *j, "feedback",
                     {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale",
-                     "illumination", "light_direction", "parallel", "threads", "max_step_ms"});
+                     "illumination", "light_direction", "parallel", "threads", "max_step_ms", "popping_charge"});
     FeedbackSettings& f = s.feedback;
     fb.read("policy", f.policy, {{"saliency", PolicyKind::kSaliency}, {"random", PolicyKind::kRandom}});
     fb.read("threshold", f.threshold, kNonNegative);
@@ -104,6 +104,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     fb.read("parallel", f.parallel);
     fb.read("threads", f.threads, 1, 64);
     fb.read("max_step_ms", f.max_step_ms, kNonNegative);
+    fb.read("popping_charge", f.popping_charge, kNonNegative);
   }
 
   if (const json* j = root.find("fidelity")) {

@@ -279,6 +279,7 @@ TEST_F(Cli, FramesRecordsBothBodiesAtTheRequestedSteps) {
   EXPECT_EQ(j["net"]["width"], 9);
   ASSERT_EQ(j["frames"].size(), 3u);
   EXPECT_EQ(j["frames"][2]["step"], 10);
+  EXPECT_EQ(j["calibrated"], false);
   for (const auto& f : j["frames"]) {
     EXPECT_EQ(f["plain"].size(), 81u);
     EXPECT_EQ(f["tcsb_surface"].size(), 81u);
@@ -290,7 +291,7 @@ TEST_F(Cli, FramesRecordsBothBodiesAtTheRequestedSteps) {
 TEST_F(Cli, BadFramesArgumentsAreUsageErrors) {
   write_file(dir_ / "tiny.json", kTinySuite);
   for (const char* flags : {"--net n99", "--steps 5,3", "--steps=-1", "--steps 100001", "--compression 0",
-                            "--compression 1.5", "--steps x"}) {
+                            "--compression 1.5", "--steps x", "--calibrated"}) {  // tiny.json has no calibration
     const std::string line = std::string("frames --suite tiny.json --out frames.json ") + flags;
     const Outcome o = tcsb(line);
     EXPECT_EQ(o.exit_code, 2) << line;
@@ -332,6 +333,17 @@ TEST_F(Cli, CalibrateWritesTheFileASuiteThenUsesAndValidateChecks) {
   EXPECT_EQ(count_lines(refused.err), 1) << refused.err;
   EXPECT_NE(refused.err.find("fidelity.calibration"), std::string::npos) << refused.err;
   EXPECT_FALSE(fs::exists(dir_ / "refused.json"));
+  // --check measures it on another suite's nets (here: the same net under half the gravity) and writes nothing.
+  std::string half = nine_by_nine_suite("s", 1);
+  half.replace(half.find("\"gravity\": 9.81"), 15, "\"gravity\": 4.905");
+  write_file(dir_ / "half.json", half);
+  const Outcome checked = tcsb("calibrate half.json --check s.calibration.json");
+  ASSERT_EQ(checked.exit_code, 0) << checked.err;
+  EXPECT_NE(checked.out.find("level 1: kLST"), std::string::npos) << checked.out;
+  EXPECT_FALSE(fs::exists(dir_ / "half.calibration.json"));
+  const Outcome other_iterations = tcsb("calibrate other.json --check s.calibration.json");
+  EXPECT_EQ(other_iterations.exit_code, 2);
+  EXPECT_NE(other_iterations.err.find("--check"), std::string::npos) << other_iterations.err;
   // A missing suite: exit 2, no calibration written.
   const Outcome missing = tcsb("calibrate nope.json");
   EXPECT_EQ(missing.exit_code, 2);

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "fidelity/fidelity_runner.h"
+#include "fidelity/figure_frames.h"
 #include "paper/fidelity_tables.h"
 #include "softbody/bullet_setup.h"
 #include "suite/fidelity_plan.h"
@@ -157,6 +158,14 @@ TEST(Calibration, TheFitNeverDoesWorseThanTheSolversStiffnessAndASuiteUsesIt) {
     }
   }
   EXPECT_TRUE(seen_tcsb && seen_grid);
+  // Figure 6 can show it too (`tcsb frames --calibrated`): the same plain body, another TC-SB.
+  const FigureFrames frames = record_figure_frames(calibrated, 0, 0.3, {40});
+  const FigureFrames calibrated_frames = record_figure_frames(calibrated, 0, 0.3, {40}, true);
+  EXPECT_TRUE(calibrated_frames.calibrated);
+  ASSERT_EQ(calibrated_frames.frames.size(), 1u);
+  EXPECT_EQ(calibrated_frames.frames[0].plain, frames.frames[0].plain);
+  EXPECT_NE(calibrated_frames.frames[0].tcsb_surface, frames.frames[0].tcsb_surface);
+  EXPECT_THROW(record_figure_frames(suite, 0, 0.3, {40}, true), std::invalid_argument);  // no calibration
   // Fitted for 16 iterations: a suite at 2 refuses it, naming the field.
   std::string two = tiny_suite_text("tiny.calibration.json");
   two.replace(two.find("\"piterations\": 16"), 17, "\"piterations\": 2");

@@ -1,12 +1,15 @@
-// The geomorphed surface: an operation's jump spread evenly over its blend, frozen so that the leaving nodes' drift
-// does not leak in, and nothing at all without operations.
+// The geomorphed surface: every jump a boundary makes spread evenly over the next K + 1 boundaries — an operation's
+// own block, its neighbours' and its end alike — frozen so that the leaving nodes' drift does not leak in, and
+// nothing at all without operations.
 #include "fidelity/surface_morph.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "analysis/fidelity_metrics.h"
+#include "fidelity/calibration.h"
 #include "fidelity/reconstruction.h"
 #include "softbody/bullet_setup.h"
 
@@ -64,19 +67,23 @@ TEST(SurfaceMorph, SpreadsACoarsesJumpEvenlyOverItsBlend) {
   const TreeId parent = s.net->lod().at(1, 5, 2);  // an off-centre 2x2 block
   ASSERT_TRUE(s.body.can_coarsen(parent).ok);
   s.body.begin_coarse(parent);
-  // Boundary by boundary, no step in between (so every change is popping): each moves the surface by about a fifth
-  // (1/(K+1)) of the twist, until the coarse ends at the fifth.
-  for (int boundary = 0; boundary <= kBlendSteps; ++boundary) {
+  // Boundary by boundary, no step in between (so every change is popping): the coarse's own jump moves the surface
+  // by a fifth (1/(K+1)) of the twist at each; its end, when the tethers leave the parent's fit, is spread too.
+  double largest = 0;
+  for (int boundary = 0; boundary <= 2 * kBlendSteps + 1; ++boundary) {
     if (boundary > 0) s.body.advance_blends();
+    morph.boundary(s.body);
     morph.reconstruct(s.body, after);
-    EXPECT_NEAR(max_displacement(before, after), kTwist / (kBlendSteps + 1), 0.002) << boundary;
+    largest = std::max(largest, max_displacement(before, after));
     before = after;
   }
+  EXPECT_NEAR(largest, kTwist / (kBlendSteps + 1), 0.002);
   EXPECT_EQ(s.body.state(parent), CutState::kActive);
+  EXPECT_FALSE(morph.morphing());
   EXPECT_NEAR(max_displacement(first, after), kTwist, 0.005);  // the whole way is the twist, as without the morph
   std::vector<Eigen::Vector3d> committed;
   reconstruct_leaves(s.body, committed);
-  EXPECT_EQ(after, committed);  // and once the operation ended, nothing of it is left
+  EXPECT_EQ(after, committed);  // and once every jump is spent, nothing of it is left
 }
 
 TEST(SurfaceMorph, TheJumpIsFrozenWhileTheBodyMoves) {
@@ -84,7 +91,9 @@ TEST(SurfaceMorph, TheJumpIsFrozenWhileTheBodyMoves) {
   SurfaceMorph morph;
   std::vector<Eigen::Vector3d> shown, moved, committed, moved_committed;
   const TreeId parent = s.net->lod().at(1, 5, 2);
+  morph.reconstruct(s.body, shown);
   s.body.begin_coarse(parent);
+  morph.boundary(s.body);
   morph.reconstruct(s.body, shown);
   reconstruct_leaves(s.body, committed);
   // Everything, the leaving children included, shifts by 1 m: the shown surface follows the committed one exactly,
@@ -102,6 +111,45 @@ TEST(SurfaceMorph, TheJumpIsFrozenWhileTheBodyMoves) {
   std::vector<Eigen::Vector3d> after_drift;
   morph.reconstruct(s.body, after_drift);
   EXPECT_LT(max_displacement(moved, after_drift), 1e-5);
+}
+
+TEST(SurfaceMorph, SpreadsTheNeighboursJumpsAndTheEndsToo) {
+  // On a level-1 cut, coarsening a level-2 block changes the fits of the level-1 blocks around it when it begins and
+  // again when it ends (their links to the children go), and the parent's own fit when its tethers go: raw, those
+  // jump at once; the morph spreads them as it spreads the block's own jump.
+  SaddleBody s;
+  coarsen_to_level(s.body, 1);
+  SurfaceMorph morph;
+  std::vector<Eigen::Vector3d> shown_before, shown, raw_before, raw;
+  morph.reconstruct(s.body, shown_before);
+  const TreeId parent = s.net->lod().at(2, 2, 1);
+  ASSERT_TRUE(s.body.can_coarsen(parent).ok);
+  const LodNode& block = s.net->lod().node(parent);
+  const auto outside = [&](std::size_t leaf) {
+    const int gx = static_cast<int>(leaf) % 17, gy = static_cast<int>(leaf) / 17;
+    return gx < block.leaf_x0 || gx >= block.leaf_x1 || gy < block.leaf_y0 || gy >= block.leaf_y1;
+  };
+  double raw_largest = 0, raw_outside = 0, shown_largest = 0;
+  for (int boundary = 0; boundary <= 2 * kBlendSteps + 1; ++boundary) {
+    reconstruct_leaves(s.body, raw_before);
+    if (boundary == 0)
+      s.body.begin_coarse(parent);
+    else
+      s.body.advance_blends();
+    reconstruct_leaves(s.body, raw);
+    for (std::size_t l = 0; l < raw.size(); ++l) {
+      const double d = (raw[l] - raw_before[l]).norm();
+      raw_largest = std::max(raw_largest, d);
+      if (outside(l)) raw_outside = std::max(raw_outside, d);
+    }
+    morph.boundary(s.body);
+    morph.reconstruct(s.body, shown);
+    shown_largest = std::max(shown_largest, max_displacement(shown_before, shown));
+    shown_before = shown;
+  }
+  EXPECT_GT(raw_outside, 1e-3) << "the neighbours' fits change";
+  EXPECT_LT(shown_largest, 0.5 * raw_largest);
+  EXPECT_FALSE(morph.morphing());
 }
 
 }  // namespace

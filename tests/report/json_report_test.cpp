@@ -76,6 +76,15 @@ TEST(NativeJson, SuiteBlock) {
   EXPECT_EQ(suite["methods"], (ojson{"plain", "tcsb"}));
 }
 
+TEST(NativeJson, ThePoppingChargeIsWrittenOnlyWhenSet) {
+  // Absent at 0, so a suite without it writes what it wrote before the setting existed and its results still
+  // compare with older baselines.
+  RunResult run = small_run();
+  EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("popping_charge"));
+  run.suite.feedback.popping_charge = 2.5;
+  EXPECT_EQ(native_json(run)["suite"]["feedback"]["popping_charge"], 2.5);
+}
+
 TEST(NativeJson, CaseAndRepetitionKeys) {
   const ojson doc = native_json(small_run());
   ASSERT_EQ(doc["cases"].size(), 4u);

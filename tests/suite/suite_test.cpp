@@ -401,6 +401,8 @@ TEST(SuiteReject, OtherRanges) {
   rejected_edit([](json& j) { j["feedback"] = {{"light_direction", {0, 1}}}; }, "feedback.light_direction");
   rejected_edit([](json& j) { j["feedback"] = {{"threads", 65}}; }, "feedback.threads");
   rejected_edit([](json& j) { j["feedback"] = {{"max_step_ms", -1}}; }, "feedback.max_step_ms");
+  rejected_edit([](json& j) { j["feedback"] = {{"popping_charge", -0.5}}; }, "feedback.popping_charge");
+  rejected_edit([](json& j) { j["feedback"] = {{"popping_charge", "high"}}; }, "feedback.popping_charge");
   rejected_edit([](json& j) { j["fidelity"] = {{"rms_threshold_pct", 0}}; }, "fidelity.rms_threshold_pct");
   rejected_edit([](json& j) { j["fidelity"] = {{"pareto_targets", {0.5, 1.5}}}; }, "fidelity.pareto_targets[1]");
   // Enabled without TC-SB it would measure nothing and look like a pass.

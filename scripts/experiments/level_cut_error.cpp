@@ -1,0 +1,128 @@
+// Experiment (not built by CMake; docs/methodology.md, "Why calibrated TC-SB errs more than the calibrated grid"):
+// where a coarse TC-SB body's error comes from, on the first net of a suite. It steps the full-resolution reference,
+// a TC-SB body coarsened to one level (link stiffness K for every level) and the uniform grid of a budget (stiffness
+// KU) in lockstep and prints, as mean-over-measured-steps RMS in % of the extent:
+//   floor: the level cut with every node put on its block's mass-weighted mean of the reference, reconstructed
+//          (the reconstruction's own error); sim recon: the simulated cut, reconstructed (what the fidelity pass
+//          measures); nodes-vs-blockmean: its nodes against those block means (the body's own error);
+//   and for the grid: bilinear floor, simulated, and its nodes against the reference sampled at them.
+// "sort" reorders the cut's Bullet links row-major, as a plain grid has them (does link order matter?).
+// Build (after the Release build):
+//   g++ -O2 -std=c++20 -DNDEBUG -I src -I build/generated -isystem /usr/include/eigen3 -isystem /usr/include/bullet \
+//     scripts/experiments/level_cut_error.cpp -o /tmp/level_cut_error build/libtcsb_fidelity.a build/libtcsb_case.a \
+//     build/libtcsb_suite.a build/libtcsb_analysis.a build/libtcsb_feedback.a build/libtcsb_softbody.a \
+//     build/libtcsb_net.a build/libtcsb_base.a -lBulletSoftBody -lBulletDynamics -lBulletCollision -lLinearMath
+//     -lpthread
+// Usage: level_cut_error SUITE LEVEL K BUDGET KU [sort]
+#include "analysis/fidelity_metrics.h"
+#include "case/case_body.h"
+#include "fidelity/calibration.h"
+#include "fidelity/fidelity_subject.h"
+#include "fidelity/reconstruction.h"
+#include "net/grid_resample.h"
+#include "softbody/bullet_setup.h"
+#include "softbody/plain_softbody.h"
+#include "softbody/vector_conversion.h"
+#include "suite/fidelity_plan.h"
+#include "suite/suite.h"
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <tuple>
+#include <vector>
+using namespace tcsb;
+int main(int argc, char** argv) {
+  Suite suite = parse_suite(argv[1]);
+  const int level = std::atoi(argv[2]);
+  const double k = std::atof(argv[3]);            // TC-SB level stiffness for all levels >= 1
+  const double budget_frac = std::atof(argv[4]);  // uniform grid budget
+  const double ku = std::atof(argv[5]);           // uniform grid stiffness
+  auto net = std::make_shared<const Net>(suite.nets[0]);
+  const double pct = 100.0 / net->extent();
+  SoftBodyWorld wr(suite.world), wt(suite.world), wu(suite.world);
+  auto ref = make_plain_softbody(wr, *net, suite.solver);
+  TcSettings tc = suite.tcsb;
+  if (k > 0) tc.level_stiffness = {k, k, k};
+  TcSoftBody body(wt, net, suite.solver, tc);
+  coarsen_to_level(body, level);
+  if (argc > 6 && std::string(argv[6]) == "sort") {
+    // Throwaway: Bullet's links in row-major order of their first endpoint (as a plain grid has them), horizontal
+    // first.
+    const btSoftBody::Node* first = &body.m_nodes[0];
+    auto key = [&](const btSoftBody::Link& l) {
+      const TreeId a = body.tree_id(static_cast<int>(l.m_n[0] - first)),
+                   b = body.tree_id(static_cast<int>(l.m_n[1] - first));
+      const LodNode& na = body.tree().node(a);
+      const LodNode& nb = body.tree().node(b);
+      const LodNode& lo = (na.leaf_y0 < nb.leaf_y0 || (na.leaf_y0 == nb.leaf_y0 && na.leaf_x0 < nb.leaf_x0)) ? na : nb;
+      const bool vertical = na.leaf_y0 != nb.leaf_y0;
+      return std::tuple(lo.leaf_y0, lo.leaf_x0, vertical);
+    };
+    std::vector<btSoftBody::Link> links(&body.m_links[0], &body.m_links[0] + body.m_links.size());
+    std::stable_sort(links.begin(), links.end(), [&](const auto& x, const auto& y) { return key(x) < key(y); });
+    for (int i = 0; i < body.m_links.size(); ++i) body.m_links[i] = links[static_cast<std::size_t>(i)];
+  }
+  // a static copy of the same cut for the "perfect nodes" floor
+  SoftBodyWorld ws(suite.world);
+  TcSoftBody still(ws, net, suite.solver, tc);
+  coarsen_to_level(still, level);
+  const Net coarse(coarse_net_spec(net->spec(), node_budget(*net, budget_frac)));
+  SolverSettings us = suite.solver;
+  us.linear_stiffness = ku;
+  auto uni = make_plain_softbody(wu, coarse, us);
+  const LodTree& tree = net->lod();
+  std::vector<Eigen::Vector3d> rx, leaves, ux, uleaves, sampled, blockmean(body.node_count()), nodes;
+  double s_floor = 0, s_tc = 0, s_tcnode = 0, s_u = 0, s_ufloor = 0, s_unode = 0;
+  int n = 0;
+  for (int s = 0; s < suite.warmup_steps + suite.steps; ++s) {
+    step_soft_body(*ref, suite.world.dt);
+    body.simulate_step(suite.world.dt);
+    step_soft_body(*uni, suite.world.dt);
+    if (s < suite.warmup_steps) continue;
+    copy_positions(*ref, rx);
+    // perfect nodes: each simulated node at its block's mass-weighted mean of the reference (rest position if pinned)
+    for (int i = 0; i < still.node_count(); ++i) {
+      const TreeId id = still.tree_id(i);
+      Eigen::Vector3d m = Eigen::Vector3d::Zero();
+      double w = 0;
+      for_each_leaf(tree, id, [&](TreeId l) {
+        m += tree.node(l).mass * rx[l];
+        w += tree.node(l).mass;
+      });
+      Eigen::Vector3d x = tree.node(id).pinned() ? tree.rest(id) : Eigen::Vector3d(m / w);
+      if (tree.node(id).is_leaf()) x = rx[id];
+      still.m_nodes[i].m_x = to_bullet(x);
+    }
+    reconstruct_leaves(still, leaves);
+    s_floor += pct * surface_error(leaves, rx).rms;
+    // the simulated level cut: its reconstruction, and its nodes against the block means
+    reconstruct_leaves(body, leaves);
+    s_tc += pct * surface_error(leaves, rx).rms;
+    double e2 = 0;
+    int cnt = 0;
+    for (int i = 0; i < body.node_count(); ++i) {
+      const TreeId id = body.tree_id(i);
+      const Eigen::Vector3d target = to_eigen(still.m_nodes[still.bullet_index(id)].m_x);
+      e2 += (to_eigen(body.m_nodes[i].m_x) - target).squaredNorm();
+      ++cnt;
+    }
+    s_tcnode += pct * std::sqrt(e2 / cnt);
+    // uniform grid: bilinear reconstruction; its floor; its nodes vs the reference sampled at its nodes
+    copy_positions(*uni, ux);
+    uleaves.resize(net->node_count());
+    resample_bilinear({coarse.width(), coarse.height()}, ux, {net->width(), net->height()}, uleaves);
+    s_u += pct * surface_error(uleaves, rx).rms;
+    sampled.resize(coarse.node_count());
+    resample_bilinear({net->width(), net->height()}, rx, {coarse.width(), coarse.height()}, sampled);
+    resample_bilinear({coarse.width(), coarse.height()}, sampled, {net->width(), net->height()}, uleaves);
+    s_ufloor += pct * surface_error(uleaves, rx).rms;
+    s_unode += pct * surface_error(ux, sampled).rms;
+    ++n;
+  }
+  std::printf("net %s level %d (N=%d) k=%.3f: floor(recon of perfect nodes) %.3f  sim recon %.3f  sim "
+              "nodes-vs-blockmean %.3f\n",
+              net->spec().name.c_str(), level, body.node_count(), k, s_floor / n, s_tc / n, s_tcnode / n);
+  std::printf("uniform %dx%d k=%.3f: floor(bilinear) %.3f  sim recon %.3f  sim nodes-vs-sampled %.3f\n", coarse.width(),
+              coarse.height(), ku, s_ufloor / n, s_u / n, s_unode / n);
+}
