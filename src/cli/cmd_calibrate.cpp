@@ -30,6 +30,7 @@ int calibrate_command(const CalibrateArgs& args) {
     named = s.fidelity.calibration_path;
     s.fidelity.calibration_path.clear();  // not read: it is what this command makes (and may be stale or missing)
   });
+  refuse_axes(suite, "calibrate");
   std::filesystem::path out = args.out;
   if (out.empty())
     out = named.empty() ? suite_file.parent_path() / (suite_file.stem().string() + ".calibration.json")
