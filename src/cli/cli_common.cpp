@@ -46,6 +46,12 @@ std::filesystem::path resolve_suite(const std::string& argument) {
                        (known.empty() ? "none in " + suites_dir().string() : known) + ")");
 }
 
+void refuse_axes(const Suite& suite, const std::string& command) {
+  if (suite.axes.empty()) return;
+  throw InputError(suite.path.string(), "axes",
+                   "`tcsb " + command + "` runs one set of settings; run a suite with axes with `tcsb run`");
+}
+
 std::string one_line(std::string_view text) {
   std::string line(text);
   std::replace(line.begin(), line.end(), '\n', ' ');

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "suite/suite.h"
+
 namespace CLI {
 class App;
 class ParseError;
@@ -40,6 +42,10 @@ std::vector<std::string> bundled_suite_names();
 /// A SUITE argument as a file: an existing path as is; a bare name ("paper") as suites_dir()/NAME.json. Throws
 /// InputError naming the argument when a bare name is neither a file nor a bundled suite.
 std::filesystem::path resolve_suite(const std::string& argument);
+
+/// Throws InputError naming the suite file and its `axes` when the suite has axes: `command` ("reproduce",
+/// "frames", "calibrate") runs the suite's one set of settings, and only `tcsb run` runs configurations.
+void refuse_axes(const Suite& suite, const std::string& command);
 
 /// `text` with line breaks turned into spaces, so every error is exactly one line, made terminal_safe (control
 /// characters escaped) and cut to kMaxMessageBytes (report/terminal_text.h).

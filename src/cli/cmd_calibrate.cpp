@@ -70,6 +70,7 @@ int calibrate_command(const CalibrateArgs& args) {
     named = s.fidelity.calibration_path;
     s.fidelity.calibration_path.clear();  // not read: it is what this command makes (and may be stale or missing)
   });
+  refuse_axes(suite, "calibrate");
   std::vector<std::shared_ptr<const Net>> nets;
   for (const NetSpec& spec : suite.nets) nets.push_back(std::make_shared<const Net>(spec));
   if (!args.check.empty()) return check_calibration(args, suite, nets);

@@ -68,8 +68,8 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
                   "TC-SB time budget per step in ms, 0 to disable (overrides the suite)");
   add_repetitions_option(*run, args.repetitions);
   run->add_option("--shard", args.shard,
-                  "Run only shard K of N (e.g. 2/4): a deterministic share of the nets, each net's cases together; "
-                  "join the shards' JSON results with `tcsb merge`");
+                  "Run only shard K of N (e.g. 2/4): a deterministic share of the nets (with axes, of each "
+                  "configuration's nets), each net's cases together; join the shards' JSON results with `tcsb merge`");
   return run;
 }
 
@@ -85,7 +85,7 @@ int run_command(const RunArgs& args) {
     apply_budget_overrides(args, s);
     apply_repetitions(args.repetitions, s);
     // A shard runs only its nets, and the memory check counts only them: it may fit where the whole suite would not.
-    if (shard) s.run_nets = shard_nets(s, *shard);
+    if (shard) s.run_units = shard_units(s, *shard);
   });
   return run_and_report(suite, args);
 }

@@ -45,7 +45,7 @@ void apply_repetitions(const std::optional<int>& repetitions, Suite& suite);
 /// single updating progress line when stderr is a terminal and not `quiet`, the console report unless `quiet`, then
 /// a warning per diverged repetition (case, step, reason) and per repetition during which the machine stalled
 /// (run/stall.h).
-/// With `shard`, the result says which shard it is; suite.run_nets must hold that shard's nets (shard_nets()).
+/// With `shard`, the result says which shard it is; suite.run_units must hold that shard's units (shard_units()).
 RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard = std::nullopt);
 
 /// Writes the report to stdout, or atomically to `out`. If the file cannot be written after a long run, the report

@@ -117,6 +117,8 @@ CaseView read_case(const Fields& f, const ojson& j, const std::string& path) {
   c.label = f.string(j, path, "label");
   c.net = f.string(j, path, "net");
   c.method = f.string(j, path, "method");
+  if (j.contains("configuration"))  // optional: only with axes
+    c.configuration = f.string(f.object(j, path, "configuration"), Fields::join(path, "configuration"), "label");
   c.compression = f.number_or_null(j, path, "compression");
   c.status = f.string(j, path, "status");
   c.mean_nodes = f.non_negative_or_null(j, path, "mean_nodes");
@@ -159,7 +161,8 @@ ResultView read_result(const ojson& doc, const std::string& file) {
 std::optional<std::size_t> plain_case_of(const ResultView& result, std::size_t index) {
   if (index >= result.cases.size()) return std::nullopt;
   for (std::size_t i = 0; i < result.cases.size(); ++i) {
-    if (result.cases[i].net == result.cases[index].net && result.cases[i].method == "plain") return i;
+    const CaseView &c = result.cases[i], &of = result.cases[index];
+    if (c.net == of.net && c.configuration == of.configuration && c.method == "plain") return i;
   }
   return std::nullopt;
 }

@@ -35,6 +35,7 @@ struct RepetitionView {
 /// One case as the file records it (the fields the comparison and the exports use).
 struct CaseView {
   std::string label, net, method;  ///< e.g. "n33/tcsb@0.3", "n33", "tcsb"
+  std::string configuration;       ///< configuration.label of a suite with axes ("piterations=8"); "" without
   std::optional<double> compression;
   std::string status;
   std::optional<double> mean_nodes, mean_links, mean_interpolations;
@@ -61,7 +62,7 @@ struct ResultView {
 /// nodes, links, interpolations) or step_ms median, stddev or cv.
 ResultView read_result(const nlohmann::ordered_json& doc, const std::string& file);
 
-/// The plain case of the same net as cases[index], or nullopt.
+/// The plain case of the same net and configuration as cases[index], or nullopt.
 std::optional<std::size_t> plain_case_of(const ResultView& result, std::size_t index);
 
 /// Same-run ratios of cases[index] to `base_index`, one per repetition number that is ok in both with finite

@@ -189,9 +189,11 @@ std::optional<double> paired_ratio(const RunResult& result, std::size_t case_ind
 
 std::optional<std::size_t> plain_case_for(const RunResult& result, std::size_t case_index) {
   if (case_index >= result.cases.size()) return std::nullopt;
-  const std::size_t net = result.cases[case_index].key.net;
+  const CaseKey& key = result.cases[case_index].key;
   for (std::size_t i = 0; i < result.cases.size(); ++i) {
-    if (result.cases[i].key.net == net && result.cases[i].key.method == Method::kPlain) return i;
+    const CaseKey& other = result.cases[i].key;
+    // The same configuration too: a ratio compares methods, never settings.
+    if (other.net == key.net && other.configuration == key.configuration && other.method == Method::kPlain) return i;
   }
   return std::nullopt;
 }

@@ -92,7 +92,7 @@ std::string compression_label(std::optional<double> compression);
 /// repetition pairs up.
 std::optional<double> paired_ratio(const RunResult& result, std::size_t case_index, std::size_t base_case_index);
 
-/// The plain case of the same net as `case_index` (the case itself if it is plain), or nullopt.
+/// The plain case of the same net and configuration as `case_index` (the case itself if it is plain), or nullopt.
 std::optional<std::size_t> plain_case_for(const RunResult& result, std::size_t case_index);
 
 /// Table 1: rows for refine, end-refine, coarse, end-coarse (OpKind order) over all op samples of the ok TC-SB

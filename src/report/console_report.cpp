@@ -7,6 +7,7 @@
 #include "report/fidelity_console.h"
 #include "report/terminal_text.h"
 #include "report/text_table.h"
+#include "run/configuration_result.h"
 
 namespace tcsb {
 namespace {
@@ -135,19 +136,36 @@ void print_fits(const RunResult& r, std::ostream& out) {
   ops.print(out);
 }
 
+/// The cases, Table 1, Table 2 and the fits of one run (or one configuration's share of it).
+void print_tables(const RunResult& r, std::ostream& out) {
+  print_cases(r, out);
+  out << '\n';
+  print_table1(r, out);
+  out << '\n';
+  print_table2(r, out);
+  out << '\n';
+  print_fits(r, out);
+}
+
 }  // namespace
 
 void print_console_report(const RunResult& result, std::ostream& out) {
   out << "Suite " << terminal_safe(result.suite.name) << " (" << terminal_safe(result.suite.path.string()) << "), "
-      << result.cases.size() << " cases, " << result.suite.repetitions << " repetitions x " << result.suite.steps
-      << " steps, wall " << fixed(result.wall_s, 2) << " s\n\n";
-  print_cases(result, out);
-  out << '\n';
-  print_table1(result, out);
-  out << '\n';
-  print_table2(result, out);
-  out << '\n';
-  print_fits(result, out);
+      << result.cases.size() << " cases, ";
+  if (!result.suite.configurations.empty()) out << result.suite.configurations.size() << " configurations, ";
+  out << result.suite.repetitions << " repetitions x " << result.suite.steps << " steps, wall "
+      << fixed(result.wall_s, 2) << " s\n\n";
+  if (result.suite.configurations.empty()) {
+    print_tables(result, out);
+  } else {
+    // Grouped by configuration: each one's cases, tables and fits, as if it had run alone.
+    const std::size_t count = result.suite.configurations.size();
+    for (std::size_t c = 0; c < count; ++c) {
+      out << (c == 0 ? "" : "\n") << "== Configuration " << c + 1 << " of " << count << ": "
+          << terminal_safe(result.suite.configurations[c].label) << " ==\n\n";
+      print_tables(configuration_result(result, c), out);
+    }
+  }
   if (result.fidelity) {
     out << '\n';
     print_fidelity_report(result, out);

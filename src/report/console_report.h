@@ -9,7 +9,8 @@
 namespace tcsb {
 
 /// Prints the cases (label, status, N, L, I, median ms, CV, paired ratio vs plain), Table 1, Table 2 and the
-/// linear fits (slope, intercept, R²) as aligned plain text; "-" marks a value that was not measured.
+/// linear fits (slope, intercept, R²) as aligned plain text; "-" marks a value that was not measured. With axes,
+/// all of these once per configuration, under a heading naming it.
 void print_console_report(const RunResult& result, std::ostream& out);
 
 }  // namespace tcsb

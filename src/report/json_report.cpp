@@ -6,6 +6,8 @@
 #include "report/fidelity_json.h"
 #include "report/op_work_json.h"
 #include "report/shard_merge.h"
+#include "run/configuration_result.h"
+#include "suite/suite_axes.h"
 
 namespace tcsb {
 namespace {
@@ -75,6 +77,12 @@ ojson suite_json(const Suite& s) {
   // Only when set: a suite that does not charge popping writes what it wrote before the setting existed, so its
   // results still compare with older baselines (the gate refuses runs whose suite blocks differ).
   if (f.popping_charge > 0) out["feedback"]["popping_charge"] = json_number(f.popping_charge);
+  // Optional: only a suite with axes has it, so the block of a suite without stays as it always was.
+  if (!s.axes.empty()) {
+    ojson axes = ojson::object();
+    for (const Axis& axis : s.axes) axes[axis.path] = ojson::parse(nlohmann::json(axis.values).dump());
+    out["axes"] = std::move(axes);
+  }
   return out;
 }
 
@@ -105,6 +113,12 @@ ojson repetition_json(const RepetitionResult& r) {
       {"final_state_hash", r.final_state_hash},
       {"build_ms", json_number(r.build_ms)},
   };
+}
+
+/// A case's configuration: its label and axis values (only in runs of a suite with axes).
+ojson configuration_json(const RunResult& result, const CaseResult& c) {
+  return {{"label", result.suite.configurations[c.key.configuration].label},
+          {"axes", configuration_values(result.suite, c.key.configuration)}};
 }
 
 ojson case_json(const RunResult& result, std::size_t index) {
@@ -138,6 +152,7 @@ ojson case_json(const RunResult& result, std::size_t index) {
   };
   // Only TC-SB has TreeCut operations; the key stays absent elsewhere (and in results written before it existed).
   if (c.key.method == Method::kTcsb) out["op_work"] = op_work_json(c.ops.samples);
+  if (c.key.configuration < result.suite.configurations.size()) out["configuration"] = configuration_json(result, c);
   return out;
 }
 
@@ -210,6 +225,21 @@ ojson scaling_json(const RunResult& result) {
   return {{"step_ms_vs_nodes", std::move(steps)}, {"op_ms_vs_nodes", std::move(ops)}};
 }
 
+/// One entry per configuration: its label, axis values, case count and its own Table 1, Table 2 and fits.
+ojson configurations_json(const RunResult& result) {
+  ojson out = ojson::array();
+  for (std::size_t c = 0; c < result.suite.configurations.size(); ++c) {
+    const RunResult view = configuration_result(result, c);
+    out.push_back({{"label", result.suite.configurations[c].label},
+                   {"axes", configuration_values(result.suite, c)},
+                   {"cases", view.cases.size()},
+                   {"table1", table1_json(view)},
+                   {"table2", table2_json(view)},
+                   {"scaling", scaling_json(view)}});
+  }
+  return out;
+}
+
 }  // namespace
 
 ojson json_number(double value) { return std::isfinite(value) ? ojson(value) : ojson(nullptr); }
@@ -232,9 +262,18 @@ ojson native_json(const RunResult& result) {
   if (result.shard) doc["context"]["shard"] = {{"k", result.shard->k}, {"n", result.shard->n}};
   doc["suite"] = suite_json(result.suite);
   doc["cases"] = std::move(cases);
-  doc["table1"] = table1_json(result);
-  doc["table2"] = table2_json(result);
-  doc["scaling"] = scaling_json(result);
+  if (result.suite.configurations.empty()) {
+    doc["table1"] = table1_json(result);
+    doc["table2"] = table2_json(result);
+    doc["scaling"] = scaling_json(result);
+  } else {
+    // With axes the tables and fits are per configuration (a mean over configurations would mix settings): they
+    // are in `configurations`, and the run-wide ones stay empty rather than mislead.
+    doc["table1"] = ojson::array();
+    doc["table2"] = ojson::array();
+    doc["scaling"] = {{"step_ms_vs_nodes", ojson::array()}, {"op_ms_vs_nodes", ojson::array()}};
+    doc["configurations"] = configurations_json(result);
+  }
   add_fidelity_json(result, doc);  // fidelity, pareto, max_compression: only when the run has a fidelity pass
   doc["status"] = diverged ? "diverged" : "ok";
   doc["wall_s"] = json_number(result.wall_s);

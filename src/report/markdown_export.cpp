@@ -520,6 +520,21 @@ std::string fidelity_section(const ojson& doc) {
   return out;
 }
 
+/// A run of a suite with axes: each configuration's Table 2, Table 1 and fits under a line naming it (the run-wide
+/// tables are empty then: a mean over configurations would mix settings).
+std::string configurations_section(const ojson& doc) {
+  const ojson& configurations = at(doc, "configurations");
+  if (!non_empty_array(configurations)) return "";
+  std::string out;
+  for (const ojson& c : configurations) {
+    const ojson tables = {{"table2", at(c, "table2")}, {"table1", at(c, "table1")}, {"scaling", at(c, "scaling")}};
+    out += "\n### Configuration " + text_of(at(c, "label")) + "\n";
+    for (const std::string& section : {table2_section(tables), table1_section(tables), scaling_section(tables)})
+      if (!section.empty()) out += "\n" + section;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string markdown_number(const ojson& value, int digits) {
@@ -541,8 +556,9 @@ std::string markdown_number(const ojson& value, int digits) {
 
 std::string markdown_report(const ojson& native) {
   std::string out = heading(native) + "\n" + source_line(native);
-  for (const std::string& section : {table2_section(native), table1_section(native), scaling_section(native),
-                                     fidelity_section(native), claims_section(native)}) {
+  for (const std::string& section :
+       {table2_section(native), table1_section(native), scaling_section(native), configurations_section(native),
+        fidelity_section(native), claims_section(native)}) {
     if (!section.empty()) out += "\n" + section;
   }
   return out;

@@ -97,10 +97,9 @@ Suite rebuild_suite(const ShardDocument& shard) {
       s.methods.clear();
       for (const ojson& m : r.at(block, "suite", "methods")) {
         const std::string name = m.is_string() ? m.get<std::string>() : "";
-        const Method known[] = {Method::kPlain, Method::kBulletPatch, Method::kTcsb};
-        const auto* it =
-            std::find_if(std::begin(known), std::end(known), [&](Method k) { return name == method_name(k); });
-        if (it == std::end(known)) r.fail("suite.methods", "unknown method " + m.dump());
+        const auto* it = std::find_if(std::begin(kAllMethods), std::end(kAllMethods),
+                                      [&](Method k) { return name == method_name(k); });
+        if (it == std::end(kAllMethods)) r.fail("suite.methods", "unknown method " + m.dump());
         s.methods.push_back(*it);
       }
       s.compression.clear();
@@ -108,12 +107,13 @@ Suite rebuild_suite(const ShardDocument& shard) {
         s.compression.push_back(c.is_number() ? c.get<double>() : 0);
       s.repetitions = static_cast<int>(r.integer(block, "suite", "repetitions"));
       s.feedback.max_step_ms = r.number(r.at(block, "suite", "feedback"), "suite.feedback", "max_step_ms");
-      s.run_nets.assign(s.nets.size(), false);  // merging runs nothing: no memory check for the suite's nets here
+      // Merging runs nothing: no memory check for the suite's nets here.
+      s.run_units.assign(configuration_count(s) * s.nets.size(), false);
     });
   } catch (const InputError& e) {
     throw ResultFileError(shard.file, "merge_data.suite_file", e.what());
   }
-  suite.run_nets.clear();
+  suite.run_units.clear();
   suite.path = r.string(block, "suite", "path");
   if (const std::string d = first_json_difference(suite_json(suite), block, "suite"); !d.empty()) {
     r.fail("suite", "does not match the suite file in merge_data.suite_file (" + d + ")");
@@ -256,11 +256,13 @@ FidelityFloors read_floors(const Reader& r, const ojson& j, const std::string& p
 ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const ShardIndex& index) {
   const Reader r(shard.file);
   const ojson& doc = shard.document;
-  const std::vector<bool> nets = shard_nets(suite, index);
+  const std::vector<bool> units = shard_units(suite, index);
   const std::vector<CaseKey> keys = expand_cases(suite);
   std::vector<std::size_t> expected;
   for (std::size_t i = 0; i < keys.size(); ++i)
-    if (nets[keys[i].net]) expected.push_back(i);
+    if (units[keys[i].configuration * suite.nets.size() + keys[i].net]) expected.push_back(i);
+  // The fidelity pass (never with axes: one configuration) is per net.
+  const std::vector<bool>& nets = units;
   const ojson& cases = r.at(doc, "", "cases");
   if (!cases.is_array() || cases.size() != expected.size()) {
     r.fail("cases", std::to_string(cases.is_array() ? cases.size() : 0) + " cases, but shard " + shard_text(index) +

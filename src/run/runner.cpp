@@ -12,6 +12,7 @@
 #include "run/case_summary.h"
 #include "run/out_of_memory.h"
 #include "softbody/divergence.h"
+#include "suite/suite_axes.h"
 
 namespace tcsb {
 
@@ -153,7 +154,7 @@ RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repe
 }
 
 /// The nets of a suite, built once per call (they are immutable and shared by every case of the net); a net not
-/// the suite does not run here (Suite::run_nets) is not built (null): a shard must not pay for another's largest net.
+/// the suite does not run here (Suite::run_units) is not built (null): a shard must not pay for another's largest net.
 std::vector<std::shared_ptr<const Net>> build_nets(const Suite& suite) {
   std::vector<std::shared_ptr<const Net>> nets;
   nets.reserve(suite.nets.size());
@@ -172,15 +173,24 @@ std::vector<std::shared_ptr<const Net>> build_nets(const Suite& suite) {
 /// Runs the planned repetitions into result.cases, numbering each `first_repetition[case] + run.repetition`.
 void run_plan(RunResult& result, const std::vector<PlannedRun>& plan, const std::vector<int>& first_repetition,
               const std::vector<std::shared_ptr<const Net>>& nets, const RunOptions& options, int& done, int total) {
+  // Each case runs with its configuration's settings (the suite's own without axes), and draws the seed it has in
+  // that configuration run alone: a configuration of a suite with axes is that suite without them.
+  const std::vector<Suite> settings = configuration_suites(result.suite);
+  std::vector<std::uint64_t> seeds;
+  for (std::size_t i = 0; i < result.cases.size(); ++i) {
+    const std::size_t index = index_in_configuration(result.suite, i);
+    seeds.push_back(case_seed(settings[result.cases[i].key.configuration], index));
+  }
   for (const PlannedRun& run : plan) {
     CaseResult& c = result.cases[run.case_index];
     // One seed per case, the same for every repetition: repetitions do identical work, so their spread is the
     // machine's, and N, L, I and the final state are exact, gateable numbers.
-    const std::uint64_t seed = case_seed(result.suite, run.case_index);
+    const std::uint64_t seed = seeds[run.case_index];
     const int repetition = first_repetition[run.case_index] + run.repetition;
+    const Suite& suite = settings[c.key.configuration];
     c.repetitions.push_back(
         naming_out_of_memory("suite " + result.suite.name + ", case " + c.label + " (net " + c.net_name + ")", [&] {
-          return run_repetition(result.suite, c.key, repetition, nets[c.key.net], seed, c.ops.samples);
+          return run_repetition(suite, c.key, repetition, nets[c.key.net], seed, c.ops.samples);
         }));
     ++done;
     if (options.progress) options.progress(done, total, c.label);
@@ -197,7 +207,9 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
   const std::vector<CaseKey> keys = expand_cases(suite);
   std::vector<PlannedRun> plan = interleaved_plan(suite, keys);
   // A shard runs the whole suite's plan restricted to its nets: the order among its cases is the unsharded one.
-  std::erase_if(plan, [&](const PlannedRun& run) { return !runs_net(suite, keys[run.case_index].net); });
+  std::erase_if(plan, [&](const PlannedRun& run) {
+    return !runs_unit(suite, keys[run.case_index].configuration, keys[run.case_index].net);
+  });
 
   const std::vector<std::shared_ptr<const Net>> nets = build_nets(suite);
 
@@ -205,7 +217,7 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
   for (std::size_t i = 0; i < keys.size(); ++i) {
     CaseResult& c = result.cases[i];
     c.key = keys[i];
-    if (!nets[keys[i].net]) continue;  // another shard's case: dropped below
+    if (!runs_unit(suite, keys[i].configuration, keys[i].net)) continue;  // another shard's case: dropped below
     const Net& net = *nets[keys[i].net];
     c.label = case_label(suite, keys[i]);
     c.net_name = net.spec().name;
@@ -222,7 +234,7 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
   run_plan(result, plan, std::vector<int>(keys.size(), 0), nets, options, done, total);
   for (CaseResult& c : result.cases) summarize_case(c);
   // Only now, when no index into result.cases is needed any more: drop the cases of nets this process did not run.
-  std::erase_if(result.cases, [&](const CaseResult& c) { return !runs_net(suite, c.key.net); });
+  std::erase_if(result.cases, [&](const CaseResult& c) { return !runs_unit(suite, c.key.configuration, c.key.net); });
   if (fidelity) {
     result.fidelity = naming_out_of_memory("suite " + suite.name + ", fidelity pass", [&] {
       return run_fidelity(suite, nets, [&](const std::string& net) {

@@ -19,9 +19,10 @@ struct RunOptions {
 /// Runs every case of the suite in interleaved_plan() order (every repetition runs every case once, a net's cases
 /// side by side); each repetition builds a fresh body, steps warm-up steps untimed, then times every step with a
 /// monotonic clock. A repetition that diverges stops at once and is reported with its step, never averaged in.
-/// With suite.run_nets (a shard's nets), only those nets' cases (and their fidelity pass) run and result.cases holds
-/// only them; their other nets are never built. The cases run keep their suite-wide indices, so seeds, labels and
-/// the interleaved order among them are those of the whole suite.
+/// With suite.run_units (a shard's units), only those units' cases (and their nets' fidelity pass) run and
+/// result.cases holds only them; nets of no unit are never built. With axes, every case runs with its
+/// configuration's settings (configuration_suite, suite/suite_axes.h). The cases run keep their suite-wide indices, so
+/// seeds, labels and the interleaved order among them are those of the whole suite.
 RunResult run_suite(const Suite& suite, const Context& context, const RunOptions& options = {});
 
 /// Runs `extra` more repetitions of the cases `case_indices` of a finished run (indices into result.cases), in the
@@ -29,7 +30,7 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
 /// cases side by side), numbered after the case's last repetition, each with the case's own seed — so a repetition
 /// added later does the same work as the first ones. Recomputes the touched cases' summaries and adds the time
 /// taken to result.wall_s. Indices out of range are ignored. The fidelity pass is not repeated. `result` must hold
-/// every case of its suite (not a shard's, Suite::run_nets): a case's index is its seed.
+/// every case of its suite (not a shard's, Suite::run_units): a case's index is its seed.
 void run_more_repetitions(RunResult& result, const std::vector<std::size_t>& case_indices, int extra,
                           const RunOptions& options = {});
 

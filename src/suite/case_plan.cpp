@@ -8,19 +8,28 @@ namespace tcsb {
 
 std::vector<CaseKey> expand_cases(const Suite& suite) {
   std::vector<CaseKey> cases;
-  for (std::size_t net = 0; net < suite.nets.size(); ++net) {
-    for (const Method method : suite.methods) {
-      if (method == Method::kTcsb) {
-        for (const double target : suite.compression) cases.push_back({net, method, target});
-      } else if (method == Method::kPlainEqual) {
-        for (const double target : suite.compression)
-          if (target < 1.0) cases.push_back({net, method, target});
-      } else {
-        cases.push_back({net, method, std::nullopt});
+  for (std::size_t configuration = 0; configuration < configuration_count(suite); ++configuration) {
+    for (std::size_t net = 0; net < suite.nets.size(); ++net) {
+      for (const Method method : suite.methods) {
+        if (method == Method::kTcsb) {
+          for (const double target : suite.compression) cases.push_back({net, method, target, configuration});
+        } else if (method == Method::kPlainEqual) {
+          for (const double target : suite.compression)
+            if (target < 1.0) cases.push_back({net, method, target, configuration});
+        } else {
+          cases.push_back({net, method, std::nullopt, configuration});
+        }
       }
     }
   }
   return cases;
+}
+
+std::size_t index_in_configuration(const Suite& suite, std::size_t case_index) {
+  Suite one = suite;  // the cases of one configuration: the same for each
+  one.configurations.clear();
+  const std::size_t per_configuration = expand_cases(one).size();
+  return per_configuration == 0 ? case_index : case_index % per_configuration;
 }
 
 std::vector<PlannedRun> interleaved_plan(const Suite& suite, const std::vector<CaseKey>& cases) {
@@ -67,6 +76,8 @@ std::string case_label(const Suite& suite, const CaseKey& key) {
     label += number;
     if (number.find_first_of(".en") == std::string_view::npos) label += ".0";
   }
+  if (key.configuration < suite.configurations.size())
+    label += "[" + suite.configurations[key.configuration].label + "]";
   return label;
 }
 

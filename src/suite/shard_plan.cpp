@@ -4,6 +4,8 @@
 #include <charconv>
 #include <numeric>
 
+#include "suite/suite_axes.h"
+
 namespace tcsb {
 namespace {
 
@@ -40,21 +42,27 @@ double net_cost_estimate(const Suite& suite, std::size_t net) {
   return static_cast<double>(suite.nets[net].node_count()) * cases;
 }
 
-std::vector<bool> shard_nets(const Suite& suite, const ShardIndex& shard) {
-  const std::size_t nets = suite.nets.size();
-  std::vector<std::size_t> order(nets);
+std::vector<bool> shard_units(const Suite& suite, const ShardIndex& shard) {
+  const std::size_t nets = suite.nets.size(), units = configuration_count(suite) * nets;
+  std::vector<std::size_t> order(units);
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::vector<double> cost(nets);
-  for (std::size_t i = 0; i < nets; ++i) cost[i] = net_cost_estimate(suite, i);
+  std::vector<double> cost(units);
+  const std::vector<Suite> configurations = configuration_suites(suite);
+  for (std::size_t c = 0; c < configurations.size(); ++c) {
+    // A configuration's steps scale its cost; the factor is exactly 1 without axes, so the split is as before.
+    const double steps = static_cast<double>(configurations[c].steps) + configurations[c].warmup_steps;
+    const double scale = steps / (static_cast<double>(suite.steps) + suite.warmup_steps);
+    for (std::size_t i = 0; i < nets; ++i) cost[c * nets + i] = net_cost_estimate(suite, i) * scale;
+  }
   // Longest processing time first: a greedy split within 4/3 of the best possible makespan.
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   std::vector<double> load(static_cast<std::size_t>(shard.n), 0.0);
-  std::vector<bool> mine(nets, false);
-  for (const std::size_t net : order) {
+  std::vector<bool> mine(units, false);
+  for (const std::size_t unit : order) {
     const std::size_t lightest =
         static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());  // first of equals
-    load[lightest] += cost[net];
-    mine[net] = lightest + 1 == static_cast<std::size_t>(shard.k);
+    load[lightest] += cost[unit];
+    mine[unit] = lightest + 1 == static_cast<std::size_t>(shard.k);
   }
   return mine;
 }

@@ -1,7 +1,8 @@
 // Shards: a suite's work split into N parts that separate processes (Slurm array tasks, CI matrix jobs, GNU parallel
-// slots) run independently and `tcsb merge` joins. The unit of the split is the net: a net's cases (plain, TC-SB at
-// every budget, ...) and all their repetitions stay in one shard, so every same-run ratio is still measured within
-// one process, under the same machine conditions, interleaved as in an unsharded run.
+// slots) run independently and `tcsb merge` joins. The unit of the split is the net (with axes: one configuration's
+// cases of one net): a unit's cases (plain, TC-SB at every budget, ...) and all their repetitions stay in one shard,
+// so every same-run ratio is still measured within one process, under the same machine conditions, interleaved as in
+// an unsharded run.
 #pragma once
 
 #include <optional>
@@ -33,10 +34,12 @@ std::string shard_text(const ShardIndex& shard);
 /// TC-SB case weighted by its budget (it simulates about that fraction of the nodes).
 double net_cost_estimate(const Suite& suite, std::size_t net);
 
-/// Which nets shard `shard` runs, indexed like suite.nets. Deterministic (the same suite and n give the same split
-/// on every machine): nets are taken in decreasing estimated cost (ties: suite order) and each goes to the shard
-/// with the least estimated cost so far (ties: the lowest k), so one large net does not share a shard with others
-/// while shards stay idle. Every net is in exactly one of the n shards; with more shards than nets some are empty.
-std::vector<bool> shard_nets(const Suite& suite, const ShardIndex& shard);
+/// Which units shard `shard` runs, indexed like Suite::run_units (configuration x nets + net; without axes, like
+/// suite.nets). Deterministic (the same suite and n give the same split on every machine): units are taken in
+/// decreasing estimated cost (net_cost_estimate scaled by the configuration's steps; ties: unit order) and each goes
+/// to the shard with the least estimated cost so far (ties: the lowest k), so one large net does not share a shard
+/// with others while shards stay idle. Every unit is in exactly one of the n shards; with more shards than units
+/// some are empty.
+std::vector<bool> shard_units(const Suite& suite, const ShardIndex& shard);
 
 }  // namespace tcsb

@@ -11,6 +11,7 @@
 #include "base/json_file.h"
 #include "base/sha256.h"
 #include "suite/case_plan.h"
+#include "suite/suite_axes.h"
 #include "suite/suite_fields.h"
 #include "suite/suite_memory.h"
 
@@ -18,10 +19,6 @@ namespace tcsb {
 namespace {
 
 using namespace suite_fields;
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr Interval kPositive{0.0, true}, kNonNegative{0.0, false}, kAnyFinite{-kInf, true};
-constexpr Interval kFraction{0.0, true, 1.0, false};  // (0, 1]
 
 NetSpec parse_net(const Reader& r, const json& j, const std::string& path) {
   const Object o(r, j, path, {"name", "width", "height", "size", "elevation", "mass", "pinned", "shear", "bend"});
@@ -73,17 +70,13 @@ NetSpec parse_net(const Reader& r, const json& j, const std::string& path) {
 void parse_settings(const Reader& r, const Object& root, Suite& s) {
   const Object solver(r, root.need("solver"), "solver",
                       {"piterations", "viterations", "diterations", "damping", "stiffness"});
-  solver.read("piterations", s.solver.piterations, 1, 1000, true);
-  solver.read("viterations", s.solver.viterations, 0, 1000);
-  solver.read("diterations", s.solver.diterations, 0, 1000);
-  solver.read("damping", s.solver.damping, Interval{0.0, false, 1.0, true});
-  solver.read("stiffness", s.solver.linear_stiffness, kFraction);
+  // The settings an axis can vary are read by suite_axes.cpp, so an axis value is checked like the setting itself.
+  read_axis_setting(r, solver, "piterations", s, true);
+  for (const char* key : {"viterations", "diterations", "damping", "stiffness"}) read_axis_setting(r, solver, key, s);
 
   if (const json* j = root.find("tcsb")) {
     const Object tc(r, *j, "tcsb", {"blend_steps", "placement", "restore_order"});
-    tc.read("blend_steps", s.tcsb.blend_steps, 1, 1000);
-    tc.read("placement", s.tcsb.placement, {{"affine", Placement::kAffine}, {"rigid", Placement::kRigid}});
-    tc.read("restore_order", s.tcsb.restore_order);
+    for (const char* key : {"blend_steps", "placement", "restore_order"}) read_axis_setting(r, tc, key, s);
   }
 
   if (const json* j = root.find("feedback")) {
@@ -91,12 +84,9 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
                     {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale",
                      "illumination", "light_direction", "parallel", "threads", "max_step_ms", "popping_charge"});
     FeedbackSettings& f = s.feedback;
-    fb.read("policy", f.policy, {{"saliency", PolicyKind::kSaliency}, {"random", PolicyKind::kRandom}});
-    fb.read("threshold", f.threshold, kNonNegative);
-    fb.read("max_ops_per_step", f.max_ops_per_step, 1, 100000);
-    fb.read("evaluation_interval", f.evaluation_interval, 1, 1000);
-    fb.read("global_motion_scale", f.global_motion_scale, kPositive);
-    fb.read("illumination", f.illumination);
+    for (const char* key :
+         {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale", "illumination"})
+      read_axis_setting(r, fb, key, s);
     if (const json* light = fb.find("light_direction")) {
       f.light_direction = r.numbers<3>(*light, fb.at("light_direction"), kAnyFinite);
       if (f.light_direction == std::array<double, 3>{}) r.fail(fb.at("light_direction"), "must not be the zero vector");
@@ -104,7 +94,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     fb.read("parallel", f.parallel);
     fb.read("threads", f.threads, 1, 64);
     fb.read("max_step_ms", f.max_step_ms, kNonNegative);
-    fb.read("popping_charge", f.popping_charge, kNonNegative);
+    read_axis_setting(r, fb, "popping_charge", s);
   }
 
   if (const json* j = root.find("fidelity")) {
@@ -132,6 +122,12 @@ void check_memory(const Suite& suite, const Reader& r) {
                              format_bytes(shortfall->usable) + " may be used (80% of the headroom under " +
                              shortfall->headroom.source + ", " +
                              format_bytes(static_cast<double>(shortfall->headroom.bytes)) + ")";
+  if (shortfall->recorder && !suite.axes.empty()) {
+    // The axes multiply the cases (and may vary the steps): they make the recorder large.
+    r.fail("axes", "recording every step of " + std::to_string(expand_cases(suite).size()) + " cases (" +
+                       std::to_string(suite.configurations.size()) + " configurations) x " +
+                       std::to_string(suite.repetitions) + " repetitions" + budget);
+  }
   if (shortfall->recorder) {
     // Blame the field that makes it large: a huge "steps" is not the net's fault.
     r.fail("steps", "recording " + std::to_string(suite.steps) + " steps (+ " + std::to_string(suite.warmup_steps) +
@@ -163,7 +159,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
   const Object root(r, doc, "",
                     {"name", "description", "nets", "methods", "compression", "dt", "gravity", "steps", "warmup_steps",
-                     "repetitions", "seed", "solver", "tcsb", "feedback", "fidelity"});
+                     "repetitions", "seed", "solver", "tcsb", "feedback", "fidelity", "axes"});
   Suite s;
   s.path = file;
   s.sha256 = sha256_hex(text);
@@ -216,13 +212,14 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
            "plain_equal needs a compression target below 1 (it runs one case per such target)");
   }
 
-  root.read("dt", s.world.dt, kFraction, true);
-  root.read("gravity", s.world.gravity, kNonNegative);
-  root.read("steps", s.steps, 1, INT_MAX, true);
-  root.read("warmup_steps", s.warmup_steps, 0, INT_MAX, true);
+  read_axis_setting(r, root, "dt", s, true);
+  read_axis_setting(r, root, "gravity", s);
+  read_axis_setting(r, root, "steps", s, true);
+  read_axis_setting(r, root, "warmup_steps", s, true);
   root.read("repetitions", s.repetitions, 1, kMaxRepetitions, true);
-  s.seed = r.unsigned_integer(root.need("seed"), "seed");
+  read_axis_setting(r, root, "seed", s, true);
   parse_settings(r, root, s);
+  if (const json* axes = root.find("axes")) parse_axes(r, *axes, s);
 
   // CreatePatch makes structural links (and, with gendiags, one diagonal per cell), never our shear/bend sets; the
   // TreeCut soft body's balanced-cut adjacency is the 4-neighbourhood, so it is structural-only too (the paper's
@@ -242,6 +239,9 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   // The fidelity pass compares TC-SB (and the ablations at TC-SB's targets) with the reference: without TC-SB there
   // is nothing to measure, and silently measuring nothing would look like a pass.
   if (s.fidelity.enabled && !has_tcsb) r.fail("fidelity.enabled", "requires methods to contain \"tcsb\"");
+  // The fidelity pass runs once per net with the suite's settings, after the timed cases; per configuration it is
+  // not built (yet), and running it with the base settings beside cases of other settings would mislead.
+  if (s.fidelity.enabled && !s.axes.empty()) r.fail("fidelity.enabled", "cannot be combined with axes");
   if (adjust) adjust(s);  // before the memory check: it must see the suite that will run
   if (!s.fidelity.calibration_path.empty()) {
     if (!has_tcsb) r.fail("fidelity.calibration", "requires methods to contain \"tcsb\"");

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -29,6 +30,8 @@ enum class Method {
   /// node count TC-SB simulates costs, measured in the same interleaved repetitions.
   kPlainEqual,
 };
+/// Every method, in declaration order.
+inline constexpr Method kAllMethods[] = {Method::kPlain, Method::kBulletPatch, Method::kTcsb, Method::kPlainEqual};
 
 /// Fidelity measurement settings (reference run in lockstep, error metrics).
 struct FidelitySettings {
@@ -44,6 +47,19 @@ struct FidelitySettings {
 /// A validated suite.
 /// The most repetitions a suite (or --repetitions) may ask for.
 inline constexpr int kMaxRepetitions = 1000;
+
+/// One axis of a suite: a setting (its path in the suite file, "solver.piterations") and the values it takes, each
+/// checked by that setting's own parser (suite/suite_axes.h).
+struct Axis {
+  std::string path;
+  std::vector<nlohmann::json> values;  ///< in file order, no two equal
+};
+
+/// One point of the cross product of a suite's axes: which value each axis takes.
+struct Configuration {
+  std::vector<std::size_t> value_index;  ///< per axis (Suite::axes order), an index into its values
+  std::string label;                     ///< "piterations=8,blend_steps=4": short settings names, axis order
+};
 
 struct Suite {
   std::string name;
@@ -64,17 +80,35 @@ struct Suite {
   TcSettings tcsb;
   FeedbackSettings feedback;
   FidelitySettings fidelity;
-  /// The nets this process runs, indexed like `nets` (a shard's, suite/shard_plan.h); empty: all. Not a setting of
-  /// the suite (results never record it): the runner runs and the memory check counts only these nets' cases.
-  std::vector<bool> run_nets;
+  /// The suite's axes (empty: none); the settings above are then the base every configuration starts from.
+  std::vector<Axis> axes;
+  /// The cross product of the axes, first axis slowest (empty without axes: the suite is its one configuration).
+  std::vector<Configuration> configurations;
+  /// The units this process runs, indexed configuration x nets.size() + net (a shard's, suite/shard_plan.h); empty:
+  /// all. Not a setting of the suite (results never record it): the runner runs and the memory check counts only
+  /// these units' cases. Without axes a unit is a net.
+  std::vector<bool> run_units;
   /// The calibration fidelity.calibration_path names, read and checked against this suite (calibration_mismatch)
   /// when the suite was parsed; nullopt without one.
   std::optional<Calibration> calibration;
 };
 
-/// Whether `suite` runs net `net` in this process (Suite::run_nets).
+/// How many configurations the suite runs: one without axes.
+inline std::size_t configuration_count(const Suite& suite) {
+  return suite.configurations.empty() ? 1 : suite.configurations.size();
+}
+
+/// Whether `suite` runs net `net` of configuration `configuration` in this process (Suite::run_units).
+inline bool runs_unit(const Suite& suite, std::size_t configuration, std::size_t net) {
+  const std::size_t unit = configuration * suite.nets.size() + net;
+  return suite.run_units.empty() || (unit < suite.run_units.size() && suite.run_units[unit]);
+}
+
+/// Whether `suite` runs net `net` in any configuration in this process (then the net is built).
 inline bool runs_net(const Suite& suite, std::size_t net) {
-  return suite.run_nets.empty() || (net < suite.run_nets.size() && suite.run_nets[net]);
+  for (std::size_t c = 0; c < configuration_count(suite); ++c)
+    if (runs_unit(suite, c, net)) return true;
+  return false;
 }
 
 /// Changes the command line makes to a parsed suite (--repetitions, --compression, ...); throws to reject them.

@@ -51,6 +51,11 @@ struct Interval {
   }
 };
 
+/// The ranges the suite's fields share.
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+inline constexpr Interval kPositive{0.0, true}, kNonNegative{0.0, false}, kAnyFinite{-kInfinity, true};
+inline constexpr Interval kFraction{0.0, true, 1.0, false};  // (0, 1]
+
 /// Typed access to a JSON document that throws InputError naming the file and the field.
 class Reader {
  public:

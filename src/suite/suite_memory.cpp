@@ -8,6 +8,7 @@
 #include "net/net.h"
 #include "suite/case_plan.h"
 #include "suite/fidelity_plan.h"
+#include "suite/suite_axes.h"
 
 namespace tcsb {
 namespace {
@@ -65,10 +66,14 @@ double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
 }  // namespace
 
 double recorder_peak_bytes(const Suite& suite) {
-  double cases = 0;
-  for (const CaseKey& key : expand_cases(suite)) cases += runs_net(suite, key.net) ? 1 : 0;
-  const double runs = cases * suite.repetitions;
-  return runs * (static_cast<double>(suite.steps) + suite.warmup_steps) * kSampleBytes;
+  const std::vector<Suite> configurations = configuration_suites(suite);  // the axes may vary the steps
+  double samples = 0;
+  for (const CaseKey& key : expand_cases(suite)) {
+    if (!runs_unit(suite, key.configuration, key.net)) continue;
+    const Suite& settings = configurations[key.configuration];
+    samples += static_cast<double>(settings.steps) + settings.warmup_steps;
+  }
+  return samples * suite.repetitions * kSampleBytes;
 }
 
 namespace {

@@ -14,7 +14,7 @@
 namespace tcsb {
 
 /// Bytes a run of this suite needs at most for its largest net (all methods' bodies alive at once), an estimate
-/// used to reject suites that would not fit. Only the nets the suite runs in this process count (Suite::run_nets),
+/// used to reject suites that would not fit. Only the nets the suite runs in this process count (Suite::run_units),
 /// here and below: a shard of small nets fits where the whole suite would not.
 std::uint64_t estimate_peak_bytes(const Suite& suite);
 

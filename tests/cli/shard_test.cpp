@@ -12,7 +12,8 @@ namespace {
 using json = nlohmann::json;
 
 /// Three small nets, plain and TC-SB: quick shards with a real split (the nets land in different shards).
-std::string three_net_suite(const std::string& name, bool fidelity = false) {
+std::string three_net_suite(const std::string& name, bool fidelity = false,
+                            const std::string& methods = R"("plain", "tcsb")") {
   std::string nets;
   for (const int w : {9, 11, 13}) {
     nets += std::string(nets.empty() ? "" : ", ") + R"({"name": "n)" + std::to_string(w) + R"(", "width": )" +
@@ -20,7 +21,7 @@ std::string three_net_suite(const std::string& name, bool fidelity = false) {
             R"(, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0}, "pinned": "corners"})";
   }
   return R"({"name": ")" + name + R"(", "description": "three small nets for the shard tests", "nets": [)" + nets +
-         R"(], "methods": ["plain", "tcsb"], "compression": [1.0, 0.5], "dt": 0.016666666666666666, "gravity": 9.81,
+         R"(], "methods": [)" + methods + R"(], "compression": [1.0, 0.5], "dt": 0.016666666666666666, "gravity": 9.81,
   "steps": 16, "warmup_steps": 4, "repetitions": 2, "seed": 3, "solver": {"piterations": 2},
   "fidelity": {"enabled": )" +
          (fidelity ? "true" : "false") + R"(, "rms_threshold_pct": 1.0, "pareto_targets": [], "ablations": false}})";
@@ -174,6 +175,14 @@ TEST_F(Shards, AFidelityPassIsShardedAndMergedToo) {
   const json whole = load("whole.json");
   ASSERT_TRUE(whole.contains("fidelity"));
   expect_same_deterministic_fields(whole, load("merged_2.json"));
+}
+
+TEST_F(Shards, ShardsOfASuiteWithEveryMethodMerge) {
+  // plain_equal was once missing from merge's list of methods, so shards of the scaling suite could not merge.
+  write_file(dir_ / "all.json", three_net_suite("all", false, R"("plain", "bullet_patch", "tcsb", "plain_equal")"));
+  ASSERT_EQ(tcsb("run all.json --quiet --out whole.json").exit_code, 0);
+  run_and_merge("all.json", 2, "");
+  expect_same_deterministic_fields(load("whole.json"), load("merged_2.json"));
 }
 
 TEST_F(Shards, BadShardIndicesAreRefusedNamingTheFlag) {

@@ -40,7 +40,7 @@ TEST(CoarseJump, IsTheJumpTheReconstructionMakesWhenTheCoarsenBegins) {
     CutNeighbours neighbours;
     take_snapshot(body, cut_view(body), true, 0, snapshot);
     cut_neighbours(snapshot.cut, neighbours);
-    for (const auto [gx, gy] : {std::pair{1, 1}, std::pair{2, 1}, std::pair{0, 0}}) {  // interior, and a pinned corner
+    for (const auto& [gx, gy] : {std::pair{1, 1}, std::pair{2, 1}, std::pair{0, 0}}) {  // interior, and a pinned corner
       const TreeId parent = body.tree().at(level, gx, gy);
       ASSERT_TRUE(body.can_coarsen(parent).ok) << "level " << level << " (" << gx << ", " << gy << ")";
       const double estimate = coarse_jump(snapshot, neighbours, parent);

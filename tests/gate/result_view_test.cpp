@@ -46,6 +46,22 @@ TEST(ResultView, PairsRatiosWithThePlainCaseOfTheSameNet) {
   for (const double q : ratios) EXPECT_DOUBLE_EQ(q, 0.5);
 }
 
+TEST(ResultView, WithAxesRatiosPairWithinAConfiguration) {
+  // The same nets in two configurations: cases 0 and 1 of one, 2 and 3 of another, all on one net.
+  ojson doc = result_doc();
+  for (std::size_t i = 0; i < 4; ++i) {
+    doc["cases"][i]["net"] = "n9";
+    doc["cases"][i]["configuration"] = {{"label", i < 2 ? "blend_steps=2" : "blend_steps=4"},
+                                        {"axes", {{"tcsb.blend_steps", i < 2 ? 2 : 4}}}};
+  }
+  doc["cases"][2]["method"] = "tcsb";
+  doc["cases"][3]["method"] = "plain";
+  const ResultView r = read_result(doc, "r.json");
+  EXPECT_EQ(r.cases[2].configuration, "blend_steps=4");
+  EXPECT_EQ(plain_case_of(r, 1), 0u);
+  EXPECT_EQ(plain_case_of(r, 2), 3u) << "the plain case of its own configuration, not the first on the net";
+}
+
 TEST(ResultView, DivergedRepetitionsAreLeftOutOfSamples) {
   ojson doc = result_doc();
   doc["cases"][0]["repetitions"][2]["status"] = "diverged";

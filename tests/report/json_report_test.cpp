@@ -51,6 +51,57 @@ TEST(NativeJson, TopLevelKeysInContractOrder) {
   EXPECT_EQ(keys(doc["scaling"]), (std::vector<std::string>{"step_ms_vs_nodes", "op_ms_vs_nodes"}));
 }
 
+/// small_run() with an axis over the seed: configuration 1 holds the same cases, half as fast.
+RunResult run_with_axes() {
+  RunResult r = small_run();
+  r.suite.axes = {{"seed", {7, 8}}};
+  r.suite.configurations = {{{0}, "seed=7"}, {{1}, "seed=8"}};
+  const std::size_t per_configuration = r.cases.size();
+  for (std::size_t i = 0; i < per_configuration; ++i) {
+    CaseResult c = r.cases[i];
+    c.key.configuration = 1;
+    for (RepetitionResult& rep : c.repetitions) rep.mean_step_ms *= (c.key.method == Method::kPlain ? 1.0 : 2.0);
+    r.cases.push_back(c);
+  }
+  for (CaseResult& c : r.cases) c.label = case_label(r.suite, c.key);
+  return r;
+}
+
+TEST(NativeJson, WithAxesTablesArePerConfigurationAndCasesCarryTheirs) {
+  const ojson doc = native_json(run_with_axes());
+  EXPECT_EQ(keys(doc), (std::vector<std::string>{"schema_version", "tool", "context", "suite", "cases", "table1",
+                                                 "table2", "scaling", "configurations", "status", "wall_s"}));
+  EXPECT_EQ(doc["suite"]["axes"], (ojson{{"seed", {7, 8}}}));
+  EXPECT_TRUE(doc["table1"].empty());
+  EXPECT_TRUE(doc["table2"].empty());
+  ASSERT_EQ(doc["cases"].size(), 8u);
+  EXPECT_EQ(doc["cases"][5]["label"], "n0/tcsb@0.3[seed=8]");
+  EXPECT_EQ(doc["cases"][5]["configuration"], (ojson{{"label", "seed=8"}, {"axes", {{"seed", 8}}}}));
+  // Ratios pair within a configuration: the TC-SB case of seed=8 against the plain case of seed=8.
+  EXPECT_DOUBLE_EQ(doc["cases"][1]["ratio_vs_plain"].get<double>(), 0.5);  // median of 0.6 / 1.0 and 0.48 / 1.2
+  EXPECT_DOUBLE_EQ(doc["cases"][5]["ratio_vs_plain"].get<double>(), 1.0);
+  ASSERT_EQ(doc["configurations"].size(), 2u);
+  const ojson& second = doc["configurations"][1];
+  EXPECT_EQ(keys(second), (std::vector<std::string>{"label", "axes", "cases", "table1", "table2", "scaling"}));
+  EXPECT_EQ(second["label"], "seed=8");
+  EXPECT_EQ(second["axes"], (ojson{{"seed", 8}}));
+  EXPECT_EQ(second["cases"], 4);
+  // Each configuration's Table 2 averages its own two nets only.
+  ASSERT_EQ(second["table2"].size(), 2u);
+  EXPECT_EQ(second["table2"][1]["nets"], 2);
+  EXPECT_EQ(doc["configurations"][0]["table2"][1]["nets"], 2);
+  // The configuration's tables are those of its cases run alone.
+  RunResult alone = small_run();
+  EXPECT_EQ(doc["configurations"][0]["table2"], native_json(alone)["table2"]);
+}
+
+TEST(NativeJson, WithoutAxesNoConfigurationKeys) {
+  const ojson doc = native_json(small_run());
+  EXPECT_FALSE(doc.contains("configurations"));
+  EXPECT_FALSE(doc["suite"].contains("axes"));
+  for (const ojson& c : doc["cases"]) EXPECT_FALSE(c.contains("configuration"));
+}
+
 TEST(NativeJson, ContextCarriesTheSuiteHashAndSeed) {
   const ojson context = native_json(small_run())["context"];
   for (const char* key : {"date_utc", "host", "cpu_model", "compiler", "bullet_version", "git_commit"}) {

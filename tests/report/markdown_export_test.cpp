@@ -255,3 +255,30 @@ TEST(MarkdownExport, FidelitySummary) {
 
 }  // namespace
 }  // namespace tcsb
+
+namespace tcsb {
+namespace {
+
+TEST(MarkdownExport, ARunWithAxesHasEachConfigurationsTables) {
+  RunResult r = synthetic_run();
+  r.suite.axes = {{"solver.piterations", {2, 8}}};
+  r.suite.configurations = {{{0}, "piterations=2"}, {{1}, "piterations=8"}};
+  for (std::size_t i = 0, n = r.cases.size(); i < n; ++i) {
+    r.cases.push_back(r.cases[i]);
+    r.cases.back().key.configuration = 1;
+  }
+  for (CaseResult& c : r.cases) c.label = case_label(r.suite, c.key);
+  const std::string md = markdown_report(native_json(r));
+  const std::size_t first = md.find("### Configuration piterations=2");
+  const std::size_t second = md.find("### Configuration piterations=8");
+  ASSERT_NE(first, std::string::npos) << md;
+  ASSERT_NE(second, std::string::npos) << md;
+  // One Table 2 per configuration, none run-wide (the run-wide tables are empty with axes).
+  EXPECT_LT(first, md.find("### Table 2"));
+  EXPECT_NE(md.find("### Table 2", first), std::string::npos);
+  EXPECT_NE(md.find("### Table 2", second), std::string::npos);
+  EXPECT_EQ(md.find("### Table 2", md.find("### Table 2", first) + 1), md.find("### Table 2", second));
+}
+
+}  // namespace
+}  // namespace tcsb

@@ -66,6 +66,24 @@ TEST(ResultSchema, DivergedAndEmptyRunsConform) {
   EXPECT_EQ(problems(native_json(r)), Lines{});
 }
 
+TEST(ResultSchema, ARunWithAxesConforms) {
+  RunResult r = run_with_cases();
+  r.suite.axes = {{"tcsb.placement", {"affine", "rigid"}}};
+  r.suite.configurations = {{{0}, "placement=affine"}, {{1}, "placement=rigid"}};
+  for (std::size_t i = 0, n = r.cases.size(); i < n; ++i) {
+    r.cases.push_back(r.cases[i]);
+    r.cases.back().key.configuration = 1;
+  }
+  for (CaseResult& c : r.cases) c.label = case_label(r.suite, c.key);
+  ojson doc = native_json(r);
+  ASSERT_TRUE(doc.contains("configurations"));
+  EXPECT_EQ(problems(doc), Lines{});
+  doc["cases"][0]["configuration"].erase("label");
+  doc["suite"]["axes"]["tcsb.placement"] = ojson::array();
+  doc["configurations"][1]["extra"] = 1;
+  EXPECT_EQ(problems(doc).size(), 3u) << ::testing::PrintToString(problems(doc));
+}
+
 TEST(ResultSchema, OptionalSectionsOfOtherCommandsConform) {
   ojson doc = native_json(run_with_cases());
   doc["reproduction"] = {{"pass", true}};

@@ -110,7 +110,7 @@ TEST(Runner, ASelectionOfNetsRunsOnlyTheirCasesAndEachAsInTheWholeRun) {
   const Suite suite = two_nets();
   const RunResult whole = run_suite(suite, Context{});
   Suite second_net_only = suite;
-  second_net_only.run_nets = {false, true};
+  second_net_only.run_units = {false, true};
   const RunResult part = run_suite(second_net_only, Context{});
   ASSERT_EQ(part.cases.size(), 3u);  // net b: plain, tcsb@1.0, tcsb@0.5
   for (std::size_t i = 0; i < part.cases.size(); ++i) {
@@ -127,7 +127,7 @@ TEST(Runner, ASelectionOfNetsRunsOnlyTheirCasesAndEachAsInTheWholeRun) {
     EXPECT_EQ(c.ops.samples.size(), w.ops.samples.size()) << c.label;
   }
   Suite none = suite;
-  none.run_nets = {false, false};
+  none.run_units = {false, false};
   EXPECT_TRUE(run_suite(none, Context{}).cases.empty());  // an empty shard: nothing runs, nothing fails
 }
 

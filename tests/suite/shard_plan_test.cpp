@@ -42,7 +42,7 @@ TEST(ShardPlan, EveryNetIsInExactlyOneShard) {
   for (int n = 1; n <= 10; ++n) {
     std::vector<int> owners(s.nets.size(), 0);
     for (int k = 1; k <= n; ++k) {
-      const std::vector<bool> mine = shard_nets(s, {k, n});
+      const std::vector<bool> mine = shard_units(s, {k, n});
       ASSERT_EQ(mine.size(), s.nets.size());
       for (std::size_t i = 0; i < mine.size(); ++i) owners[i] += mine[i];
     }
@@ -52,16 +52,16 @@ TEST(ShardPlan, EveryNetIsInExactlyOneShard) {
 
 TEST(ShardPlan, OneShardRunsEverything) {
   const Suite s = suite_of_widths({9, 33, 17});
-  EXPECT_EQ(shard_nets(s, {1, 1}), std::vector<bool>(3, true));
+  EXPECT_EQ(shard_units(s, {1, 1}), std::vector<bool>(3, true));
 }
 
 TEST(ShardPlan, MoreShardsThanNetsLeavesTheLastOnesEmpty) {
   const Suite s = suite_of_widths({9, 33, 17});
-  EXPECT_EQ(shard_nets(s, {1, 5}), (std::vector<bool>{false, true, false}));  // the largest first
-  EXPECT_EQ(shard_nets(s, {2, 5}), (std::vector<bool>{false, false, true}));
-  EXPECT_EQ(shard_nets(s, {3, 5}), (std::vector<bool>{true, false, false}));
-  EXPECT_EQ(shard_nets(s, {4, 5}), std::vector<bool>(3, false));
-  EXPECT_EQ(shard_nets(s, {5, 5}), std::vector<bool>(3, false));
+  EXPECT_EQ(shard_units(s, {1, 5}), (std::vector<bool>{false, true, false}));  // the largest first
+  EXPECT_EQ(shard_units(s, {2, 5}), (std::vector<bool>{false, false, true}));
+  EXPECT_EQ(shard_units(s, {3, 5}), (std::vector<bool>{true, false, false}));
+  EXPECT_EQ(shard_units(s, {4, 5}), std::vector<bool>(3, false));
+  EXPECT_EQ(shard_units(s, {5, 5}), std::vector<bool>(3, false));
 }
 
 TEST(ShardPlan, BalancesByEstimatedCostLargestFirst) {
@@ -76,8 +76,8 @@ TEST(ShardPlan, BalancesByEstimatedCostLargestFirst) {
   s.nets[4].width = 1;  // 10
   s.nets[4].height = 10;
   // 100 -> 1; 60 -> 2; 50 -> 2 (60 < 100); 40 -> 1 (100 < 110); 10 -> 2 (110 < 140): 140 and 120.
-  EXPECT_EQ(shard_nets(s, {1, 2}), (std::vector<bool>{true, false, false, true, false}));
-  EXPECT_EQ(shard_nets(s, {2, 2}), (std::vector<bool>{false, true, true, false, true}));
+  EXPECT_EQ(shard_units(s, {1, 2}), (std::vector<bool>{true, false, false, true, false}));
+  EXPECT_EQ(shard_units(s, {2, 2}), (std::vector<bool>{false, true, true, false, true}));
 }
 
 TEST(ShardPlan, TcsbCasesWeighByTheirBudget) {
@@ -86,15 +86,35 @@ TEST(ShardPlan, TcsbCasesWeighByTheirBudget) {
   EXPECT_DOUBLE_EQ(net_cost_estimate(s, 0), 100.0 * (1 + 1.0 + 0.3));
 }
 
+TEST(ShardPlan, WithAxesTheUnitIsAConfigurationsNetWeightedByItsSteps) {
+  Suite s = suite_of_widths({10, 10});
+  s.steps = 10;
+  s.warmup_steps = 0;
+  s.axes = {{"steps", {10, 30}}};
+  s.configurations = {{{0}, "steps=10"}, {{1}, "steps=30"}};
+  // Units (configuration x 2 + net) cost 230, 230, 690, 690: the two of 30 steps first, one to each shard.
+  EXPECT_EQ(shard_units(s, {1, 2}), (std::vector<bool>{true, false, true, false}));
+  EXPECT_EQ(shard_units(s, {2, 2}), (std::vector<bool>{false, true, false, true}));
+  for (int n = 1; n <= 5; ++n) {
+    std::vector<int> owners(4, 0);
+    for (int k = 1; k <= n; ++k) {
+      const std::vector<bool> mine = shard_units(s, {k, n});
+      ASSERT_EQ(mine.size(), 4u);
+      for (std::size_t u = 0; u < 4; ++u) owners[u] += mine[u] ? 1 : 0;
+    }
+    EXPECT_EQ(owners, std::vector<int>(4, 1)) << n << " shards";
+  }
+}
+
 TEST(ShardPlan, TheScalingSuiteInFourShardsGivesTheLargestNetAShardOfItsOwn) {
   const Suite s = parse_suite(kSourceDir / "suites" / "scaling.json");
   ASSERT_EQ(s.nets.size(), 6u);
   const std::size_t largest = 5;  // n1025
   ASSERT_EQ(s.nets[largest].name, "n1025");
-  EXPECT_EQ(shard_nets(s, {1, 4}), (std::vector<bool>{false, false, false, false, false, true}));
-  EXPECT_EQ(shard_nets(s, {2, 4}), (std::vector<bool>{false, false, false, false, true, false}));
-  EXPECT_EQ(shard_nets(s, {3, 4}), (std::vector<bool>{false, false, false, true, false, false}));
-  EXPECT_EQ(shard_nets(s, {4, 4}), (std::vector<bool>{true, true, true, false, false, false}));
+  EXPECT_EQ(shard_units(s, {1, 4}), (std::vector<bool>{false, false, false, false, false, true}));
+  EXPECT_EQ(shard_units(s, {2, 4}), (std::vector<bool>{false, false, false, false, true, false}));
+  EXPECT_EQ(shard_units(s, {3, 4}), (std::vector<bool>{false, false, false, true, false, false}));
+  EXPECT_EQ(shard_units(s, {4, 4}), (std::vector<bool>{true, true, true, false, false, false}));
 }
 
 }  // namespace

@@ -49,7 +49,7 @@ TEST(SuiteMemory, ShortfallNamesTheLargestNet) {
   EXPECT_FALSE(shortfall->recorder);
 }
 
-// A shard (Suite::run_nets) needs only its own nets' memory: a shard of small nets fits where the whole suite,
+// A shard (Suite::run_units) needs only its own nets' memory: a shard of small nets fits where the whole suite,
 // with a net far too large, would not.
 TEST(SuiteMemory, OnlyTheNetsRunCount) {
   Suite s;
@@ -65,15 +65,15 @@ TEST(SuiteMemory, OnlyTheNetsRunCount) {
   const double whole_recorder = recorder_peak_bytes(s);
   const std::vector<MemoryHeadroom> plenty_for_small{{"MemAvailable", 1ull << 32}};
   ASSERT_TRUE(memory_shortfall(s, plenty_for_small));
-  s.run_nets = {true, false, true};
+  s.run_units = {true, false, true};
   EXPECT_LT(estimate_peak_bytes(s), whole / 1000);
   EXPECT_DOUBLE_EQ(recorder_peak_bytes(s), whole_recorder * 2 / 3);  // two of the three nets' cases
   EXPECT_FALSE(memory_shortfall(s, plenty_for_small));
-  s.run_nets = {false, true, false};
+  s.run_units = {false, true, false};
   const std::optional<MemoryShortfall> huge_alone = memory_shortfall(s, plenty_for_small);
   ASSERT_TRUE(huge_alone);
   EXPECT_EQ(huge_alone->net, 1u);
-  s.run_nets = {false, false, false};  // an empty shard runs nothing: nothing to refuse
+  s.run_units = {false, false, false};  // an empty shard runs nothing: nothing to refuse
   EXPECT_FALSE(memory_shortfall(s, plenty_for_small));
 }
 
