@@ -258,7 +258,7 @@ void TcSoftBody::advance_blends() {
     ramp(op.parent);
     for (int c = 0; c < pn.child_count; ++c) ramp(pn.children[static_cast<std::size_t>(c)]);
   }
-  if (settings_.restore_order &&
+  if (settings_.restore_order && m_nodes.size() >= settings_.restore_order_min_nodes &&
       displaced_ > TcSettings::kReorderFraction * static_cast<double>(m_nodes.size() + m_links.size()))
     restore_order();
 }

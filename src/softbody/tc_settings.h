@@ -24,6 +24,11 @@ struct TcSettings {
   /// operations change the cut. Off: the arrays stay in the order the operations leave them (for measuring what the
   /// order costs; docs/methodology.md, "The tax of adaptivity").
   bool restore_order = true;
+  /// ... but only while the body simulates at least this many nodes. Below, its arrays fit a core's L2 (8 192
+  /// Bullet nodes are about 2 MiB), where order saves little and the pass measured a net cost on the paper's nets;
+  /// from 257^2 on it saved 29-45 % of a step (docs/methodology.md, "Bullet's arrays in a plain body's order"). A
+  /// node count, not a cache size read from the machine, so that a body's behaviour is the same on every machine.
+  int restore_order_min_nodes = 8192;
   /// restore_order runs once operations have displaced this fraction of the nodes and links simulated: the arrays
   /// stay at least 3/4 in order, and the O(N + L) pass runs once per (N + L)/4 displacements, amortised O(1) each
   /// (about 4 x 50 instructions). 1/8 missed the L1 no less often in Bullet's step and cost twice the passes; 1/2

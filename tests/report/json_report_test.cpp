@@ -122,7 +122,8 @@ TEST(NativeJson, SuiteBlock) {
                                                    "methods", "compression"}));
   EXPECT_EQ(keys(suite["solver"]),
             (std::vector<std::string>{"piterations", "viterations", "diterations", "damping", "stiffness"}));
-  EXPECT_EQ(keys(suite["tcsb"]), (std::vector<std::string>{"blend_steps", "placement", "restore_order"}));
+  EXPECT_EQ(keys(suite["tcsb"]),
+            (std::vector<std::string>{"blend_steps", "placement", "restore_order", "restore_order_min_nodes"}));
   EXPECT_EQ(suite["feedback"]["policy"], "saliency");
   EXPECT_EQ(suite["methods"], (ojson{"plain", "tcsb"}));
 }

@@ -144,10 +144,17 @@ TEST(TcSoftBodyOrder, BackOnTheFinestCutTheArraysAreAPlainBodysOrder) {
   }
 }
 
+/// Restores on any body, however small (the default waits for TcSettings::restore_order_min_nodes).
+TcSettings always_ordered() {
+  TcSettings s;
+  s.restore_order_min_nodes = 0;
+  return s;
+}
+
 TEST(TcSoftBodyOrder, OperationsRestoreTheOrderOncePastTheFraction) {
   const auto net = testing::square_net(33);
   SoftBodyWorld world({});
-  TcSoftBody on(world, net, testing::test_solver(), {});
+  TcSoftBody on(world, net, testing::test_solver(), always_ordered());
   TcSoftBody off(world, net, testing::test_solver(), unordered());
   RandomPolicy policy_on(3), policy_off(3);
   for (int s = 0; s < 200; ++s) {
@@ -162,6 +169,24 @@ TEST(TcSoftBodyOrder, OperationsRestoreTheOrderOncePastTheFraction) {
   EXPECT_EQ(off.order_restorations(), 0);
   EXPECT_GT(off.displaced(), TcSettings::kReorderFraction * (off.node_count() + off.link_count()));
   EXPECT_TRUE(on.validate().ok()) << on.validate().summary();
+}
+
+TEST(TcSoftBodyOrder, BodiesBelowTheMinimumNodeCountAreLeftInTheOperationsOrder) {
+  const auto net = testing::square_net(33);
+  SoftBodyWorld world({});
+  TcSettings settings;
+  // Above anything this net can simulate (blends hold old and new nodes at once, so more than its leaves).
+  settings.restore_order_min_nodes = static_cast<int>(net->lod().size()) + 1;
+  TcSoftBody below(world, net, testing::test_solver(), settings);
+  settings.restore_order_min_nodes = 33 * 33 / 2;  // restores while it simulates at least half the leaves
+  TcSoftBody above(world, net, testing::test_solver(), settings);
+  RandomPolicy policy_below(3), policy_above(3);
+  operate(below, policy_below, 800, 40);
+  operate(above, policy_above, 800, 40);
+  EXPECT_EQ(below.order_restorations(), 0);
+  EXPECT_GT(below.displaced(), TcSettings::kReorderFraction * (below.node_count() + below.link_count()));
+  EXPECT_GT(above.order_restorations(), 0);
+  EXPECT_TRUE(below.validate().ok()) << below.validate().summary();
 }
 
 }  // namespace
