@@ -14,23 +14,26 @@ namespace tcsb {
 
 namespace {
 
-/// Moves element order[i] to position i in every array `move(to, from)` and `stash`/`unstash` describe, following
-/// the permutation's cycles: one copy per element and one temporary per cycle, no second array. Marks `order` as it
-/// goes (its entries are negative afterwards).
-template <class Move, class Stash, class Unstash>
-void permute_in_place(std::vector<std::int32_t>& order, Move move, Stash stash, Unstash unstash) {
+/// Moves element order[i] to position i in both arrays `a` and `b` (kept parallel), following the permutation's
+/// cycles: one copy per element and one temporary per cycle, no second array. Marks `order` as it goes (its entries
+/// are negative afterwards).
+template <class A, class B>
+void permute_in_place(std::vector<std::int32_t>& order, A& a, B& b) {
   const auto n = static_cast<std::int32_t>(order.size());
   for (std::int32_t start = 0; start < n; ++start) {
     if (order[static_cast<std::size_t>(start)] < 0 || order[static_cast<std::size_t>(start)] == start) continue;
-    stash(start);
+    auto a_stash = a[start];
+    auto b_stash = b[static_cast<std::size_t>(start)];
     for (std::int32_t to = start;;) {
       const std::int32_t from = order[static_cast<std::size_t>(to)];
       order[static_cast<std::size_t>(to)] = -1 - from;
       if (from == start) {
-        unstash(to);
+        a[to] = a_stash;
+        b[static_cast<std::size_t>(to)] = b_stash;
         break;
       }
-      move(to, from);
+      a[to] = a[from];
+      b[static_cast<std::size_t>(to)] = b[static_cast<std::size_t>(from)];
       to = from;
     }
   }
@@ -62,22 +65,7 @@ void TcSoftBody::restore_order() {
   Node* const base = &m_nodes[0];
   for (int li = 0; li < m_links.size(); ++li)
     for (Node*& end : m_links[li].m_n) end = base + position_[static_cast<std::size_t>(end - base)];
-  Node node_stash;
-  TreeId id_stash = kNoTreeNode;
-  permute_in_place(
-      order_,
-      [&](std::int32_t to, std::int32_t from) {
-        m_nodes[to] = m_nodes[from];
-        tree_of_[static_cast<std::size_t>(to)] = tree_of_[static_cast<std::size_t>(from)];
-      },
-      [&](std::int32_t at) {
-        node_stash = m_nodes[at];
-        id_stash = tree_of_[static_cast<std::size_t>(at)];
-      },
-      [&](std::int32_t at) {
-        m_nodes[at] = node_stash;
-        tree_of_[static_cast<std::size_t>(at)] = id_stash;
-      });
+  permute_in_place(order_, m_nodes, tree_of_);
   for (int i = 0; i < n; ++i) {
     m_nodes[i].m_leaf->data = &m_nodes[i];
     set_bullet_index(tree_of_[static_cast<std::size_t>(i)], i);
@@ -100,22 +88,7 @@ void TcSoftBody::restore_order() {
     for (std::size_t k = 0; k < count; ++k) order_.push_back(later[k].second);
   }
   invert(order_, position_);
-  Link link_stash;
-  CutLink meta_stash;
-  permute_in_place(
-      order_,
-      [&](std::int32_t to, std::int32_t from) {
-        m_links[to] = m_links[from];
-        link_meta_[static_cast<std::size_t>(to)] = link_meta_[static_cast<std::size_t>(from)];
-      },
-      [&](std::int32_t at) {
-        link_stash = m_links[at];
-        meta_stash = link_meta_[static_cast<std::size_t>(at)];
-      },
-      [&](std::int32_t at) {
-        m_links[at] = link_stash;
-        link_meta_[static_cast<std::size_t>(at)] = meta_stash;
-      });
+  permute_in_place(order_, m_links, link_meta_);
   // Incidence lists name links by index: each entry follows its link.
   for (const TreeId id : tree_of_) incidence_[static_cast<std::size_t>(id)].renumber(position_);
   displaced_ = 0;
