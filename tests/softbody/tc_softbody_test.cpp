@@ -184,6 +184,7 @@ TEST(TcSoftBodyProperty, HundredThousandRandomOperationsKeepEveryInvariant) {
   SoftBodyWorld world({});
   TcSettings settings;
   settings.blend_steps = 3;
+  settings.restore_order_min_nodes = 0;  // restore_order() between the operations too, whatever the body's size
   TcSoftBody tc(world, net, testing::test_solver(), settings);
   RandomPolicy policy(20261122);
   std::mt19937 rng(5);
@@ -212,6 +213,7 @@ TEST(TcSoftBodyProperty, HundredThousandRandomOperationsKeepEveryInvariant) {
     ASSERT_TRUE(v.ok()) << "after step " << step << ": " << v.summary();
   }
   EXPECT_GE(operations, 100000);
+  EXPECT_GT(tc.order_restorations(), 0);
   EXPECT_EQ(tc.link_reallocations(), 0);
   EXPECT_EQ(&tc.m_nodes[0], nodes);
   EXPECT_EQ(&tc.m_links[0], links);
