@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 
+#include "softbody/affine_fit.h"
+
 namespace tcsb {
 
 namespace {
@@ -17,17 +19,6 @@ Eigen::Vector3d position(const CutSnapshot& snapshot, std::int32_t index) {
 }
 
 Eigen::Vector2d plane(const Eigen::Vector3d& rest_offset) { return {rest_offset.x(), rest_offset.z()}; }
-
-/// Least-squares F minimising sum |dx - F dr|^2 from the sums rr = sum dr dr^T and xr = sum dx dr^T; the rigid
-/// offset when the points lie on one line. The same rule as TcSoftBody::local_affine_fit, so the estimate follows
-/// the reconstruction it predicts.
-Fit solve_fit(const Eigen::Matrix2d& rr, const Fit& xr) {
-  Fit f;
-  f << 1, 0, 0, 0, 0, 1;
-  const double scale = rr.trace();
-  if (scale > 0 && rr.determinant() > 1e-6 * scale * scale) f = xr * rr.inverse();
-  return f;
-}
 
 /// Accumulates one point (offset from the fit's origin) into the fit's sums.
 void add_point(const Eigen::Vector3d& dx, const Eigen::Vector2d& dr, Eigen::Matrix2d& rr, Fit& xr) {
@@ -105,7 +96,7 @@ double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours,
       add_point(position(snapshot, n) - xp, plane(rest_of_index(n) - rp), rr, xr);
     }
   }
-  const Fit fp = solve_fit(rr, xr);
+  const Fit fp = solve_affine_fit(rr, xr);
 
   // Before against after at the corners of every child's block.
   const int width = tree.level_width(0);
@@ -127,7 +118,7 @@ double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours,
       const std::int32_t n = neighbours.other[static_cast<std::size_t>(e)];
       add_point(position(snapshot, n) - xc, plane(rest_of_index(n) - rc), crr, cxr);
     }
-    const Fit fc = solve_fit(crr, cxr);
+    const Fit fc = solve_affine_fit(crr, cxr);
     for (const int gy : {cn.leaf_y0, cn.leaf_y1 - 1})
       for (const int gx : {cn.leaf_x0, cn.leaf_x1 - 1}) {
         const Eigen::Vector3d rl = tree.rest(static_cast<TreeId>(gy * width + gx));

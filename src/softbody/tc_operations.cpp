@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "net/cut_adjacency.h"
+#include "softbody/affine_fit.h"
 #include "softbody/tc_softbody.h"
 #include "softbody/vector_conversion.h"
 
@@ -75,8 +76,6 @@ Eigen::Matrix<double, 3, 2> TcSoftBody::deformation(TreeId id) const {
 Eigen::Matrix<double, 3, 2> TcSoftBody::local_affine_fit(TreeId id) const {
   // Least-squares affine map F (3x2) from rest offsets in the net's plane (x, z) to current offsets, fitted over
   // the node's neighbours: minimises sum |(x_n - x_p) - F (r_n - r_p)|^2.
-  Eigen::Matrix<double, 3, 2> f;
-  f << 1, 0, 0, 0, 0, 1;
   const btVector3& xp = m_nodes[record(id).bullet].m_x;
   const btVector3 rp = record(id).rest_position();
   Eigen::Matrix2d rr = Eigen::Matrix2d::Zero();
@@ -91,10 +90,7 @@ Eigen::Matrix<double, 3, 2> TcSoftBody::local_affine_fit(TreeId id) const {
     rr += r * r.transpose();
     xr += to_eigen(dx) * r.transpose();
   }
-  const double scale = rr.trace();
-  // Neighbours on one line only leave the plane undetermined: keep the rigid offset then.
-  if (scale > 0 && rr.determinant() > 1e-6 * scale * scale) f = xr * rr.inverse();
-  return f;
+  return solve_affine_fit(rr, xr);
 }
 
 btVector3 TcSoftBody::place_child(TreeId parent, TreeId child, const btVector3& parent_x,
