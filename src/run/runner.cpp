@@ -177,8 +177,9 @@ void run_plan(RunResult& result, const std::vector<PlannedRun>& plan, const std:
   // that configuration run alone: a configuration of a suite with axes is that suite without them.
   const std::vector<Suite> settings = configuration_suites(result.suite);
   std::vector<std::uint64_t> seeds;
+  const std::size_t per_configuration = cases_per_configuration(result.suite);
   for (std::size_t i = 0; i < result.cases.size(); ++i) {
-    const std::size_t index = index_in_configuration(result.suite, i);
+    const std::size_t index = index_in_configuration(per_configuration, i);
     seeds.push_back(case_seed(settings[result.cases[i].key.configuration], index));
   }
   for (const PlannedRun& run : plan) {

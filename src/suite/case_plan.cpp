@@ -25,11 +25,18 @@ std::vector<CaseKey> expand_cases(const Suite& suite) {
   return cases;
 }
 
-std::size_t index_in_configuration(const Suite& suite, std::size_t case_index) {
+std::size_t cases_per_configuration(const Suite& suite) {
   Suite one = suite;  // the cases of one configuration: the same for each
   one.configurations.clear();
-  const std::size_t per_configuration = expand_cases(one).size();
+  return expand_cases(one).size();
+}
+
+std::size_t index_in_configuration(std::size_t per_configuration, std::size_t case_index) {
   return per_configuration == 0 ? case_index : case_index % per_configuration;
+}
+
+std::size_t index_in_configuration(const Suite& suite, std::size_t case_index) {
+  return index_in_configuration(cases_per_configuration(suite), case_index);
 }
 
 std::vector<PlannedRun> interleaved_plan(const Suite& suite, const std::vector<CaseKey>& cases) {

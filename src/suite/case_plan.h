@@ -34,6 +34,11 @@ std::vector<CaseKey> expand_cases(const Suite& suite);
 /// The position of case `case_index` (of expand_cases) among its configuration's cases: its index in the suite the
 /// configuration makes alone (configuration_suite, suite/suite_axes.h), and so its seed there.
 std::size_t index_in_configuration(const Suite& suite, std::size_t case_index);
+/// The same, given cases_per_configuration(suite): for a loop over the cases, which would otherwise copy the suite and
+/// expand its cases once per case.
+std::size_t index_in_configuration(std::size_t per_configuration, std::size_t case_index);
+/// How many cases each configuration of the suite has (all have the same).
+std::size_t cases_per_configuration(const Suite& suite);
 
 /// One repetition of one case, in run order.
 struct PlannedRun {
