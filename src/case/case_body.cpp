@@ -45,6 +45,12 @@ class TreeCutBody final : public CaseBody {
   int interpolations() const override { return body_->interpolations(); }
   FeedbackCost feedback_cost() const override { return controller_ ? controller_->last_cost() : FeedbackCost{}; }
   TcSoftBody* tc() override { return body_.get(); }
+  void pause() override {
+    if (controller_) controller_->pause();
+  }
+  void resume() override {
+    if (controller_) controller_->resume();
+  }
 
  private:
   std::unique_ptr<TcSoftBody> body_;

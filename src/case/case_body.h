@@ -40,6 +40,10 @@ class CaseBody {
   virtual const StepPhases* phases() const { return nullptr; }
   /// The TC-SB body, if this is one.
   virtual TcSoftBody* tc() { return nullptr; }
+  /// Other bodies step for a while (see Controller::pause()).
+  virtual void pause() {}
+  /// This body steps again (see Controller::resume()).
+  virtual void resume() {}
 };
 
 /// A node budget: the compression target times the net's node count, rounded. Timed cases and fidelity subjects

@@ -45,6 +45,7 @@ ojson suite_json(const Suite& s) {
       {"steps", s.steps},
       {"warmup_steps", s.warmup_steps},
       {"repetitions", s.repetitions},
+      {"interleave_steps", s.interleave_steps},
       {"dt", json_number(s.world.dt)},
       {"gravity", json_number(s.world.gravity)},
       {"solver",

@@ -80,77 +80,147 @@ void add_step_breakdown(double step_ms, const StepPhases* phases, const std::vec
   sum.blending_ms += phases->blends_ms - ended_ms;
 }
 
-RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repetition,
-                                const std::shared_ptr<const Net>& net, std::uint64_t seed,
-                                std::vector<OpSample>& op_samples) {
-  RepetitionResult rep;
-  rep.repetition = repetition;
-  SoftBodyWorld world(suite.world);
-  const StepClock::time_point built0 = StepClock::now();
-  std::unique_ptr<CaseBody> body = make_case_body(suite, key, world, net, seed);
-  rep.build_ms = ms_between(built0, StepClock::now());
-  OpRecorder recorder(op_samples);
-  if (TcSoftBody* tc = body->tc()) tc->set_op_sink(&recorder);
+/// One repetition of one case while it runs: its body, what it recorded so far and how far it got. Steps run as
+/// the caller asks: all at once (run_repetition), or in blocks beside the net's other cases (run_side_by_side).
+class RepetitionRun {
+ public:
+  RepetitionRun(const Suite& suite, const CaseKey& key, int repetition, std::shared_ptr<const Net> net,
+                std::uint64_t seed, std::vector<OpSample>& op_samples)
+      : suite_(suite), key_(key), net_(std::move(net)), seed_(seed), world_(suite.world), op_samples_(op_samples),
+        recorder_(op_samples), total_(steps_per_repetition(suite)), ops_before_(op_samples.size()) {
+    rep_.repetition = repetition;
+    const StepClock::time_point built0 = StepClock::now();
+    body_ = make_case_body(suite, key, world_, net_, seed);
+    rep_.build_ms = ms_between(built0, StepClock::now());
+    if (TcSoftBody* tc = body_->tc()) tc->set_op_sink(&recorder_);
+    // Every series reserved to its final size: no reallocation inside the timed loop, and the recorder takes the
+    // bytes suite_memory.cpp counts (doubling growth would leave up to twice that allocated).
+    StepSeries& series = rep_.series;
+    const std::size_t timed_steps = static_cast<std::size_t>(suite.steps);
+    for (std::vector<double>* v : {&series.step_ms, &series.feedback_ms, &series.feedback_total_ms})
+      v->reserve(timed_steps);
+    for (std::vector<std::int32_t>* v : {&series.nodes, &series.links, &series.interpolations}) v->reserve(timed_steps);
+  }
+  ~RepetitionRun() {
+    if (TcSoftBody* tc = body_->tc()) tc->set_op_sink(nullptr);
+  }
+  RepetitionRun(const RepetitionRun&) = delete;
+  RepetitionRun& operator=(const RepetitionRun&) = delete;
 
-  const btScalar dt = static_cast<btScalar>(suite.world.dt);
-  const int total = suite.warmup_steps + suite.steps;
-  StepSeries& series = rep.series;
-  // Every series reserved to its final size: no reallocation inside the timed loop, and the recorder takes the
-  // bytes suite_memory.cpp counts (doubling growth would leave up to twice that allocated).
-  const std::size_t timed_steps = static_cast<std::size_t>(suite.steps);
-  for (std::vector<double>* v : {&series.step_ms, &series.feedback_ms, &series.feedback_total_ms})
-    v->reserve(timed_steps);
-  for (std::vector<std::int32_t>* v : {&series.nodes, &series.links, &series.interpolations}) v->reserve(timed_steps);
-  const std::size_t ops_before = op_samples.size();
-  StepBreakdown sum;  // over the timed steps
+  /// Timed steps still to run (0 once diverged).
+  int timed_left() const {
+    return rep_.status == "ok" ? suite_.steps - static_cast<int>(rep_.series.step_ms.size()) : 0;
+  }
 
-  for (int s = 0; s < total; ++s) {
-    const bool timed = s >= suite.warmup_steps;
-    recorder.recording = timed;
-    const std::size_t ops_at_step = op_samples.size();
+  void warm_up() {
+    while (rep_.status == "ok" && step_ < suite_.warmup_steps) step_once(false);
+  }
+  /// Up to `count` steps, timed or not (a step that is not timed records no operation either).
+  void run(int count, bool timed) {
+    for (int i = 0; i < count && timed_left() > 0; ++i) step_once(timed);
+  }
+  void pause() { body_->pause(); }
+  void resume() { body_->resume(); }
+
+  RepetitionResult finish() && {
+    const StepSeries& series = rep_.series;
+    rep_.operations = static_cast<std::int64_t>(op_samples_.size() - ops_before_);
+    if (rep_.status == "ok") rep_.final_state_hash = state_hash(body_->bullet());
+    if (!series.step_ms.empty()) {
+      rep_.mean_step_ms = mean(series.step_ms);
+      rep_.median_step_ms = median(series.step_ms);
+    }
+    rep_.mean_nodes = mean_of(series.nodes);
+    rep_.mean_links = mean_of(series.links);
+    rep_.mean_interpolations = mean_of(series.interpolations);
+    rep_.mean_feedback_ms = mean_of(series.feedback_ms);
+    rep_.mean_feedback_total_ms = mean_of(series.feedback_total_ms);
+    if (!series.step_ms.empty()) {
+      const double steps = static_cast<double>(series.step_ms.size());
+      rep_.breakdown = {sum_.bullet_ms / steps, sum_.feedback_ms / steps, sum_.operations_ms / steps,
+                        sum_.blending_ms / steps};
+    }
+    return std::move(rep_);
+  }
+
+ private:
+  void step_once(bool timed) {
+    recorder_.recording = timed;
+    const std::size_t ops_at_step = op_samples_.size();
     const StepClock::time_point t0 = StepClock::now();
-    body->step(dt);
+    body_->step(static_cast<btScalar>(suite_.world.dt));
     const StepClock::time_point t1 = StepClock::now();
-    const btSoftBody& b = body->bullet();
+    const btSoftBody& b = body_->bullet();
     if (timed) {
+      StepSeries& series = rep_.series;
       series.step_ms.push_back(ms_between(t0, t1));
       series.nodes.push_back(b.m_nodes.size());
       series.links.push_back(b.m_links.size());
-      series.interpolations.push_back(body->interpolations());
-      const FeedbackCost cost = body->feedback_cost();
+      series.interpolations.push_back(body_->interpolations());
+      const FeedbackCost cost = body_->feedback_cost();
       series.feedback_ms.push_back(cost.critical_ms);
       series.feedback_total_ms.push_back(cost.total_ms);
-      add_step_breakdown(series.step_ms.back(), body->phases(), op_samples, ops_at_step, sum);
+      add_step_breakdown(series.step_ms.back(), body_->phases(), op_samples_, ops_at_step, sum_);
     }
-    const std::optional<std::string> diverged = divergence_after_step(b, net->extent(), s, total);  // untimed
+    const int s = step_++;
+    const std::optional<std::string> diverged = divergence_after_step(b, net_->extent(), s, total_);  // untimed
     if (diverged) {
       const Divergence first =
-          first_divergence(suite, key, net, seed, last_full_check_before(s), {s, *diverged, state_hash(b)});
-      rep.status = "diverged";
-      rep.diverged_step = first.step;
-      rep.diverged_reason = first.reason;
-      rep.final_state_hash = first.state_hash;
-      break;
+          first_divergence(suite_, key_, net_, seed_, last_full_check_before(s), {s, *diverged, state_hash(b)});
+      rep_.status = "diverged";
+      rep_.diverged_step = first.step;
+      rep_.diverged_reason = first.reason;
+      rep_.final_state_hash = first.state_hash;
     }
   }
-  if (TcSoftBody* tc = body->tc()) tc->set_op_sink(nullptr);
-  rep.operations = static_cast<std::int64_t>(op_samples.size() - ops_before);
-  if (rep.status == "ok") rep.final_state_hash = state_hash(body->bullet());
-  if (!series.step_ms.empty()) {
-    rep.mean_step_ms = mean(series.step_ms);
-    rep.median_step_ms = median(series.step_ms);
+
+  const Suite& suite_;
+  CaseKey key_;
+  std::shared_ptr<const Net> net_;
+  std::uint64_t seed_;
+  SoftBodyWorld world_;
+  std::vector<OpSample>& op_samples_;
+  OpRecorder recorder_;
+  std::unique_ptr<CaseBody> body_;
+  const int total_;  // every step the repetition takes (steps_per_repetition)
+  const std::size_t ops_before_;
+  int step_ = 0;  // steps taken so far, warm-up included
+  RepetitionResult rep_;
+  StepBreakdown sum_;  // over the timed steps
+};
+
+/// A repetition alone: warm-up, then every timed step.
+RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repetition,
+                                const std::shared_ptr<const Net>& net, std::uint64_t seed,
+                                std::vector<OpSample>& op_samples) {
+  RepetitionRun run(suite, key, repetition, net, seed, op_samples);
+  run.warm_up();
+  run.run(suite.steps, true);
+  return std::move(run).finish();
+}
+
+/// The repetitions of one net's cases side by side (Suite::interleave_steps = k): each warms up alone, then they
+/// take turns, each turn one untimed step (the body's data come back into the caches the others used) and k timed
+/// steps, the case opening a round rotating. The machine's speed drifts within a repetition's fraction of a
+/// second; so a slow moment falls on every case of the net alike, and their ratios keep little of it.
+void run_side_by_side(std::vector<std::unique_ptr<RepetitionRun>>& runs, int block_steps) {
+  for (auto& run : runs) {
+    run->warm_up();
+    run->pause();
   }
-  rep.mean_nodes = mean_of(series.nodes);
-  rep.mean_links = mean_of(series.links);
-  rep.mean_interpolations = mean_of(series.interpolations);
-  rep.mean_feedback_ms = mean_of(series.feedback_ms);
-  rep.mean_feedback_total_ms = mean_of(series.feedback_total_ms);
-  if (!series.step_ms.empty()) {
-    const double steps = static_cast<double>(series.step_ms.size());
-    rep.breakdown = {sum.bullet_ms / steps, sum.feedback_ms / steps, sum.operations_ms / steps,
-                     sum.blending_ms / steps};
+  for (std::size_t round = 0;; ++round) {
+    bool any = false;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      RepetitionRun& run = *runs[(round + i) % runs.size()];
+      if (run.timed_left() == 0) continue;
+      any = true;
+      run.resume();
+      run.run(1, false);
+      run.run(block_steps, true);
+      run.pause();
+    }
+    if (!any) return;
   }
-  return rep;
 }
 
 /// The nets of a suite, built once per call (they are immutable and shared by every case of the net); a net not
@@ -182,19 +252,50 @@ void run_plan(RunResult& result, const std::vector<PlannedRun>& plan, const std:
     const std::size_t index = index_in_configuration(per_configuration, i);
     seeds.push_back(case_seed(settings[result.cases[i].key.configuration], index));
   }
-  for (const PlannedRun& run : plan) {
-    CaseResult& c = result.cases[run.case_index];
-    // One seed per case, the same for every repetition: repetitions do identical work, so their spread is the
-    // machine's, and N, L, I and the final state are exact, gateable numbers.
-    const std::uint64_t seed = seeds[run.case_index];
-    const int repetition = first_repetition[run.case_index] + run.repetition;
-    const Suite& suite = settings[c.key.configuration];
-    c.repetitions.push_back(
-        naming_out_of_memory("suite " + result.suite.name + ", case " + c.label + " (net " + c.net_name + ")", [&] {
-          return run_repetition(suite, c.key, repetition, nets[c.key.net], seed, c.ops.samples);
-        }));
+  const auto repetition_of = [&](const PlannedRun& run) { return first_repetition[run.case_index] + run.repetition; };
+  const auto report = [&](const CaseResult& c) {
     ++done;
     if (options.progress) options.progress(done, total, c.label);
+  };
+  if (result.suite.interleave_steps == 0) {
+    for (const PlannedRun& run : plan) {
+      CaseResult& c = result.cases[run.case_index];
+      // One seed per case, the same for every repetition: repetitions do identical work, so their spread is the
+      // machine's, and N, L, I and the final state are exact, gateable numbers.
+      const Suite& suite = settings[c.key.configuration];
+      c.repetitions.push_back(
+          naming_out_of_memory("suite " + result.suite.name + ", case " + c.label + " (net " + c.net_name + ")", [&] {
+            return run_repetition(suite, c.key, repetition_of(run), nets[c.key.net], seeds[run.case_index],
+                                  c.ops.samples);
+          }));
+      report(c);
+    }
+    return;
+  }
+  // Side by side: a group is the plan's consecutive runs of one net in one repetition of the plan (interleaved_plan
+  // keeps a net's cases of a repetition together, every configuration's).
+  for (std::size_t first = 0; first < plan.size();) {
+    const std::size_t net = result.cases[plan[first].case_index].key.net;
+    std::size_t last = first + 1;
+    while (last < plan.size() && plan[last].repetition == plan[first].repetition &&
+           result.cases[plan[last].case_index].key.net == net)
+      ++last;
+    naming_out_of_memory(
+        "suite " + result.suite.name + ", net " + result.cases[plan[first].case_index].net_name + " side by side", [&] {
+          std::vector<std::unique_ptr<RepetitionRun>> runs;
+          for (std::size_t i = first; i < last; ++i) {
+            CaseResult& c = result.cases[plan[i].case_index];
+            runs.push_back(std::make_unique<RepetitionRun>(settings[c.key.configuration], c.key, repetition_of(plan[i]),
+                                                           nets[net], seeds[plan[i].case_index], c.ops.samples));
+          }
+          run_side_by_side(runs, result.suite.interleave_steps);
+          for (std::size_t i = first; i < last; ++i) {
+            CaseResult& c = result.cases[plan[i].case_index];
+            c.repetitions.push_back(std::move(*runs[i - first]).finish());
+            report(c);
+          }
+        });
+    first = last;
   }
 }
 

@@ -160,7 +160,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
   const Object root(r, doc, "",
                     {"name", "description", "nets", "methods", "compression", "dt", "gravity", "steps", "warmup_steps",
-                     "repetitions", "seed", "solver", "tcsb", "feedback", "fidelity", "axes"});
+                     "repetitions", "interleave_steps", "seed", "solver", "tcsb", "feedback", "fidelity", "axes"});
   Suite s;
   s.path = file;
   s.sha256 = sha256_hex(text);
@@ -218,6 +218,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   read_axis_setting(r, root, "steps", s, true);
   read_axis_setting(r, root, "warmup_steps", s, true);
   root.read("repetitions", s.repetitions, 1, kMaxRepetitions, true);
+  root.read("interleave_steps", s.interleave_steps, 0, INT_MAX);
   read_axis_setting(r, root, "seed", s, true);
   parse_settings(r, root, s);
   if (const json* axes = root.find("axes")) parse_axes(r, *axes, s);

@@ -75,6 +75,10 @@ struct Suite {
   int steps = 300;        ///< timed steps per repetition
   int warmup_steps = 30;  ///< untimed steps before them
   int repetitions = 5;
+  /// 0: each repetition of a case runs alone, start to end. k > 0: a net's cases of one repetition run side by
+  /// side, each stepping in turn one untimed step (its data back into the caches) and then k timed steps, so every
+  /// case of the net meets the same moments of the machine (docs/methodology.md, "Side by side").
+  int interleave_steps = 0;
   std::uint64_t seed = 1;
   SolverSettings solver;
   TcSettings tcsb;
@@ -92,6 +96,13 @@ struct Suite {
   /// when the suite was parsed; nullopt without one.
   std::optional<Calibration> calibration;
 };
+
+/// Every step a repetition of a case takes, warm-up and the untimed step opening each interleaved block included.
+inline int steps_per_repetition(const Suite& suite) {
+  const int blocks =
+      suite.interleave_steps > 0 ? (suite.steps + suite.interleave_steps - 1) / suite.interleave_steps : 0;
+  return suite.warmup_steps + suite.steps + blocks;
+}
 
 /// How many configurations the suite runs: one without axes.
 inline std::size_t configuration_count(const Suite& suite) {

@@ -36,8 +36,9 @@ constexpr double kTreeNodeBytes = 116, kTreeNodesPerLeaf = 4.0 / 3.0;
 constexpr double kTcBookkeepingBytes = 200, kTcLinkFactor = 3;
 constexpr double kSampleBytes = 3 * 8 + 3 * 4;
 
-/// Peak bytes while cases of net `spec` run: the shared net, one body per method; or, in the fidelity pass, which
-/// runs afterwards, the reference and every subject at once (each counted as a TC-SB body, the largest kind).
+/// Peak bytes while cases of net `spec` run: the shared net, one body per method (per case side by side); or, in the
+/// fidelity pass, which runs afterwards, the reference and every subject at once (each counted as a TC-SB body, the
+/// largest kind).
 double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
   const double n = static_cast<double>(spec.node_count());
   const double l = static_cast<double>(expected_link_count(spec));
@@ -46,18 +47,23 @@ double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
   const double tcsb_body = tree * (kBulletNodeBytes + kTcBookkeepingBytes) + kTcLinkFactor * l * kBulletLinkBytes;
   const double shared = n * kNetNodeBytes + l * kNetLinkBytes + tree * kTreeNodeBytes;
   double bytes = shared;
-  bool has_tcsb = false;
-  for (const Method m : suite.methods) {
+  const auto body_bytes = [&](Method m) {
     switch (m) {
-      case Method::kPlain: bytes += plain; break;
-      case Method::kPlainEqual: bytes += plain; break;  // a coarser grid of the same net: at most the plain body
-      case Method::kBulletPatch: bytes += plain + 2.0 * (spec.width - 1) * (spec.height - 1) * kBulletFaceBytes; break;
-      case Method::kTcsb:
-        has_tcsb = true;
-        bytes += tcsb_body;
-        break;
+      case Method::kPlain: return plain;
+      case Method::kPlainEqual: return plain;  // a coarser grid of the same net: at most the plain body
+      case Method::kBulletPatch: return plain + 2.0 * (spec.width - 1) * (spec.height - 1) * kBulletFaceBytes;
+      case Method::kTcsb: return tcsb_body;
     }
+    return tcsb_body;
+  };
+  if (suite.interleave_steps > 0) {
+    // Side by side: every case of the net (each budget, each configuration) has its body alive at once.
+    for (const CaseKey& key : expand_cases(suite))
+      if (suite.nets[key.net].name == spec.name) bytes += body_bytes(key.method);
+  } else {
+    for (const Method m : suite.methods) bytes += body_bytes(m);
   }
+  const bool has_tcsb = std::find(suite.methods.begin(), suite.methods.end(), Method::kTcsb) != suite.methods.end();
   const double subjects = has_tcsb ? static_cast<double>(fidelity_plan(suite).size()) : 0.0;
   const double fidelity = shared + plain + subjects * tcsb_body;
   return subjects > 0 ? std::max(bytes, fidelity) : bytes;

@@ -118,8 +118,8 @@ TEST(NativeJson, ContextCarriesTheSuiteHashAndSeed) {
 TEST(NativeJson, SuiteBlock) {
   const ojson suite = native_json(small_run())["suite"];
   EXPECT_EQ(keys(suite), (std::vector<std::string>{"name", "description", "path", "sha256", "steps", "warmup_steps",
-                                                   "repetitions", "dt", "gravity", "solver", "tcsb", "feedback", "nets",
-                                                   "methods", "compression"}));
+                                                   "repetitions", "interleave_steps", "dt", "gravity", "solver", "tcsb",
+                                                   "feedback", "nets", "methods", "compression"}));
   EXPECT_EQ(keys(suite["solver"]),
             (std::vector<std::string>{"piterations", "viterations", "diterations", "damping", "stiffness"}));
   EXPECT_EQ(keys(suite["tcsb"]),

@@ -53,6 +53,39 @@ TEST(Runner, MoreRepetitionsOfChosenCasesContinueTheirNumberingAndRepeatTheirWor
   EXPECT_EQ(run.cases[0].repetitions.size(), 5u);
 }
 
+TEST(Runner, StepsPerRepetitionCountTheUntimedStepOpeningEachBlock) {
+  Suite s = two_nets();
+  EXPECT_EQ(steps_per_repetition(s), 15);
+  s.interleave_steps = 4;  // 10 timed steps: blocks of 4, 4 and 2
+  EXPECT_EQ(steps_per_repetition(s), 18);
+  s.interleave_steps = 10;
+  EXPECT_EQ(steps_per_repetition(s), 16);
+}
+
+TEST(Runner, SideBySideStepsEachCaseAsItWouldStepAlone) {
+  Suite side = two_nets();
+  side.interleave_steps = 4;
+  RunResult run = run_suite(side, Context{});
+  run_more_repetitions(run, {0, 2}, 1);  // side by side too: plain and TC-SB at 0.5 of net a
+  // Alone, with as many steps in all: the same final states, so stepping beside other bodies changes nothing.
+  Suite alone = two_nets();
+  alone.steps = steps_per_repetition(side) - alone.warmup_steps;
+  const RunResult reference = run_suite(alone, Context{});
+  ASSERT_EQ(run.cases.size(), reference.cases.size());
+  for (std::size_t i = 0; i < run.cases.size(); ++i) {
+    const CaseResult& c = run.cases[i];
+    ASSERT_EQ(c.repetitions.size(), i == 0 || i == 2 ? 3u : 2u) << c.label;
+    std::size_t ops = 0;
+    for (const RepetitionResult& r : c.repetitions) {
+      EXPECT_EQ(r.status, "ok") << c.label;
+      EXPECT_EQ(r.final_state_hash, reference.cases[i].repetitions[0].final_state_hash) << c.label;
+      EXPECT_EQ(r.series.step_ms.size(), 10u) << c.label;  // every timed step once, the blocks' openers not
+      ops += static_cast<std::size_t>(r.operations);
+    }
+    EXPECT_EQ(c.ops.samples.size(), ops) << c.label;
+  }
+}
+
 TEST(Runner, PlainEqualIsAStaticGridOfTheBudgetsNodeCount) {
   Suite s = two_nets();
   s.methods.push_back(Method::kPlainEqual);

@@ -30,6 +30,19 @@ TEST(SuiteMemory, EstimateGrowsWithNetsAndMethods) {
   EXPECT_GT(plain_big, 257ull * 257ull * 256ull);
 }
 
+TEST(SuiteMemory, SideBySideCountsEveryCasesBody) {
+  Suite s;
+  s.methods = {Method::kPlain, Method::kTcsb};
+  s.compression = {1.0, 0.75, 0.3};
+  NetSpec net;
+  net.width = net.height = 129;
+  s.nets = {net};
+  const std::uint64_t one_at_a_time = estimate_peak_bytes(s);
+  s.interleave_steps = 8;
+  // Three TC-SB bodies alive at once instead of one: more than twice TC-SB's share more.
+  EXPECT_GT(estimate_peak_bytes(s), one_at_a_time + 2 * 129ull * 129ull * 256ull);
+}
+
 TEST(SuiteMemory, ShortfallNamesTheLargestNet) {
   if (!std::ifstream("/proc/meminfo").good()) GTEST_SKIP() << "/proc/meminfo unreadable: no estimate by design";
   Suite s;

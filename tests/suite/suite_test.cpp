@@ -387,6 +387,8 @@ TEST(SuiteReject, OtherRanges) {
   rejected_edit([](json& j) { j["steps"] = 0; }, "steps");
   rejected_edit([](json& j) { j["warmup_steps"] = -1; }, "warmup_steps");
   rejected_edit([](json& j) { j["repetitions"] = 1001; }, "repetitions");
+  rejected_edit([](json& j) { j["interleave_steps"] = -1; }, "interleave_steps");
+  rejected_edit([](json& j) { j["interleave_steps"] = 2.5; }, "interleave_steps");
   rejected_edit([](json& j) { j["solver"]["piterations"] = 0; }, "solver.piterations");
   rejected_edit([](json& j) { j["solver"]["damping"] = 1.0; }, "solver.damping");
   rejected_edit([](json& j) { j["solver"]["stiffness"] = 0; }, "solver.stiffness");
