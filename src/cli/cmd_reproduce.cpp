@@ -68,6 +68,7 @@ int reproduce_command(const ReproduceArgs& args) {
   options.budget_s = args.budget ? *args.budget : std::max(0.0, kReproductionWallTargetS - elapsed_s);
   if (!args.quiet) options.on_look = print_look;
   const Reproduction reproduction = check_reproduction(result, paper, options);
+  warn_repetitions(result, suite.repetitions);  // those the looks added; the run's own were warned of above
   print_reproduction(result, reproduction, std::cerr);
 
   nlohmann::ordered_json report = native_json(result);

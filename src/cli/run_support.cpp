@@ -109,11 +109,11 @@ class ProgressLine {
   std::size_t width_ = 0;
 };
 
-/// One warning line per diverged repetition: case, step, reason.
-void warn_diverged(const RunResult& result) {
+/// One warning line per diverged repetition numbered `from` or later: case, step, reason.
+void warn_diverged(const RunResult& result, int from) {
   for (const CaseResult& c : result.cases) {
     for (const RepetitionResult& r : c.repetitions) {
-      if (r.status == "ok") continue;
+      if (r.status == "ok" || r.repetition < from) continue;
       std::string message = "case " + c.label + " " + r.status + " in repetition " + std::to_string(r.repetition);
       if (r.diverged_step) message += " at step " + std::to_string(*r.diverged_step);
       if (!r.diverged_reason.empty()) message += " (" + r.diverged_reason + ")";
@@ -122,9 +122,10 @@ void warn_diverged(const RunResult& result) {
   }
 }
 
-/// A warning per repetition during which the machine stalled.
-void warn_stalls(const RunResult& result) {
+/// A warning per repetition numbered `from` or later during which the machine stalled.
+void warn_stalls(const RunResult& result, int from) {
   for (const Stall& s : stalled_repetitions(result)) {
+    if (s.repetition < from) continue;
     print_warning("case " + s.label + " repetition " + std::to_string(s.repetition) + ": mean step " +
                   fixed(s.mean_over_median, 1) + "x its median, the machine stalled for about " + fixed(s.lost_s, 1) +
                   " s; the case's median over repetitions keeps one such repetition out");
@@ -145,9 +146,13 @@ RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<Sha
     result.shard = shard;
   }
   if (!quiet) print_console_report(result, std::cerr);
-  warn_diverged(result);
-  warn_stalls(result);
+  warn_repetitions(result, 0);
   return result;
+}
+
+void warn_repetitions(const RunResult& result, int from) {
+  warn_diverged(result, from);
+  warn_stalls(result, from);
 }
 
 int write_report(const std::string& text, const std::string& out) {

@@ -48,6 +48,10 @@ void apply_repetitions(const std::optional<int>& repetitions, Suite& suite);
 /// With `shard`, the result says which shard it is; suite.run_units must hold that shard's units (shard_units()).
 RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard = std::nullopt);
 
+/// The warnings run_on_console gives after a run (diverged and stalled repetitions), for the repetitions numbered
+/// `from` or later: `reproduce` gives them for the repetitions its looks added.
+void warn_repetitions(const RunResult& result, int from);
+
 /// Writes the report to stdout, or atomically to `out`. If the file cannot be written after a long run, the report
 /// goes to stdout instead and the result is kExitInternal; otherwise kExitOk. Whether stdout took the report is
 /// checked once for every command at exit (cli/standard_streams.h's finish_stdout).
