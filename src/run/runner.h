@@ -19,11 +19,11 @@ struct RunOptions {
 /// Runs every case of the suite in interleaved_plan() order (every repetition runs every case once, a net's cases
 /// side by side); each repetition builds a fresh body, steps warm-up steps untimed, then times every step with a
 /// monotonic clock. With Suite::interleave_steps = k, a net's cases of one repetition step side by side instead: all
-/// bodies alive, each in turn taking one untimed step and k timed ones. A repetition that diverges stops at once and is reported with its step, never averaged in.
-/// With suite.run_units (a shard's units), only those units' cases (and their nets' fidelity pass) run and
-/// result.cases holds only them; nets of no unit are never built. With axes, every case runs with its
-/// configuration's settings (configuration_suite, suite/suite_axes.h). The cases run keep their suite-wide indices, so
-/// seeds, labels and the interleaved order among them are those of the whole suite.
+/// bodies alive, each in turn taking one untimed step and k timed ones. A repetition that diverges stops at once and is
+/// reported with its step, never averaged in. With suite.run_units (a shard's units), only those units' cases (and
+/// their nets' fidelity pass) run and result.cases holds only them; nets of no unit are never built. With axes, every
+/// case runs with its configuration's settings (configuration_suite, suite/suite_axes.h). The cases run keep their
+/// suite-wide indices, so seeds, labels and the interleaved order among them are those of the whole suite.
 RunResult run_suite(const Suite& suite, const Context& context, const RunOptions& options = {});
 
 /// Runs `extra` more repetitions of the cases `case_indices` of a finished run (indices into result.cases), in the
