@@ -1,9 +1,11 @@
 // tcsb_dbvt_probe: how often each body's node DBVT re-inserts a leaf, and how deep its tree is, over a suite's timed
 // window (docs/methodology.md, "Where Bullet's extra time goes").
 //
-// Usage: tcsb_dbvt_probe SUITE NET_INDEX COMPRESSION [RESTORE_ORDER]   (RESTORE_ORDER 0 or 1: tcsb.restore_order,
-// with restore_order_min_nodes 0; omitted: the suite's settings). Runs TC-SB, plain_equal and plain on the net, one
-// after the other, the feedback on the simulation thread, for the suite's warm-up and timed steps.
+// Usage: tcsb_dbvt_probe SUITE NET_INDEX COMPRESSION [RESTORE_ORDER [SHUFFLE_LINKS]]   (RESTORE_ORDER 0 or 1:
+// tcsb.restore_order, with restore_order_min_nodes 0; omitted or -1: the suite's settings. SHUFFLE_LINKS 1: the
+// stock bodies' links are put in a random order first, by Bullet's btSoftBody::randomizeConstraints(), to see what
+// the link order alone does to their motion). Runs TC-SB, plain_equal and plain on the net, one after the other,
+// the feedback on the simulation thread, for the suite's warm-up and timed steps.
 //
 // A leaf's box changes only when btDbvt::update(leaf, volume, velocity, margin) finds the node outside it and
 // re-inserts the leaf (removal, then a descent from the root), and collisions are off (m_cfg.collisions = 0), so the
@@ -70,10 +72,11 @@ int main(int argc, char** argv) {
   const auto net_index = static_cast<std::size_t>(std::atoi(argv[2]));
   const double compression = std::atof(argv[3]);
   suite.feedback.parallel = false;
-  if (argc > 4) {
+  if (argc > 4 && std::atoi(argv[4]) >= 0) {
     suite.tcsb.restore_order = std::atoi(argv[4]) != 0;
     suite.tcsb.restore_order_min_nodes = 0;
   }
+  const bool shuffle_links = argc > 5 && std::atoi(argv[5]) != 0;
   const int warmup = suite.warmup_steps;
   const int steps = suite.steps;
   auto net = std::make_shared<const Net>(suite.nets.at(net_index));
@@ -85,6 +88,7 @@ int main(int argc, char** argv) {
     auto body = make_case_body(suite, key, world, net, suite.seed);
     const btSoftBody& bullet = body->bullet();
     TcSoftBody* tc = body->tc();
+    if (shuffle_links && tc == nullptr) const_cast<btSoftBody&>(bullet).randomizeConstraints();  // a stock body
     using Leaves = std::map<int, std::pair<const btDbvtNode*, btDbvtAabbMm>>;  // tree id -> (leaf, box)
     Leaves before;
     long reinserts = 0, node_steps = 0;
@@ -119,9 +123,10 @@ int main(int argc, char** argv) {
       }
       before = std::move(after);
     }
-    std::printf("%-11s net %s: %.0f nodes, re-inserts per step %.1f (%.2f %% of node-steps); leaf depth mean %.2f, "
+    std::printf("%-11s%s net %s: %.0f nodes, re-inserts per step %.1f (%.2f %% of node-steps); leaf depth mean %.2f, "
                 "max %.1f (log2 N %.2f); internal box area %.0f\n",
-                name_of(method), net->spec().name.c_str(), nodes / samples, static_cast<double>(reinserts) / steps,
+                name_of(method), shuffle_links && tc == nullptr ? " (links shuffled)" : "", net->spec().name.c_str(),
+                nodes / samples, static_cast<double>(reinserts) / steps,
                 100.0 * static_cast<double>(reinserts) / static_cast<double>(node_steps), depth / samples,
                 max_depth / samples, std::log2(nodes / samples), area / samples);
     if (tc)
