@@ -17,6 +17,10 @@
 #   TCSB_PROFILE_EVALUATION_INTERVAL=k evaluates the feedback every k steps instead of the suite's every step: a
 #   callgrind run simulates one cache for everything, so the evaluation (on a worker thread and its core in real
 #   runs) evicts Bullet's data here; a sparse evaluation shows what the step misses without that.
+#   TCSB_PROFILE_WARMUP=w and TCSB_PROFILE_STEPS="a b" replace the 30 warm-up steps and the 10 and 30 timed steps
+#   (the paper suite warms up for 120); TCSB_PROFILE_KEEP=DIR keeps the dumps there as METHOD-short.out and
+#   METHOD-long.out, for scripts/callgrind_functions.py DIR (b - a) (per-function calls and costs per step).
+#   TCSB_PROFILE_VALGRIND_ARGS adds options to callgrind's, e.g. --branch-sim=yes (simulated mispredictions).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
@@ -27,27 +31,30 @@ if [ ! -x "$build/tcsb" ]; then
   [ -f "$build/build.ninja" ] || { echo "step-profile: $build is not a configured build directory" >&2; exit 2; }
   cmake --build "$build" --target tcsb >&2
 fi
+warmup=${TCSB_PROFILE_WARMUP:-30}
+read -r short long <<<"${TCSB_PROFILE_STEPS:-10 30}"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 
 python3 - "$dir" "$width" "$compression" "${TCSB_PROFILE_EVALUATION_INTERVAL:-}" "${TCSB_PROFILE_SUITE:-scaling}" \
-  "${TCSB_PROFILE_TCSB:-}" <<'EOF'
+  "${TCSB_PROFILE_TCSB:-}" "$warmup" "$short" "$long" <<'EOF'
 import json, sys
-out, width, compression, interval, suite_name, tcsb = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), *sys.argv[4:]
+out, width, compression, interval, suite_name, tcsb = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), *sys.argv[4:7]
+warmup, short, long = (int(v) for v in sys.argv[7:10])
 with open(f"suites/{suite_name}.json") as f:
     scaling = json.load(f)
 net = dict(scaling["nets"][0], name=f"n{width}", width=width, height=width)
 for method in ("tcsb", "plain_equal"):
-    for steps in (10, 30):
+    for tag, steps in (("short", short), ("long", long)):
         suite = dict(scaling, name=f"step-profile-{method}-{steps}", methods=[method], compression=[compression],
-                     nets=[net], repetitions=1, steps=steps, warmup_steps=30)
+                     nets=[net], repetitions=1, steps=steps, warmup_steps=warmup)
         suite["feedback"] = dict(scaling["feedback"], parallel=False)
         if interval:
             suite["feedback"]["evaluation_interval"] = int(interval)
         if tcsb:
             suite["tcsb"] = dict(scaling.get("tcsb", {}), **json.loads(tcsb))
         suite["fidelity"] = dict(scaling["fidelity"], enabled=False)
-        with open(f"{out}/{method}-{steps}.json", "w") as f:
+        with open(f"{out}/{method}-{tag}.json", "w") as f:
             json.dump(suite, f)
 EOF
 
@@ -56,20 +63,24 @@ for method in tcsb plain_equal; do
     tcsb) toggle='*TreeCutBody::step*' ;;
     plain_equal) toggle='*StockBody::step*' ;;
   esac
-  for steps in 10 30; do
+  for steps in short long; do
     valgrind --tool=callgrind --cache-sim=yes --D1=49152,12,64 --LL=2097152,16,64 --toggle-collect="$toggle" \
-      --callgrind-out-file="$dir/$method-$steps.out" \
+      ${TCSB_PROFILE_VALGRIND_ARGS:-} --callgrind-out-file="$dir/$method-$steps.out" \
       "$build/tcsb" run "$dir/$method-$steps.json" --quiet --out "$dir/$method-$steps.result.json" >/dev/null 2>&1
   done
 done
+if [ -n "${TCSB_PROFILE_KEEP:-}" ]; then
+  mkdir -p "$TCSB_PROFILE_KEEP"
+  cp "$dir"/*.out "$dir"/*.json "$TCSB_PROFILE_KEEP"/
+fi
 
-python3 - "$dir" "$width" "$compression" <<'EOF'
+python3 - "$dir" "$width" "$compression" "$((long - short))" <<'EOF'
 import collections, json, sys
 sys.path.insert(0, "scripts")
 from callgrind_calls import read_dump
 
 d, width, compression = sys.argv[1], sys.argv[2], sys.argv[3]
-STEPS = 20  # 30 - 10 timed steps
+STEPS = int(sys.argv[4])  # long - short timed steps
 
 
 def totals(path):
@@ -84,9 +95,9 @@ def totals(path):
 
 
 def per_step(method):
-    a, b = totals(f"{d}/{method}-10.out"), totals(f"{d}/{method}-30.out")
+    a, b = totals(f"{d}/{method}-short.out"), totals(f"{d}/{method}-long.out")
     diff = {k: (b[k] - a[k]) / STEPS for k in b}
-    result = json.load(open(f"{d}/{method}-30.result.json"))
+    result = json.load(open(f"{d}/{method}-long.result.json"))
     nodes = result["cases"][0]["mean_nodes"]
     return {"Ir": diff["Ir"], "D1": diff["D1mr"] + diff["D1mw"], "LL": diff["DLmr"] + diff["DLmw"], "nodes": nodes}
 
@@ -94,7 +105,7 @@ def per_step(method):
 def functions(method):
     """Inclusive cost per step of named functions, from the difference of the two dumps."""
     out = {}
-    for steps in (10, 30):
+    for steps in ("short", "long"):
         calls, inclusive = collections.Counter(), collections.Counter()
         read_dump(f"{d}/{method}-{steps}.out", calls, inclusive)
         out[steps] = inclusive
@@ -102,7 +113,8 @@ def functions(method):
 
 
 tc, pe = per_step("tcsb"), per_step("plain_equal")
-print(f"net {width}^2, budget {compression}: per timed step (steady state, difference of 30 and 10 timed steps)")
+print(f"net {width}^2, budget {compression}: per timed step (steady state, difference of two runs {STEPS} timed "
+      f"steps apart)")
 print(f"{'':12s} {'nodes':>8s} {'Ir':>12s} {'Ir/node':>8s} {'D1 miss':>10s} {'LL miss':>10s} {'LL/node':>8s}")
 for name, r in (("tcsb", tc), ("plain_equal", pe)):
     print(f"{name:12s} {r['nodes']:8.0f} {r['Ir']:12.0f} {r['Ir'] / r['nodes']:8.1f} {r['D1']:10.0f} {r['LL']:10.0f} "
@@ -127,9 +139,9 @@ for part in parts:
         cost = {}
         for ev in ("Ir", "D1mr", "D1mw", "DLmr", "DLmw"):
             vals = {}
-            for steps in (10, 30):
+            for steps in ("short", "long"):
                 vals[steps] = sum(v for (name, e), v in dumps[method][steps].items() if e == ev and part + "(" in name)
-            cost[ev] = (vals[30] - vals[10]) / STEPS
+            cost[ev] = (vals["long"] - vals["short"]) / STEPS
         row.append(cost)
     if all(c["Ir"] == 0 for c in row):
         continue
