@@ -2,9 +2,11 @@
 // where a coarse TC-SB body's error comes from, on the first net of a suite. It steps the full-resolution reference,
 // a TC-SB body coarsened to one level (link stiffness K for every level) and the uniform grid of a budget (stiffness
 // KU) in lockstep and prints, as mean-over-measured-steps RMS in % of the extent:
-//   floor: the level cut with every node put on its block's mass-weighted mean of the reference, reconstructed
-//          (the reconstruction's own error); sim recon: the simulated cut, reconstructed (what the fidelity pass
-//          measures); nodes-vs-blockmean: its nodes against those block means (the body's own error);
+//   floor: the level cut with every node put on the reference sampled (bilinearly over the leaf grid) at the
+//          node's rest position, reconstructed (the reconstruction's own error); for a block resting at its centroid
+//          that is its block's mean of the reference for level-1 blocks (2 x 2 or 1 x 2 leaves), and the mean of
+//          its four central leaves for larger blocks; sim recon: the simulated cut, reconstructed (what the fidelity
+//          pass measures); nodes-vs-sampled-at-rest: its nodes against those points (the body's own error);
 //   and for the grid: bilinear floor, simulated, and its nodes against the reference sampled at them.
 // "sort" reorders the cut's Bullet links row-major, as a plain grid has them (does link order matter?).
 // Build (after the Release build):
@@ -13,6 +15,9 @@
 //     build/libtcsb_suite.a build/libtcsb_analysis.a build/libtcsb_feedback.a build/libtcsb_softbody.a \
 //     build/libtcsb_net.a build/libtcsb_base.a -lBulletSoftBody -lBulletDynamics -lBulletCollision -lLinearMath
 //     -lpthread
+// Every simulated node starts at its rest position. To try other rest positions of the coarse levels on code before
+// blocks rested on the border (commit 94e0e8f), build with src/net/lod_tree.cpp patched by border_rest.patch added
+// before the libraries, and set TCSB_EXP_BORDER=snap|vertex|lattice (that patch says what each does).
 // Usage: level_cut_error SUITE LEVEL K BUDGET KU [sort]
 #include "analysis/fidelity_metrics.h"
 #include "case/case_body.h"
@@ -46,6 +51,13 @@ int main(int argc, char** argv) {
   if (k > 0) tc.level_stiffness = {k, k, k};
   TcSoftBody body(wt, net, suite.solver, tc);
   coarsen_to_level(body, level);
+  // Every simulated node starts at its rest position (the net starts at rest; a coarsened node would otherwise
+  // start at its block's centre of mass, which differs from its rest position under TCSB_EXP_BORDER).
+  const auto place_at_rest = [](TcSoftBody& b) {
+    for (int i = 0; i < b.node_count(); ++i)
+      b.m_nodes[i].m_x = b.m_nodes[i].m_q = to_bullet(b.tree().rest(b.tree_id(i)));
+  };
+  place_at_rest(body);
   if (argc > 6 && std::string(argv[6]) == "sort") {
     // Throwaway: Bullet's links in row-major order of their first endpoint (as a plain grid has them), horizontal
     // first.
@@ -67,6 +79,7 @@ int main(int argc, char** argv) {
   SoftBodyWorld ws(suite.world);
   TcSoftBody still(ws, net, suite.solver, tc);
   coarsen_to_level(still, level);
+  place_at_rest(still);
   const Net coarse(coarse_net_spec(net->spec(), node_budget(*net, budget_frac)));
   SolverSettings us = suite.solver;
   us.linear_stiffness = ku;
@@ -81,16 +94,24 @@ int main(int argc, char** argv) {
     step_soft_body(*uni, suite.world.dt);
     if (s < suite.warmup_steps) continue;
     copy_positions(*ref, rx);
-    // perfect nodes: each simulated node at its block's mass-weighted mean of the reference (rest position if pinned)
+    // perfect nodes: each simulated node at the reference sampled (bilinearly over the leaf grid) at its rest
+    // position, which for a block resting at its centroid is its block's mean of the reference (rest position if
+    // pinned)
+    const Eigen::Vector3d r00 = tree.rest(tree.at(0, 0, 0));
+    const double du = (tree.rest(tree.at(0, net->width() - 1, 0)) - r00).x() / (net->width() - 1);
+    const double dv = (tree.rest(tree.at(0, 0, net->height() - 1)) - r00).z() / (net->height() - 1);
+    const auto sample = [&](const Eigen::Vector3d& r) {
+      const double u = std::clamp((r.x() - r00.x()) / du, 0.0, net->width() - 1.0);
+      const double v = std::clamp((r.z() - r00.z()) / dv, 0.0, net->height() - 1.0);
+      const int x0 = std::min(static_cast<int>(u), net->width() - 2),
+                y0 = std::min(static_cast<int>(v), net->height() - 2);
+      const double fu = u - x0, fv = v - y0;
+      return Eigen::Vector3d((1 - fu) * (1 - fv) * rx[tree.at(0, x0, y0)] + fu * (1 - fv) * rx[tree.at(0, x0 + 1, y0)] +
+                             (1 - fu) * fv * rx[tree.at(0, x0, y0 + 1)] + fu * fv * rx[tree.at(0, x0 + 1, y0 + 1)]);
+    };
     for (int i = 0; i < still.node_count(); ++i) {
       const TreeId id = still.tree_id(i);
-      Eigen::Vector3d m = Eigen::Vector3d::Zero();
-      double w = 0;
-      for_each_leaf(tree, id, [&](TreeId l) {
-        m += tree.node(l).mass * rx[l];
-        w += tree.node(l).mass;
-      });
-      Eigen::Vector3d x = tree.node(id).pinned() ? tree.rest(id) : Eigen::Vector3d(m / w);
+      Eigen::Vector3d x = tree.node(id).pinned() ? tree.rest(id) : sample(tree.rest(id));
       if (tree.node(id).is_leaf()) x = rx[id];
       still.m_nodes[i].m_x = to_bullet(x);
     }
@@ -121,7 +142,7 @@ int main(int argc, char** argv) {
     ++n;
   }
   std::printf("net %s level %d (N=%d) k=%.3f: floor(recon of perfect nodes) %.3f  sim recon %.3f  sim "
-              "nodes-vs-blockmean %.3f\n",
+              "nodes-vs-sampled-at-rest %.3f\n",
               net->spec().name.c_str(), level, body.node_count(), k, s_floor / n, s_tc / n, s_tcnode / n);
   std::printf("uniform %dx%d k=%.3f: floor(bilinear) %.3f  sim recon %.3f  sim nodes-vs-sampled %.3f\n", coarse.width(),
               coarse.height(), ku, s_ufloor / n, s_u / n, s_unode / n);
