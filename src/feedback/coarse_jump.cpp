@@ -71,7 +71,7 @@ double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours,
   }
   const Eigen::Vector3d rp = tree.rest(parent);
   Eigen::Vector3d xp = p.pinned() || mass <= 0 ? rp : Eigen::Vector3d(weighted / mass);
-  if (!p.pinned() && mass > 0 && rp != tree.centroid(parent)) {
+  if (!p.pinned() && mass > 0 && tree.touches_border(p) && rp != tree.centroid(parent)) {
     // On the net's border: where the children's fit puts the parent's rest position (begin_coarse).
     std::array<Eigen::Vector3d, 4> child_rest;
     std::array<double, 4> child_mass;

@@ -201,7 +201,7 @@ void TcSoftBody::begin_coarse(TreeId p) {
     momentum += m * to_eigen(n.m_v);
   }
   btVector3 xp = pn.pinned() ? record(p).rest_position() : to_bullet(weighted_x / pn.mass);
-  if (!pn.pinned() && tree().rest(p) != tree().centroid(p)) {
+  if (!pn.pinned() && tree().touches_border(pn) && tree().rest(p) != tree().centroid(p)) {
     // A block on the net's border rests on the border: it appears where its children's fit puts that point.
     std::array<Eigen::Vector3d, 4> cx, cr;
     std::array<double, 4> cm;

@@ -315,6 +315,9 @@ TEST(LodTree, PinnedLeafCountAnchorAndRestFollowTheBlock) {
         if (n.leaf_y0 == 0 && n.leaf_y1 < net.height()) expected.z() = leaf(0, 0).z();
         if (n.leaf_y0 > 0 && n.leaf_y1 == net.height()) expected.z() = leaf(0, net.height() - 1).z();
         ASSERT_EQ(tree.rest(static_cast<TreeId>(id)), expected) << "node " << id;
+        const bool border = n.leaf_x0 == 0 || n.leaf_y0 == 0 || n.leaf_x1 == net.width() || n.leaf_y1 == net.height();
+        ASSERT_EQ(tree.touches_border(n), border) << "node " << id;
+        if (!border) ASSERT_EQ(tree.rest(static_cast<TreeId>(id)), tree.centroid(static_cast<TreeId>(id)));
       }
     }
   });
