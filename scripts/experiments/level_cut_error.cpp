@@ -1,10 +1,13 @@
 // Experiment (not built by CMake; docs/methodology.md, "Why calibrated TC-SB errs more than the calibrated grid"):
 // where a coarse TC-SB body's error comes from, on the first net of a suite. It steps the full-resolution reference,
-// a TC-SB body coarsened to one level (link stiffness K for every level) and the uniform grid of a budget (stiffness
-// KU) in lockstep and prints, as mean-over-measured-steps RMS in % of the extent:
-//   floor: the level cut with every node put on its block's mass-weighted mean of the reference, reconstructed
-//          (the reconstruction's own error); sim recon: the simulated cut, reconstructed (what the fidelity pass
-//          measures); nodes-vs-blockmean: its nodes against those block means (the body's own error);
+// a TC-SB body coarsened to one level (link stiffness K for every level, or K,K2,K3 per level; with "half" only the
+// blocks of the net's left half coarsen) and the uniform grid of a budget (stiffness KU) in lockstep and prints, as
+// mean-over-measured-steps RMS in % of the extent:
+//   floor: the level cut with every node put on the reference sampled (bilinearly over the leaf grid) at the
+//          node's rest position, reconstructed (the reconstruction's own error); for a block resting at its centroid
+//          that is its block's mean of the reference for level-1 blocks (2 x 2 or 1 x 2 leaves), and the mean of
+//          its four central leaves for larger blocks; sim recon: the simulated cut, reconstructed (what the fidelity
+//          pass measures); nodes-vs-sampled-at-rest: its nodes against those points (the body's own error);
 //   and for the grid: bilinear floor, simulated, and its nodes against the reference sampled at them.
 // "sort" reorders the cut's Bullet links row-major, as a plain grid has them (does link order matter?).
 // Build (after the Release build):
@@ -13,7 +16,10 @@
 //     build/libtcsb_suite.a build/libtcsb_analysis.a build/libtcsb_feedback.a build/libtcsb_softbody.a \
 //     build/libtcsb_net.a build/libtcsb_base.a -lBulletSoftBody -lBulletDynamics -lBulletCollision -lLinearMath
 //     -lpthread
-// Usage: level_cut_error SUITE LEVEL K BUDGET KU [sort]
+// Every simulated node starts at its rest position. To try other rest positions of the coarse levels on code before
+// blocks rested on the border (commit 94e0e8f), build with src/net/lod_tree.cpp patched by border_rest.patch added
+// before the libraries, and set TCSB_EXP_BORDER=snap|vertex|lattice (that patch says what each does).
+// Usage: level_cut_error SUITE LEVEL K[,K2,K3] BUDGET KU [sort|half]
 #include "analysis/fidelity_metrics.h"
 #include "case/case_body.h"
 #include "fidelity/calibration.h"
@@ -35,7 +41,7 @@ using namespace tcsb;
 int main(int argc, char** argv) {
   Suite suite = parse_suite(argv[1]);
   const int level = std::atoi(argv[2]);
-  const double k = std::atof(argv[3]);            // TC-SB level stiffness for all levels >= 1
+  const double k = std::atof(argv[3]);            // TC-SB level stiffness for all levels >= 1 (or the first of a list)
   const double budget_frac = std::atof(argv[4]);  // uniform grid budget
   const double ku = std::atof(argv[5]);           // uniform grid stiffness
   auto net = std::make_shared<const Net>(suite.nets[0]);
@@ -44,8 +50,45 @@ int main(int argc, char** argv) {
   auto ref = make_plain_softbody(wr, *net, suite.solver);
   TcSettings tc = suite.tcsb;
   if (k > 0) tc.level_stiffness = {k, k, k};
+  // K may list one stiffness per level from level 1 on, comma-separated ("0.424,0.129,0.020"): the last holds above.
+  if (const std::string ks = argv[3]; ks.find(',') != std::string::npos) {
+    tc.level_stiffness.clear();
+    for (std::size_t at = 0; at != std::string::npos;) {
+      const std::size_t comma = ks.find(',', at);
+      tc.level_stiffness.push_back(std::atof(ks.substr(at, comma == std::string::npos ? comma : comma - at).c_str()));
+      at = comma == std::string::npos ? comma : comma + 1;
+    }
+  }
   TcSoftBody body(wt, net, suite.solver, tc);
-  coarsen_to_level(body, level);
+  // "half": only the blocks of the net's left half (x below the middle) coarsen, to `level`; the right half stays at
+  // level 0 (a cut of two levels, with one boundary between them down the middle).
+  const bool half = argc > 6 && std::string(argv[6]) == "half";
+  const auto coarsen = [&](TcSoftBody& b) {
+    if (!half) return coarsen_to_level(b, level);
+    const LodTree& t = b.tree();
+    for (int l = 1; l <= level; ++l)
+      for (bool began = true; began;) {
+        began = false;
+        for (int gy = 0; gy < t.level_height(l); ++gy)
+          for (int gx = 0; gx < t.level_width(l); ++gx) {
+            const TreeId id = t.at(l, gx, gy);
+            if (2 * t.node(id).leaf_x1 <= net->width() + 1 && b.can_coarsen(id).ok) {
+              b.begin_coarse(id);
+              began = true;
+            }
+          }
+        while (b.interpolations() > 0) b.advance_blends();
+      }
+    return b.committed_count();
+  };
+  coarsen(body);
+  // Every simulated node starts at its rest position (the net starts at rest; a coarsened node would otherwise
+  // start at its block's centre of mass, which differs from its rest position under TCSB_EXP_BORDER).
+  const auto place_at_rest = [](TcSoftBody& b) {
+    for (int i = 0; i < b.node_count(); ++i)
+      b.m_nodes[i].m_x = b.m_nodes[i].m_q = to_bullet(b.tree().rest(b.tree_id(i)));
+  };
+  place_at_rest(body);
   if (argc > 6 && std::string(argv[6]) == "sort") {
     // Throwaway: Bullet's links in row-major order of their first endpoint (as a plain grid has them), horizontal
     // first.
@@ -66,14 +109,15 @@ int main(int argc, char** argv) {
   // a static copy of the same cut for the "perfect nodes" floor
   SoftBodyWorld ws(suite.world);
   TcSoftBody still(ws, net, suite.solver, tc);
-  coarsen_to_level(still, level);
+  coarsen(still);
+  place_at_rest(still);
   const Net coarse(coarse_net_spec(net->spec(), node_budget(*net, budget_frac)));
   SolverSettings us = suite.solver;
   us.linear_stiffness = ku;
   auto uni = make_plain_softbody(wu, coarse, us);
   const LodTree& tree = net->lod();
   std::vector<Eigen::Vector3d> rx, leaves, ux, uleaves, sampled, blockmean(body.node_count()), nodes;
-  double s_floor = 0, s_tc = 0, s_tcnode = 0, s_u = 0, s_ufloor = 0, s_unode = 0;
+  double s_floor = 0, s_tc = 0, s_tcnode = 0, s_u = 0, s_ufloor = 0, s_unode = 0, s_left = 0, s_right = 0;
   int n = 0;
   for (int s = 0; s < suite.warmup_steps + suite.steps; ++s) {
     step_soft_body(*ref, suite.world.dt);
@@ -81,16 +125,24 @@ int main(int argc, char** argv) {
     step_soft_body(*uni, suite.world.dt);
     if (s < suite.warmup_steps) continue;
     copy_positions(*ref, rx);
-    // perfect nodes: each simulated node at its block's mass-weighted mean of the reference (rest position if pinned)
+    // perfect nodes: each simulated node at the reference sampled (bilinearly over the leaf grid) at its rest
+    // position, which for a block resting at its centroid is its block's mean of the reference (rest position if
+    // pinned)
+    const Eigen::Vector3d r00 = tree.rest(tree.at(0, 0, 0));
+    const double du = (tree.rest(tree.at(0, net->width() - 1, 0)) - r00).x() / (net->width() - 1);
+    const double dv = (tree.rest(tree.at(0, 0, net->height() - 1)) - r00).z() / (net->height() - 1);
+    const auto sample = [&](const Eigen::Vector3d& r) {
+      const double u = std::clamp((r.x() - r00.x()) / du, 0.0, net->width() - 1.0);
+      const double v = std::clamp((r.z() - r00.z()) / dv, 0.0, net->height() - 1.0);
+      const int x0 = std::min(static_cast<int>(u), net->width() - 2),
+                y0 = std::min(static_cast<int>(v), net->height() - 2);
+      const double fu = u - x0, fv = v - y0;
+      return Eigen::Vector3d((1 - fu) * (1 - fv) * rx[tree.at(0, x0, y0)] + fu * (1 - fv) * rx[tree.at(0, x0 + 1, y0)] +
+                             (1 - fu) * fv * rx[tree.at(0, x0, y0 + 1)] + fu * fv * rx[tree.at(0, x0 + 1, y0 + 1)]);
+    };
     for (int i = 0; i < still.node_count(); ++i) {
       const TreeId id = still.tree_id(i);
-      Eigen::Vector3d m = Eigen::Vector3d::Zero();
-      double w = 0;
-      for_each_leaf(tree, id, [&](TreeId l) {
-        m += tree.node(l).mass * rx[l];
-        w += tree.node(l).mass;
-      });
-      Eigen::Vector3d x = tree.node(id).pinned() ? tree.rest(id) : Eigen::Vector3d(m / w);
+      Eigen::Vector3d x = tree.node(id).pinned() ? tree.rest(id) : sample(tree.rest(id));
       if (tree.node(id).is_leaf()) x = rx[id];
       still.m_nodes[i].m_x = to_bullet(x);
     }
@@ -99,6 +151,21 @@ int main(int argc, char** argv) {
     // the simulated level cut: its reconstruction, and its nodes against the block means
     reconstruct_leaves(body, leaves);
     s_tc += pct * surface_error(leaves, rx).rms;
+    {  // the same RMS over the leaves of the net's left half (x < width / 2) and of its right half
+      double l2 = 0, r2 = 0;
+      int lc = 0, rc = 0;
+      for (int y = 0; y < net->height(); ++y)
+        for (int x = 0; x < net->width(); ++x) {
+          const TreeId id = tree.at(0, x, y);
+          const double e = (leaves[static_cast<std::size_t>(id)] - rx[static_cast<std::size_t>(id)]).squaredNorm();
+          if (2 * x < net->width())
+            l2 += e, ++lc;
+          else
+            r2 += e, ++rc;
+        }
+      s_left += pct * std::sqrt(l2 / lc);
+      s_right += pct * std::sqrt(r2 / rc);
+    }
     double e2 = 0;
     int cnt = 0;
     for (int i = 0; i < body.node_count(); ++i) {
@@ -121,8 +188,9 @@ int main(int argc, char** argv) {
     ++n;
   }
   std::printf("net %s level %d (N=%d) k=%.3f: floor(recon of perfect nodes) %.3f  sim recon %.3f  sim "
-              "nodes-vs-blockmean %.3f\n",
+              "nodes-vs-sampled-at-rest %.3f\n",
               net->spec().name.c_str(), level, body.node_count(), k, s_floor / n, s_tc / n, s_tcnode / n);
+  std::printf("  sim recon over the left half %.3f, the right half %.3f\n", s_left / n, s_right / n);
   std::printf("uniform %dx%d k=%.3f: floor(bilinear) %.3f  sim recon %.3f  sim nodes-vs-sampled %.3f\n", coarse.width(),
               coarse.height(), ku, s_ufloor / n, s_u / n, s_unode / n);
 }

@@ -58,7 +58,8 @@ double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours,
     return tree.rest(snapshot.cut.tree_of[static_cast<std::size_t>(i)]);
   };
 
-  // Where begin_coarse puts the parent: its children's centre of mass (its rest position if it holds a pin).
+  // Where begin_coarse puts the parent: its children's centre of mass (its rest position if it holds a pin; where
+  // their fit puts its rest position if it rests on the net's border).
   std::array<Eigen::Vector3d, 4> child_x;
   Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
   double mass = 0;
@@ -69,7 +70,19 @@ double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours,
     mass += tree.node(c).mass;
   }
   const Eigen::Vector3d rp = tree.rest(parent);
-  const Eigen::Vector3d xp = p.pinned() || mass <= 0 ? rp : Eigen::Vector3d(weighted / mass);
+  Eigen::Vector3d xp = p.pinned() || mass <= 0 ? rp : Eigen::Vector3d(weighted / mass);
+  if (!p.pinned() && mass > 0 && tree.touches_border(p) && rp != tree.centroid(parent)) {
+    // On the net's border: where the children's fit puts the parent's rest position (begin_coarse).
+    std::array<Eigen::Vector3d, 4> child_rest;
+    std::array<double, 4> child_mass;
+    for (int k = 0; k < p.child_count; ++k) {
+      const TreeId c = p.children[static_cast<std::size_t>(k)];
+      child_rest[static_cast<std::size_t>(k)] = tree.rest(c);
+      child_mass[static_cast<std::size_t>(k)] = tree.node(c).mass;
+    }
+    const auto n = static_cast<std::size_t>(p.child_count);
+    xp = fitted_arrival({child_x.data(), n}, {child_rest.data(), n}, {child_mass.data(), n}, rp);
+  }
 
   // The parent's fit while it arrives: its tethers to the children and its links to their outside neighbours.
   Eigen::Matrix2d rr = Eigen::Matrix2d::Zero();

@@ -73,6 +73,14 @@ LodTree::LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_re
         centroid_[i] = n.mass > 0 ? Eigen::Vector3d(weighted / n.mass) : Eigen::Vector3d::Zero();
         if (n.pinned_leaf_count != 1) n.anchor_leaf = kNoTreeNode;
         rest_[i] = n.anchor_leaf != kNoTreeNode ? rest(n.anchor_leaf) : centroid_[i];
+        if (n.anchor_leaf == kNoTreeNode) {
+          // A block touching one border along an axis rests on that border, as a uniform grid's edge node does
+          // (docs/methodology.md, "Why calibrated TC-SB errs more than the calibrated grid").
+          if ((n.leaf_x0 == 0) != (n.leaf_x1 == width))
+            rest_[i].x() = leaf_rest[static_cast<std::size_t>(at(0, n.leaf_x0 == 0 ? 0 : width - 1, n.leaf_y0))].x();
+          if ((n.leaf_y0 == 0) != (n.leaf_y1 == height))
+            rest_[i].z() = leaf_rest[static_cast<std::size_t>(at(0, n.leaf_x0, n.leaf_y0 == 0 ? 0 : height - 1))].z();
+        }
       }
     }
   }

@@ -53,8 +53,15 @@ class LodTree {
   /// Mass-weighted centroid of the node's leaves' rest positions.
   const Eigen::Vector3d& centroid(TreeId id) const { return centroid_[static_cast<std::size_t>(id)]; }
   /// Where the node rests when simulated: its centroid, except that a block holding one pinned leaf rests on that
-  /// leaf, so a pinned corner stays exactly fixed whatever level represents it.
+  /// leaf, so a pinned corner stays exactly fixed whatever level represents it, and that a block touching one
+  /// border of the net along an axis rests on that border along that axis (x for the first and last columns, z
+  /// for the first and last rows), as a uniform grid's edge nodes do. Leaves rest where the net puts them.
   const Eigen::Vector3d& rest(TreeId id) const { return rest_[static_cast<std::size_t>(id)]; }
+  /// Whether the node's block touches a border of the net: only such a block can rest away from its centroid when
+  /// it holds no pin. Reads the node alone (not the rest and centroid arrays, which an operation avoids).
+  bool touches_border(const LodNode& n) const {
+    return n.leaf_x0 == 0 || n.leaf_y0 == 0 || n.leaf_x1 == level_width_[0] || n.leaf_y1 == level_height_[0];
+  }
   std::size_t size() const { return nodes_.size(); }
   std::size_t leaf_count() const { return static_cast<std::size_t>(level_width_[0]) * level_height_[0]; }
   int level_count() const { return static_cast<int>(level_width_.size()); }

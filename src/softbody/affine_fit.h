@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/LU>
+#include <span>
 
 namespace tcsb {
 
@@ -16,6 +17,31 @@ inline Eigen::Matrix<double, 3, 2> solve_affine_fit(const Eigen::Matrix2d& rr, c
   const double scale = rr.trace();
   if (scale > 0 && rr.determinant() > 1e-6 * scale * scale) f = xr * rr.inverse();
   return f;
+}
+
+/// Where a block's node appears when its children coarsen into it, if it does not rest at their centre of mass (a
+/// block on the net's border rests on that border, LodTree::rest()): the children's mass-weighted affine fit from
+/// their rest positions to their positions x, evaluated at the block's rest position. Children on one line fit
+/// rigidly (solve_affine_fit). begin_coarse and the feedback's jump estimate (feedback/coarse_jump.cpp) both use it.
+inline Eigen::Vector3d fitted_arrival(std::span<const Eigen::Vector3d> x, std::span<const Eigen::Vector3d> rest,
+                                      std::span<const double> mass, const Eigen::Vector3d& block_rest) {
+  Eigen::Vector3d xm = Eigen::Vector3d::Zero(), rm = Eigen::Vector3d::Zero();
+  double m = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    xm += mass[i] * x[i];
+    rm += mass[i] * rest[i];
+    m += mass[i];
+  }
+  xm /= m;
+  rm /= m;
+  Eigen::Matrix2d rr = Eigen::Matrix2d::Zero();
+  Eigen::Matrix<double, 3, 2> xr = Eigen::Matrix<double, 3, 2>::Zero();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Eigen::Vector2d r(rest[i].x() - rm.x(), rest[i].z() - rm.z());
+    rr += mass[i] * r * r.transpose();
+    xr += mass[i] * (x[i] - xm) * r.transpose();
+  }
+  return xm + solve_affine_fit(rr, xr) * Eigen::Vector2d(block_rest.x() - rm.x(), block_rest.z() - rm.z());
 }
 
 }  // namespace tcsb

@@ -1,6 +1,7 @@
 // TcSoftBody's four TreeCut operations (paper §3.3–3.4) and their blending. Every function here touches one
 // block of the tree and its neighbours: O(1) in the size of the net.
 #include <Eigen/Dense>
+#include <array>
 #include <chrono>
 #include <stdexcept>
 
@@ -199,7 +200,20 @@ void TcSoftBody::begin_coarse(TreeId p) {
     weighted_x += m * to_eigen(n.m_x);
     momentum += m * to_eigen(n.m_v);
   }
-  const btVector3 xp = pn.pinned() ? record(p).rest_position() : to_bullet(weighted_x / pn.mass);
+  btVector3 xp = pn.pinned() ? record(p).rest_position() : to_bullet(weighted_x / pn.mass);
+  if (!pn.pinned() && tree().touches_border(pn) && tree().rest(p) != tree().centroid(p)) {
+    // A block on the net's border rests on the border: it appears where its children's fit puts that point.
+    std::array<Eigen::Vector3d, 4> cx, cr;
+    std::array<double, 4> cm;
+    for (int i = 0; i < pn.child_count; ++i) {
+      const TreeId c = pn.children[static_cast<std::size_t>(i)];
+      cx[static_cast<std::size_t>(i)] = to_eigen(m_nodes[record(c).bullet].m_x);
+      cr[static_cast<std::size_t>(i)] = tree().rest(c);
+      cm[static_cast<std::size_t>(i)] = tree().node(c).mass;
+    }
+    const auto n = static_cast<std::size_t>(pn.child_count);
+    xp = to_bullet(fitted_arrival({cx.data(), n}, {cr.data(), n}, {cm.data(), n}, tree().rest(p)));
+  }
   record(p).sim_mass = 0.5 * pn.mass;
   add_node(p, xp, to_bullet(momentum / pn.mass), pn.children[0]);
   state_[static_cast<std::size_t>(p)] = CutState::kArriving;

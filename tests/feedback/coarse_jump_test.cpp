@@ -73,6 +73,24 @@ TEST(CoarseJump, NoJumpOnFlatOrAffinelyDeformedCloth) {
   }
 }
 
+TEST(CoarseJump, NoJumpOnAffinelyDeformedClothAtTheBorder) {
+  // Blocks on the border rest on it (LodTree::rest()), away from their children's centre of mass: the estimate
+  // must put the parent where begin_coarse does, on the children's fit.
+  for (const bool level1 : {false, true}) {
+    ShapedCut cut(level1);
+    const LodTree& tree = cut.body->tree();
+    const int level = level1 ? 2 : 1;
+    cut.shape([](const Eigen::Vector3d& r) {
+      return Eigen::Vector3d(1.1 * r.x() + 0.2 * r.z() + 0.3, 0.4 * r.x() - 0.3 * r.z() + 2.0, 0.9 * r.z() - 0.1);
+    });
+    // (17 = 16 + 1: the last column's and row's blocks are one leaf wide, on the border already.)
+    for (const TreeId parent : {tree.at(level, 0, 1), tree.at(level, 1, 0), tree.at(level, 0, 0)}) {
+      ASSERT_NE(tree.rest(parent), tree.centroid(parent)) << parent;
+      EXPECT_LT(cut.jump(parent), 1e-4) << "block " << parent << ", level1=" << level1;
+    }
+  }
+}
+
 TEST(CoarseJump, GrowsLinearlyWithTheBendAndWithTheBlock) {
   ShapedCut fine(false), coarse(true);
   fine.shape([](const Eigen::Vector3d& r) { return bend(r, 0.05); });

@@ -307,10 +307,48 @@ TEST(LodTree, PinnedLeafCountAnchorAndRestFollowTheBlock) {
             << "node " << id;
       } else {
         ASSERT_EQ(n.anchor_leaf, kNoTreeNode) << "node " << id;
-        ASSERT_EQ(tree.rest(static_cast<TreeId>(id)), tree.centroid(static_cast<TreeId>(id))) << "node " << id;
+        // Its centroid, but on the border along an axis where it touches one border.
+        Eigen::Vector3d expected = tree.centroid(static_cast<TreeId>(id));
+        const auto leaf = [&](int x, int y) { return net.rest_positions()[static_cast<std::size_t>(net.index(x, y))]; };
+        if (n.leaf_x0 == 0 && n.leaf_x1 < net.width()) expected.x() = leaf(0, 0).x();
+        if (n.leaf_x0 > 0 && n.leaf_x1 == net.width()) expected.x() = leaf(net.width() - 1, 0).x();
+        if (n.leaf_y0 == 0 && n.leaf_y1 < net.height()) expected.z() = leaf(0, 0).z();
+        if (n.leaf_y0 > 0 && n.leaf_y1 == net.height()) expected.z() = leaf(0, net.height() - 1).z();
+        ASSERT_EQ(tree.rest(static_cast<TreeId>(id)), expected) << "node " << id;
+        const bool border = n.leaf_x0 == 0 || n.leaf_y0 == 0 || n.leaf_x1 == net.width() || n.leaf_y1 == net.height();
+        ASSERT_EQ(tree.touches_border(n), border) << "node " << id;
+        if (!border) ASSERT_EQ(tree.rest(static_cast<TreeId>(id)), tree.centroid(static_cast<TreeId>(id)));
       }
     }
   });
+}
+
+TEST(LodTree, BlocksOnTheBorderRestOnIt) {
+  // 10x10 (full blocks) and 9x9 (the last column and row of blocks one leaf wide), no pins.
+  for (const int side : {10, 9}) {
+    SCOPED_TRACE(side);
+    const auto net = make_net(side, side, 0);
+    const LodTree& t = net->lod();
+    const auto leaf = [&](int x, int y) { return net->rest_positions()[static_cast<std::size_t>(net->index(x, y))]; };
+    for (int i = 0; i < side * side; ++i) EXPECT_EQ(t.rest(i), net->rest_positions()[static_cast<std::size_t>(i)]);
+    // Level 1, first column (leaves x 0-1, z 2-3): on the x = 0 edge, halfway between its rows along z.
+    const TreeId west = t.at(1, 0, 1);
+    EXPECT_EQ(t.rest(west).x(), leaf(0, 2).x());
+    EXPECT_EQ(t.rest(west).z(), t.centroid(west).z());
+    EXPECT_NE(t.rest(west), t.centroid(west));
+    // Level 1, last column: on the far edge (the centroid is there already on 9x9).
+    const TreeId east = t.at(1, t.level_width(1) - 1, 1);
+    EXPECT_EQ(t.rest(east).x(), leaf(side - 1, 2).x());
+    EXPECT_EQ(t.rest(east).z(), t.centroid(east).z());
+    // A free corner block rests on the corner; an interior block at its centroid.
+    EXPECT_EQ(t.rest(t.at(1, 0, 0)).x(), leaf(0, 0).x());
+    EXPECT_EQ(t.rest(t.at(1, 0, 0)).z(), leaf(0, 0).z());
+    EXPECT_EQ(t.rest(t.at(2, 0, t.level_height(2) - 1)).x(), leaf(0, side - 1).x());
+    EXPECT_EQ(t.rest(t.at(2, 0, t.level_height(2) - 1)).z(), leaf(0, side - 1).z());
+    EXPECT_EQ(t.rest(t.at(1, 1, 1)), t.centroid(t.at(1, 1, 1)));
+    // The root touches both borders along each axis: its centroid.
+    EXPECT_EQ(t.rest(t.root()), t.centroid(t.root()));
+  }
 }
 
 TEST(LodTree, BlocksHoldingTwoCornersAreNotSimulable) {

@@ -155,6 +155,41 @@ TEST(TcSoftBody, FlatNetAtRestStaysAtRestThroughOperations) {
   }
 }
 
+TEST(TcSoftBody, CoarseNodesAppearAtTheirRestPositionsOnANetAtRest) {
+  // Whole level-1, then level-2 cuts of a net at rest: every node, on the border too (where it rests on the border,
+  // not at its block's centre of mass), appears at its rest position, so no link starts stretched.
+  for (const int side : {33, 34}) {
+    SCOPED_TRACE(side);
+    const auto net = testing::square_net(side);
+    SoftBodyWorld world({});
+    TcSoftBody tc(world, net, testing::test_solver(), {});
+    const LodTree& tree = tc.tree();
+    for (int level = 1; level <= 2; ++level) {
+      for (bool began = true; began;) {
+        began = false;
+        for (int gy = 0; gy < tree.level_height(level); ++gy)
+          for (int gx = 0; gx < tree.level_width(level); ++gx)
+            if (tc.can_coarsen(tree.at(level, gx, gy)).ok) {
+              tc.begin_coarse(tree.at(level, gx, gy));
+              began = true;
+            }
+        while (tc.interpolations() > 0) tc.advance_blends();
+      }
+      ASSERT_EQ(tc.node_count(), tree.level_width(level) * tree.level_height(level)) << "level " << level;
+      int on_border = 0;
+      for (int i = 0; i < tc.node_count(); ++i) {
+        const TreeId id = tc.tree_id(i);
+        const btVector3& x = tc.m_nodes[i].m_x;
+        EXPECT_LT((Eigen::Vector3d(x.x(), x.y(), x.z()) - tree.rest(id)).norm(), 1e-6 * net->extent())
+            << "level " << level << " node " << id;
+        on_border += tree.rest(id) != tree.centroid(id) && !tree.node(id).pinned();
+      }
+      EXPECT_GT(on_border, 0);
+      EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
+    }
+  }
+}
+
 TEST(TcSoftBody, RefiningEverythingBackGivesThePlainCounts) {
   const auto net = testing::square_net(33);
   SoftBodyWorld world({});
