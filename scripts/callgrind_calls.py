@@ -13,10 +13,12 @@ import re
 import sys
 
 
-def read_dump(path, calls, inclusive):
-    """Adds one dump's call counts and inclusive costs (name ids are per file); returns its event names."""
+def read_dump(path, calls, inclusive, self_cost=None):
+    """Adds one dump's call counts and inclusive costs (name ids are per file); returns its event names. With
+    `self_cost`, also adds each function's self cost there: the cost lines of its own block, not its calls' lines."""
     names = {}
     events = ["Ir"]
+    fn = None
     callee = None
     pending = None
     with open(path) as f:
@@ -25,12 +27,14 @@ def read_dump(path, calls, inclusive):
             if line.startswith("events:"):
                 events = line.split()[1:]
                 continue
-            m = re.match(r"^c?fn=\((\d+)\)(?: (.*))?$", line)
+            m = re.match(r"^(c?fn)=\((\d+)\)(?: (.*))?$", line)
             if m:
-                if m.group(2):
-                    names[m.group(1)] = m.group(2)
-                if line.startswith("cfn="):
-                    callee = names.get(m.group(1), m.group(1))
+                if m.group(3):
+                    names[m.group(2)] = m.group(3)
+                if m.group(1) == "cfn":
+                    callee = names.get(m.group(2), m.group(2))
+                else:
+                    fn = names.get(m.group(2), m.group(2))
                 continue
             m = re.match(r"^calls=(\d+)", line)
             if m:
@@ -43,6 +47,10 @@ def read_dump(path, calls, inclusive):
                     for event, value in zip(events, parts[1:]):
                         inclusive[(callee, event)] += int(value)
                 pending = None
+                continue
+            if self_cost is not None and line and (line[0].isdigit() or line[0] in "+-*"):
+                for event, value in zip(events, line.split()[1:]):
+                    self_cost[(fn, event)] += int(value)
     return events
 
 

@@ -8,50 +8,21 @@ For every function whose name contains one of PATTERNS (comma-separated; default
 prints, per step and for both bodies: calls, self instructions (Ir), self EVENTS, inclusive Ir and inclusive EVENTS.
 EVENTS (default D1mr+D1mw, the D1 misses) sums callgrind events, e.g. Bcm+Bim for mispredicted branches (with
 --branch-sim=yes).
-Self costs are the cost lines of a function's own block; inclusive costs are the calls' lines summed by callee (as
-callgrind_calls.read_dump), so a recursive function's inclusive figure counts its nested calls again.
+Self costs are the cost lines of a function's own block; inclusive costs are the calls' lines summed by callee; both
+come from one pass of callgrind_calls.read_dump, so a recursive function's inclusive figure counts its nested calls
+again.
 """
 import collections
-import re
 import sys
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
 from callgrind_calls import read_dump  # noqa: E402
 
 
-def read_self(path):
-    """Self cost per (function, event) of one dump."""
-    names, events, fn, after_calls = {}, ["Ir"], None, False
-    self_cost = collections.Counter()
-    with open(path) as f:
-        for line in f:
-            line = line.rstrip("\n")
-            if line.startswith("events:"):
-                events = line.split()[1:]
-                continue
-            m = re.match(r"^(c?fn)=\((\d+)\)(?: (.*))?$", line)
-            if m:
-                if m.group(3):
-                    names[m.group(2)] = m.group(3)
-                if m.group(1) == "fn":
-                    fn = names.get(m.group(2), m.group(2))
-                continue
-            if line.startswith("calls="):
-                after_calls = True
-                continue
-            if line and (line[0].isdigit() or line[0] in "+-*"):
-                if after_calls:
-                    after_calls = False
-                    continue
-                for event, value in zip(events, line.split()[1:]):
-                    self_cost[(fn, event)] += int(value)
-    return self_cost
-
-
 def costs(path):
-    calls, inclusive = collections.Counter(), collections.Counter()
-    read_dump(path, calls, inclusive)
-    return calls, inclusive, read_self(path)
+    calls, inclusive, self_cost = collections.Counter(), collections.Counter(), collections.Counter()
+    read_dump(path, calls, inclusive, self_cost)
+    return calls, inclusive, self_cost
 
 
 def main(args):
