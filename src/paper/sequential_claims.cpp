@@ -78,7 +78,7 @@ Look judge(RunResult& result, const std::vector<TrackedClaim*>& judged, int look
 }  // namespace
 
 double repetition_cost_s(const RunResult& result, const std::vector<std::size_t>& cases) {
-  const double steps = steps_per_repetition(result.suite);
+  const double steps = static_cast<double>(steps_per_repetition(result.suite));
   double total_ms = 0;
   for (const std::size_t i : cases) {
     const CaseResult& c = result.cases[i];

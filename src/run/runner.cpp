@@ -87,7 +87,7 @@ class RepetitionRun {
   RepetitionRun(const Suite& suite, const CaseKey& key, int repetition, std::shared_ptr<const Net> net,
                 std::uint64_t seed, std::vector<OpSample>& op_samples)
       : suite_(suite), key_(key), net_(std::move(net)), seed_(seed), world_(suite.world), op_samples_(op_samples),
-        recorder_(op_samples), total_(steps_per_repetition(suite)), ops_before_(op_samples.size()) {
+        recorder_(op_samples), total_(static_cast<int>(steps_per_repetition(suite))), ops_before_(op_samples.size()) {
     rep_.repetition = repetition;
     const StepClock::time_point built0 = StepClock::now();
     body_ = make_case_body(suite, key, world_, net_, seed);
@@ -182,7 +182,9 @@ class RepetitionRun {
   std::vector<OpSample>& op_samples_;
   OpRecorder recorder_;
   std::unique_ptr<CaseBody> body_;
-  const int total_;  // every step the repetition takes (steps_per_repetition)
+  // Every step the repetition takes (steps_per_repetition); an int, since a suite that runs has passed the memory
+  // check, which counts a recorded sample per step.
+  const int total_;
   const std::size_t ops_before_;
   int step_ = 0;  // steps taken so far, warm-up included
   RepetitionResult rep_;

@@ -50,7 +50,8 @@ std::vector<bool> shard_units(const Suite& suite, const ShardIndex& shard) {
   const std::vector<Suite> configurations = configuration_suites(suite);
   for (std::size_t c = 0; c < configurations.size(); ++c) {
     // A configuration's steps scale its cost; the factor is exactly 1 without axes, so the split is as before.
-    const double scale = static_cast<double>(steps_per_repetition(configurations[c])) / steps_per_repetition(suite);
+    const double scale =
+        static_cast<double>(steps_per_repetition(configurations[c])) / static_cast<double>(steps_per_repetition(suite));
     for (std::size_t i = 0; i < nets; ++i) cost[c * nets + i] = net_cost_estimate(suite, i) * scale;
   }
   // Longest processing time first: a greedy split within 4/3 of the best possible makespan.

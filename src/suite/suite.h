@@ -98,10 +98,11 @@ struct Suite {
 };
 
 /// Every step a repetition of a case takes, warm-up and the untimed step opening each interleaved block included.
-inline int steps_per_repetition(const Suite& suite) {
-  const int blocks =
-      suite.interleave_steps > 0 ? (suite.steps + suite.interleave_steps - 1) / suite.interleave_steps : 0;
-  return suite.warmup_steps + suite.steps + blocks;
+/// In 64 bits: each field may be up to INT_MAX, and only the memory check bounds their sum.
+inline long long steps_per_repetition(const Suite& suite) {
+  const long long steps = suite.steps, k = suite.interleave_steps;
+  const long long blocks = k > 0 && steps > 0 ? (steps - 1) / k + 1 : 0;
+  return suite.warmup_steps + steps + blocks;
 }
 
 /// How many configurations the suite runs: one without axes.

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <climits>
+
 namespace tcsb {
 namespace {
 
@@ -60,6 +62,10 @@ TEST(Runner, StepsPerRepetitionCountTheUntimedStepOpeningEachBlock) {
   EXPECT_EQ(steps_per_repetition(s), 18);
   s.interleave_steps = 10;
   EXPECT_EQ(steps_per_repetition(s), 16);
+  s.interleave_steps = INT_MAX;  // one block, and no overflow on the way (the sanitizer build would report it)
+  EXPECT_EQ(steps_per_repetition(s), 16);
+  s.steps = s.warmup_steps = INT_MAX;
+  EXPECT_EQ(steps_per_repetition(s), 2LL * INT_MAX + 1);
 }
 
 TEST(Runner, SideBySideStepsEachCaseAsItWouldStepAlone) {
@@ -69,7 +75,7 @@ TEST(Runner, SideBySideStepsEachCaseAsItWouldStepAlone) {
   run_more_repetitions(run, {0, 2}, 1);  // side by side too: plain and TC-SB at 0.5 of net a
   // Alone, with as many steps in all: the same final states, so stepping beside other bodies changes nothing.
   Suite alone = two_nets();
-  alone.steps = steps_per_repetition(side) - alone.warmup_steps;
+  alone.steps = static_cast<int>(steps_per_repetition(side)) - alone.warmup_steps;
   const RunResult reference = run_suite(alone, Context{});
   ASSERT_EQ(run.cases.size(), reference.cases.size());
   for (std::size_t i = 0; i < run.cases.size(); ++i) {
