@@ -10,6 +10,10 @@
 //          pass measures); nodes-vs-sampled-at-rest: its nodes against those points (the body's own error);
 //   and for the grid: bilinear floor, simulated, and its nodes against the reference sampled at them.
 // "sort" reorders the cut's Bullet links row-major, as a plain grid has them (does link order matter?).
+// Patterns of level-1 blocks in a cut that is otherwise at level 0 (LEVEL is then ignored; docs/methodology.md,
+// "Interfaces between levels"): "checker" every other block, "icheck" / "bcheck" those of them away from / on the
+// border, "interior" / "border" every block away from / on the border, "sparse" every third block along both axes
+// (isolated blocks), "sqN" a centred square of N x N blocks, "csN" an N x N square in the corner at the origin.
 // Build (after the Release build):
 //   g++ -O2 -std=c++20 -DNDEBUG -I src -I build/generated -isystem /usr/include/eigen3 -isystem /usr/include/bullet \
 //     scripts/experiments/level_cut_error.cpp -o /tmp/level_cut_error build/libtcsb_fidelity.a build/libtcsb_case.a \
@@ -19,7 +23,7 @@
 // Every simulated node starts at its rest position. To try other rest positions of the coarse levels on code before
 // blocks rested on the border (commit 94e0e8f), build with src/net/lod_tree.cpp patched by border_rest.patch added
 // before the libraries, and set TCSB_EXP_BORDER=snap|vertex|lattice (that patch says what each does).
-// Usage: level_cut_error SUITE LEVEL K[,K2,K3] BUDGET KU [sort|half]
+// Usage: level_cut_error SUITE LEVEL K[,K2,K3] BUDGET KU [sort|half|PATTERN]
 #include "analysis/fidelity_metrics.h"
 #include "case/case_body.h"
 #include "fidelity/calibration.h"
@@ -63,7 +67,42 @@ int main(int argc, char** argv) {
   // "half": only the blocks of the net's left half (x below the middle) coarsen, to `level`; the right half stays at
   // level 0 (a cut of two levels, with one boundary between them down the middle).
   const bool half = argc > 6 && std::string(argv[6]) == "half";
+  const std::string pattern = argc > 6 ? argv[6] : "";
   const auto coarsen = [&](TcSoftBody& b) {
+    if (pattern == "checker" || pattern == "icheck" || pattern == "border" || pattern == "interior" ||
+        pattern == "sparse" || pattern == "bcheck" || pattern.rfind("sq", 0) == 0 || pattern.rfind("cs", 0) == 0) {
+      const LodTree& t = b.tree();
+      for (bool began = true; began;) {  // rounds: a block cannot coarsen while its neighbour blends
+        began = false;
+        for (int gy = 0; gy < t.level_height(1); ++gy)
+          for (int gx = 0; gx < t.level_width(1); ++gx) {
+            const TreeId id = t.at(1, gx, gy);
+            const bool onb = t.touches_border(t.node(id));
+            bool want = false;
+            if (pattern.rfind("sq", 0) == 0) {
+              const int side = std::atoi(pattern.c_str() + 2);
+              const int c0 = (t.level_width(1) - side) / 2;
+              want = gx >= c0 && gx < c0 + side && gy >= c0 && gy < c0 + side;
+            }
+            if (pattern.rfind("cs", 0) == 0) {
+              const int side = std::atoi(pattern.c_str() + 2);
+              want = gx < side && gy < side;
+            }
+            if (pattern == "checker") want = (gx + gy) % 2 == 0;
+            if (pattern == "icheck") want = (gx + gy) % 2 == 0 && !onb;
+            if (pattern == "bcheck") want = (gx + gy) % 2 == 0 && onb;
+            if (pattern == "border") want = onb;
+            if (pattern == "interior") want = !onb;
+            if (pattern == "sparse") want = gx % 3 == 1 && gy % 3 == 1;
+            if (want && b.can_coarsen(id).ok) {
+              b.begin_coarse(id);
+              began = true;
+            }
+          }
+        while (b.interpolations() > 0) b.advance_blends();
+      }
+      return b.committed_count();
+    }
     if (!half) return coarsen_to_level(b, level);
     const LodTree& t = b.tree();
     for (int l = 1; l <= level; ++l)

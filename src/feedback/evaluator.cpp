@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "feedback/interface_balance.h"
+
 namespace tcsb {
 
 namespace {
@@ -27,7 +29,7 @@ void keep_best(std::vector<Candidate>& all, int limit, Better better) {
 }  // namespace
 
 void rank_candidates(const CutSnapshot& snapshot, std::span<const float> saliency, int limit, Evaluation& out,
-                     const JumpCharge& charge) {
+                     const JumpCharge& charge, double interface_charge) {
   const LodTree& tree = *snapshot.cut.tree;
   out.snapshot_step = snapshot.step;
   const auto higher = [](const Candidate& a, const Candidate& b) {
@@ -45,8 +47,14 @@ void rank_candidates(const CutSnapshot& snapshot, std::span<const float> salienc
     if (snapshot.cut.state[id] != CutState::kActive) continue;
     const LodNode& node = nodes[id];
     const float s = saliency[static_cast<std::size_t>(snapshot.cut.index[id])];
-    if (!node.is_leaf())
-      out.refine.push_back({(s + kSaliencyFloor) * static_cast<double>(1u << node.level), static_cast<TreeId>(id)});
+    if (!node.is_leaf()) {
+      double priority = (s + kSaliencyFloor) * static_cast<double>(1u << node.level);
+      // A refine adds a level boundary towards every neighbour at its level or coarser and removes one towards every
+      // finer neighbour: a positive balance lowers the priority.
+      if (interface_charge > 0)
+        priority *= std::exp(-interface_charge * neighbour_balance(snapshot.cut, static_cast<TreeId>(id)) / 4.0);
+      out.refine.push_back({priority, static_cast<TreeId>(id)});
+    }
     // Each parent once: from its first child (the even-even corner of the block, so the parent is read only for a
     // quarter of the nodes), when every child is active.
     const TreeId parent = node.parent;
@@ -65,6 +73,9 @@ void rank_candidates(const CutSnapshot& snapshot, std::span<const float> salienc
     }
     if (!all_active) continue;
     double priority = (worst + kSaliencyFloor) * static_cast<double>(1u << p.level);
+    // A coarsen removes the boundary towards every neighbour at the parent's level or coarser and adds one towards
+    // every finer neighbour: a positive balance lowers the priority (lower coarsens sooner).
+    if (interface_charge > 0) priority *= std::exp(-interface_charge * neighbour_balance(snapshot.cut, parent) / 4.0);
     if (charge.per_pct > 0)
       priority += charge.per_pct * 100.0 * coarse_jump(snapshot, *charge.neighbours, parent) / charge.extent;
     out.coarse.push_back({priority, parent});

@@ -6,7 +6,8 @@
 // coarse priority (lower is better to coarsen). The controller pairs them under the budget with the paper's
 // threshold (§5): a node is inserted only if its gain exceeds the penalty of the removal it forces plus the
 // threshold, so nothing flips back and forth. Optionally a coarse candidate is also charged with the jump its
-// coarsen would make the reconstructed surface pop by (feedback/coarse_jump.h), so curved blocks are merged last.
+// coarsen would make the reconstructed surface pop by (feedback/coarse_jump.h), so curved blocks are merged last,
+// and every candidate with the level boundaries it would add (feedback/interface_balance.h).
 #pragma once
 
 #include <span>
@@ -40,8 +41,10 @@ struct JumpCharge {
 /// Ranks at most `limit` candidates of each kind (ties broken by a hash of the tree id: deterministic, and spread
 /// over the net).
 /// With a charge, each coarse candidate's priority grows by per_pct x its jump in % of the extent (the snapshot must
-/// hold positions).
+/// hold positions). With an interface charge c > 0, every candidate's priority is multiplied by exp(-c b / 4), where
+/// b is its neighbour_balance (feedback/interface_balance.h): coarsens that merge a block into coarser surroundings go
+/// sooner, coarsens that leave an isolated block later, and refines likewise the other way round.
 void rank_candidates(const CutSnapshot& snapshot, std::span<const float> saliency, int limit, Evaluation& out,
-                     const JumpCharge& charge = {});
+                     const JumpCharge& charge = {}, double interface_charge = 0);
 
 }  // namespace tcsb

@@ -27,6 +27,11 @@ struct FeedbackSettings {
   /// (feedback/coarse_jump.h); 0 disables the charge (and its cost: positions copied, the jump computed per
   /// candidate). Against popping (issue 20, part 4); the paper has no such term.
   double popping_charge = 0.0;
+  /// Weight of the level boundaries an operation adds or removes (feedback/interface_balance.h): each candidate's
+  /// priority is multiplied by exp(-interface_charge x its neighbour balance / 4), so coarse regions grow together
+  /// instead of as isolated blocks. 0 disables it (and its O(levels) per candidate). Issue 20; the paper has no such
+  /// term.
+  double interface_charge = 0.0;
 };
 
 /// Name used in suites and reports: "saliency" or "random".

@@ -79,6 +79,7 @@ ojson suite_json(const Suite& s) {
   // Only when set: a suite that does not charge popping writes what it wrote before the setting existed, so its
   // results still compare with older baselines (the gate refuses runs whose suite blocks differ).
   if (f.popping_charge > 0) out["feedback"]["popping_charge"] = json_number(f.popping_charge);
+  if (f.interface_charge > 0) out["feedback"]["interface_charge"] = json_number(f.interface_charge);
   // Optional: only a suite with axes has it, so the block of a suite without stays as it always was.
   if (!s.axes.empty()) {
     ojson axes = ojson::object();

@@ -83,7 +83,8 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
   if (const json* j = root.find("feedback")) {
     const Object fb(r, *j, "feedback",
                     {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale",
-                     "illumination", "light_direction", "parallel", "threads", "max_step_ms", "popping_charge"});
+                     "illumination", "light_direction", "parallel", "threads", "max_step_ms", "popping_charge",
+                     "interface_charge"});
     FeedbackSettings& f = s.feedback;
     for (const char* key :
          {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale", "illumination"})
@@ -96,6 +97,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     fb.read("threads", f.threads, 1, 64);
     fb.read("max_step_ms", f.max_step_ms, kNonNegative);
     read_axis_setting(r, fb, "popping_charge", s);
+    read_axis_setting(r, fb, "interface_charge", s);
   }
 
   if (const json* j = root.find("fidelity")) {

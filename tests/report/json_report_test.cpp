@@ -128,13 +128,16 @@ TEST(NativeJson, SuiteBlock) {
   EXPECT_EQ(suite["methods"], (ojson{"plain", "tcsb"}));
 }
 
-TEST(NativeJson, ThePoppingChargeIsWrittenOnlyWhenSet) {
+TEST(NativeJson, TheCandidateChargesAreWrittenOnlyWhenSet) {
   // Absent at 0, so a suite without it writes what it wrote before the setting existed and its results still
   // compare with older baselines.
   RunResult run = small_run();
   EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("popping_charge"));
   run.suite.feedback.popping_charge = 2.5;
   EXPECT_EQ(native_json(run)["suite"]["feedback"]["popping_charge"], 2.5);
+  EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("interface_charge"));
+  run.suite.feedback.interface_charge = 3;
+  EXPECT_EQ(native_json(run)["suite"]["feedback"]["interface_charge"], 3.0);
 }
 
 TEST(NativeJson, CaseAndRepetitionKeys) {

@@ -93,6 +93,9 @@ TEST(ShippedSuites, ConvergedIsThePaperSuiteAtThirtyTwoIterationsWithTheWholeFid
   EXPECT_EQ(c.world.dt, p.world.dt);
   EXPECT_EQ(c.solver.piterations, 32);  // converged links: strain of a few percent, noise floor <= 0.01 %
   EXPECT_EQ(c.tcsb.blend_steps, p.tcsb.blend_steps);
+  // Fidelity is measured with the feedback charged for level boundaries; the paper's own suite has no such term.
+  EXPECT_GT(c.feedback.interface_charge, 0);
+  EXPECT_EQ(p.feedback.interface_charge, 0);
   EXPECT_TRUE(c.fidelity.enabled);
   EXPECT_TRUE(c.fidelity.ablations);
   EXPECT_FALSE(c.fidelity.pareto_targets.empty());
@@ -405,6 +408,8 @@ TEST(SuiteReject, OtherRanges) {
   rejected_edit([](json& j) { j["feedback"] = {{"max_step_ms", -1}}; }, "feedback.max_step_ms");
   rejected_edit([](json& j) { j["feedback"] = {{"popping_charge", -0.5}}; }, "feedback.popping_charge");
   rejected_edit([](json& j) { j["feedback"] = {{"popping_charge", "high"}}; }, "feedback.popping_charge");
+  rejected_edit([](json& j) { j["feedback"] = {{"interface_charge", -1}}; }, "feedback.interface_charge");
+  rejected_edit([](json& j) { j["feedback"] = {{"interface_charge", true}}; }, "feedback.interface_charge");
   rejected_edit([](json& j) { j["fidelity"] = {{"rms_threshold_pct", 0}}; }, "fidelity.rms_threshold_pct");
   rejected_edit([](json& j) { j["fidelity"] = {{"pareto_targets", {0.5, 1.5}}}; }, "fidelity.pareto_targets[1]");
   // Enabled without TC-SB it would measure nothing and look like a pass.

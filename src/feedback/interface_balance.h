@@ -1,0 +1,21 @@
+// Interface balance: how a candidate operation changes the boundaries between cut levels around it.
+//
+// Where a coarse block meets finer cloth, Bullet's links fan from the block's one node to the two finer nodes on
+// each side. The fan is not the fine cloth's material: it pulls the finer rows together under tension, and no single
+// link stiffness per level mends it (docs/methodology.md, "Interfaces between levels"). A cut's error therefore grows
+// with the boundaries between its levels, not only with how coarse it is: scattered isolated blocks err far more than
+// one coarse region of the same size. The evaluator can weigh each candidate by the boundaries it would add or remove
+// (FeedbackSettings::interface_charge).
+#pragma once
+
+#include "feedback/cut_snapshot.h"
+
+namespace tcsb {
+
+/// For the tree node `id`, the sum over its four same-level grid neighbours (those that exist) of +1 when the cloth at
+/// the neighbour's place is simulated at the neighbour's level or coarser (the neighbour or one of its ancestors is
+/// committed), and -1 when it is finer. Range [-4, 4]. Coarsening `id`'s children into `id` removes a level boundary
+/// on each +1 side and adds one on each -1 side; refining `id` does the opposite. O(levels).
+int neighbour_balance(const CutView& cut, TreeId id);
+
+}  // namespace tcsb
