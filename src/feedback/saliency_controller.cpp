@@ -45,7 +45,8 @@ void SaliencyController::evaluate() {
     cut_neighbours(snapshot_.cut, neighbours_);
     charge = {settings_.popping_charge, extent_, &neighbours_};
   }
-  rank_candidates(snapshot_, saliency_, 2 * settings_.max_ops_per_step, evaluation_, charge);
+  rank_candidates(snapshot_, saliency_, 2 * settings_.max_ops_per_step, evaluation_, charge,
+                  settings_.interface_charge);
   evaluation_ms_ = ms_since(t0);
 }
 

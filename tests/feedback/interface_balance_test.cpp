@@ -8,6 +8,7 @@
 
 #include "feedback/budget_policy.h"
 #include "feedback/evaluator.h"
+#include "feedback/saliency_controller.h"
 #include "softbody/bullet_setup.h"
 
 namespace tcsb {
@@ -124,6 +125,33 @@ TEST(InterfaceBalance, TheChargeLeavesFewerLevelBoundaries) {
   const int plain = boundaries_after_settling(0.0), charged = boundaries_after_settling(3.0);
   EXPECT_GT(plain, 0);
   EXPECT_LT(charged, plain / 2) << "plain " << plain << ", charged " << charged;
+}
+
+/// A 33 x 33 net pinned at two corners, swinging, under the saliency controller at 75 % for 200 steps: the level
+/// boundaries of its final cut.
+int boundaries_of_the_controllers_cut(double interface_charge) {
+  NetSpec spec;
+  spec.width = spec.height = 33;
+  const auto net = std::make_shared<const Net>(spec);
+  SoftBodyWorld world({});
+  TcSoftBody body(world, net, {}, {});
+  FeedbackSettings settings;
+  settings.threshold = 0.3;
+  settings.interface_charge = interface_charge;
+  SaliencyController controller(settings, net->node_count() * 3 / 4);
+  for (int step = 0; step < 200; ++step) {
+    body.advance_blends();
+    controller.before_step(body);
+    body.simulate_step(1.0f / 60);
+    controller.after_step(body);
+  }
+  EXPECT_TRUE(controller.converged());
+  return level_boundary_links(body);
+}
+
+TEST(InterfaceBalance, TheControllerPassesTheChargeOn) {
+  const int plain = boundaries_of_the_controllers_cut(0.0), charged = boundaries_of_the_controllers_cut(3.0);
+  EXPECT_LT(charged, plain) << "plain " << plain << ", charged " << charged;
 }
 
 }  // namespace
