@@ -144,8 +144,11 @@ bool any_cell(const ojson& array, const std::function<std::string(const ojson&)>
 
 bool non_empty_array(const ojson& value) { return value.is_array() && !value.empty(); }
 
+/// The first 7 hex digits, and "-dirty" when the build had uncommitted changes (the run is then not that commit's).
 std::string short_commit(const ojson& commit) {
-  return commit.is_string() ? commit.get<std::string>().substr(0, 7) : std::string();
+  if (!commit.is_string()) return "";
+  const std::string text = commit.get<std::string>();
+  return text.substr(0, 7) + (text.size() > 7 && text.ends_with("-dirty") ? "-dirty" : "");
 }
 
 /// "2026-11-22T09:27:13Z" as "2026-11-22 09:27:13 UTC"; any other text as it is.

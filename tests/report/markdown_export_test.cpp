@@ -72,6 +72,14 @@ TEST(MarkdownExport, HeadingAndSourceLineComeFromTheDocument) {
   EXPECT_NE(md.substr(md.size() - 2), "\n\n") << "no blank line at the end: the script joins sections";
 }
 
+TEST(MarkdownExport, ADirtyBuildSaysSo) {
+  RunResult run = synthetic_run();
+  run.context.git_commit = "abcdef0123456789-dirty";
+  const std::string md = markdown_report(native_json(run));
+  EXPECT_EQ(md.substr(0, md.find('\n')), "## Run: suite `synthetic`, 2026-01-02, abcdef0-dirty");
+  EXPECT_TRUE(contains(md, " · commit abcdef0-dirty · ")) << md;
+}
+
 TEST(MarkdownExport, ARecordedCommandLeadsTheSourceLine) {
   ojson doc = synthetic_document();
   doc["context"]["command"] = ojson::array({"tcsb", "run", "ci", "--out", "x|y.json"});
