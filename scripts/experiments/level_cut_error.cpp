@@ -13,7 +13,11 @@
 // Patterns of level-1 blocks in a cut that is otherwise at level 0 (LEVEL is then ignored; docs/methodology.md,
 // "Interfaces between levels"): "checker" every other block, "icheck" / "bcheck" those of them away from / on the
 // border, "interior" / "border" every block away from / on the border, "sparse" every third block along both axes
-// (isolated blocks), "sqN" a centred square of N x N blocks, "csN" an N x N square in the corner at the origin.
+// (isolated blocks), "sqN" a centred square of N x N blocks, "csN" an N x N square in the corner at the origin,
+// "file:PATH" the blocks marked '#' in a text file of one row of level-1 blocks per line (as feedback_freeze.patch's
+// TCSB_EXP_MAP prints the feedback's cut). With LCE_DELAY=d and an "sqN" pattern the subject instead starts at full
+// resolution like the reference and begins the square's coarsens at step d, blending one step per step as TC-SB does
+// in the fidelity pass (a coarsen made while the cloth moves, against one made at rest).
 // Build (after the Release build):
 //   g++ -O2 -std=c++20 -DNDEBUG -I src -I build/generated -isystem /usr/include/eigen3 -isystem /usr/include/bullet \
 //     scripts/experiments/level_cut_error.cpp -o /tmp/level_cut_error build/libtcsb_fidelity.a build/libtcsb_case.a \
@@ -70,7 +74,8 @@ int main(int argc, char** argv) {
   const std::string pattern = argc > 6 ? argv[6] : "";
   const auto coarsen = [&](TcSoftBody& b) {
     if (pattern == "checker" || pattern == "icheck" || pattern == "border" || pattern == "interior" ||
-        pattern == "sparse" || pattern == "bcheck" || pattern.rfind("sq", 0) == 0 || pattern.rfind("cs", 0) == 0) {
+        pattern == "sparse" || pattern == "bcheck" || pattern.rfind("sq", 0) == 0 || pattern.rfind("cs", 0) == 0 ||
+        pattern.rfind("file:", 0) == 0) {
       const LodTree& t = b.tree();
       for (bool began = true; began;) {  // rounds: a block cannot coarsen while its neighbour blends
         began = false;
@@ -87,6 +92,17 @@ int main(int argc, char** argv) {
             if (pattern.rfind("cs", 0) == 0) {
               const int side = std::atoi(pattern.c_str() + 2);
               want = gx < side && gy < side;
+            }
+            if (pattern.rfind("file:", 0) == 0) {
+              static std::vector<std::string> rows = [&] {
+                std::vector<std::string> r;
+                FILE* f = std::fopen(pattern.c_str() + 5, "r");
+                char line[256];
+                while (f && std::fgets(line, sizeof line, f)) r.emplace_back(line);
+                return r;
+              }();
+              want =
+                  gy < static_cast<int>(rows.size()) && gx < static_cast<int>(rows[gy].size()) && rows[gy][gx] == '#';
             }
             if (pattern == "checker") want = (gx + gy) % 2 == 0;
             if (pattern == "icheck") want = (gx + gy) % 2 == 0 && !onb;
@@ -120,14 +136,17 @@ int main(int argc, char** argv) {
       }
     return b.committed_count();
   };
-  coarsen(body);
+  // LCE_DELAY=d: the subject starts at full resolution and its pattern's coarsens begin at step d, blending one step
+  // per step as the fidelity pass's TC-SB does (rounds of coarsens as the blends allow).
+  const int delay = std::getenv("LCE_DELAY") ? std::atoi(std::getenv("LCE_DELAY")) : -1;
+  if (delay < 0) coarsen(body);
   // Every simulated node starts at its rest position (the net starts at rest; a coarsened node would otherwise
   // start at its block's centre of mass, which differs from its rest position under TCSB_EXP_BORDER).
   const auto place_at_rest = [](TcSoftBody& b) {
     for (int i = 0; i < b.node_count(); ++i)
       b.m_nodes[i].m_x = b.m_nodes[i].m_q = to_bullet(b.tree().rest(b.tree_id(i)));
   };
-  place_at_rest(body);
+  if (delay < 0) place_at_rest(body);
   if (argc > 6 && std::string(argv[6]) == "sort") {
     // Throwaway: Bullet's links in row-major order of their first endpoint (as a plain grid has them), horizontal
     // first.
@@ -160,6 +179,15 @@ int main(int argc, char** argv) {
   int n = 0;
   for (int s = 0; s < suite.warmup_steps + suite.steps; ++s) {
     step_soft_body(*ref, suite.world.dt);
+    if (delay >= 0 && s >= delay && pattern.rfind("sq", 0) == 0) {
+      body.advance_blends();
+      const LodTree& t = body.tree();
+      const int side = std::atoi(pattern.c_str() + 2);
+      const int c0 = (t.level_width(1) - side) / 2;
+      for (int gy = c0; gy < c0 + side; ++gy)
+        for (int gx = c0; gx < c0 + side; ++gx)
+          if (body.can_coarsen(t.at(1, gx, gy)).ok) body.begin_coarse(t.at(1, gx, gy));
+    }
     body.simulate_step(suite.world.dt);
     step_soft_body(*uni, suite.world.dt);
     if (s < suite.warmup_steps) continue;
