@@ -7,6 +7,7 @@
 
 #include "feedback/budget_policy.h"
 #include "feedback/saliency_controller.h"
+#include "fixed_field.h"
 #include "softbody/bullet_setup.h"
 
 namespace tcsb {
@@ -32,24 +33,13 @@ TEST(BudgetPolicy, ThresholdPreventsOscillationOnAConstantField) {
   settings.max_ops_per_step = 16;
   BudgetState state;
   const int budget = 500;
-  CutSnapshot snapshot;
-  Evaluation evaluation;
-  std::vector<int> ops_per_step;
-  for (int step = 0; step < 400; ++step) {
-    body.advance_blends();
-    take_snapshot(body, cut_view(body), false, step, snapshot);
-    std::vector<float> s(snapshot.size());
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const Eigen::Vector3d& r = net->lod().rest(snapshot.cut.tree_of[i]);
-      s[i] = static_cast<float>(std::exp(-((r.x() - 2) * (r.x() - 2) + (r.z() - 2) * (r.z() - 2))));
-    }
-    rank_candidates(snapshot, s, 2 * settings.max_ops_per_step, evaluation);
-    ops_per_step.push_back(apply_evaluation(body, evaluation, budget, settings, state));
-    body.simulate_step(kDt);
-    if (state.converged) {
-      ASSERT_LE(body.node_count(), budget) << "step " << step;
-    }
-  }
+  const std::vector<int> ops_per_step = testing::run_on_fixed_field(
+      body, settings, budget, 400,
+      [&](TreeId id) {
+        const Eigen::Vector3d& r = net->lod().rest(id);
+        return static_cast<float>(std::exp(-((r.x() - 2) * (r.x() - 2) + (r.z() - 2) * (r.z() - 2))));
+      },
+      state);
   EXPECT_TRUE(state.converged);
   int late_ops = 0;
   for (std::size_t i = 300; i < ops_per_step.size(); ++i) late_ops += ops_per_step[i];

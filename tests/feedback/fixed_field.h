@@ -1,0 +1,36 @@
+// Test helper: the budget policy driven by a fixed salience field, evaluated afresh every step on a net without
+// gravity, so whatever the cut does comes from the policy and the field alone.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "feedback/budget_policy.h"
+#include "softbody/bullet_setup.h"
+
+namespace tcsb::testing {
+
+/// Runs `steps` steps of `body` (its world must have no gravity), ranking with settings.interface_charge and
+/// applying with the policy under `budget`; `field(tree id)` is a node's salience. Checks that the body never holds
+/// more than `budget` nodes once it converged. Returns the operations begun per step.
+template <class Field>
+std::vector<int> run_on_fixed_field(TcSoftBody& body, const FeedbackSettings& settings, int budget, int steps,
+                                    Field field, BudgetState& state) {
+  CutSnapshot snapshot;
+  Evaluation evaluation;
+  std::vector<int> ops_per_step;
+  for (int step = 0; step < steps; ++step) {
+    body.advance_blends();
+    take_snapshot(body, cut_view(body), false, step, snapshot);
+    std::vector<float> s(snapshot.size());
+    for (std::size_t i = 0; i < s.size(); ++i) s[i] = field(snapshot.cut.tree_of[i]);
+    rank_candidates(snapshot, s, 2 * settings.max_ops_per_step, evaluation, {}, settings.interface_charge);
+    ops_per_step.push_back(apply_evaluation(body, evaluation, budget, settings, state));
+    body.simulate_step(1.0f / 60);
+    if (state.converged) EXPECT_LE(body.node_count(), budget) << "step " << step;
+  }
+  return ops_per_step;
+}
+
+}  // namespace tcsb::testing
