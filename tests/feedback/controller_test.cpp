@@ -25,10 +25,8 @@ TEST(BudgetPolicy, ThresholdPreventsOscillationOnAConstantField) {
   // A fixed saliency field (a bump in one quadrant), evaluated afresh every step: once the cut has settled, no
   // operation may begin any more — without the threshold, refines and coarsens of equal worth would alternate.
   const auto net = net_of(33);
-  WorldSettings still;
-  still.gravity = 0;
-  SoftBodyWorld world(still);
-  TcSoftBody body(world, net, {}, {});
+  testing::StillBody still(net);
+  TcSoftBody& body = still.body;
   FeedbackSettings settings;
   settings.max_ops_per_step = 16;
   BudgetState state;

@@ -11,7 +11,19 @@
 
 namespace tcsb::testing {
 
-/// Runs `steps` steps of `body` (its world must have no gravity), ranking with settings.interface_charge and
+/// A TC-SB body of `net` with default settings, in a world without gravity: it moves only as operations move it.
+struct StillBody {
+  explicit StillBody(std::shared_ptr<const Net> net) : world(without_gravity()), body(world, std::move(net), {}, {}) {}
+  static WorldSettings without_gravity() {
+    WorldSettings settings;
+    settings.gravity = 0;
+    return settings;
+  }
+  SoftBodyWorld world;
+  TcSoftBody body;
+};
+
+/// Runs `steps` steps of `body` (a StillBody's), ranking with settings.interface_charge and
 /// applying with the policy under `budget`; `field(tree id)` is a node's salience. Checks that the body never holds
 /// more than `budget` nodes once it converged. Returns the operations begun per step.
 template <class Field>

@@ -91,10 +91,8 @@ TEST(InterfaceBalance, TheChargeCoarsensNextToCoarseBlocksFirst) {
 /// a budget of 75 % of the nodes: the level boundaries of the cut it settles in.
 int boundaries_after_settling(double interface_charge) {
   const auto net = unpinned_net(33);
-  WorldSettings still;
-  still.gravity = 0;
-  SoftBodyWorld world(still);
-  TcSoftBody body(world, net, {}, {});
+  testing::StillBody still(net);
+  TcSoftBody& body = still.body;
   FeedbackSettings settings;
   settings.max_ops_per_step = 16;
   settings.threshold = 0.3;
