@@ -137,10 +137,10 @@ std::vector<FidelityRow> fidelity_rows(const FidelityResult& result) {
   return rows;
 }
 
-std::vector<ParetoPoint> pareto_sweep(const std::vector<FidelityRow>& rows) {
+std::vector<ParetoPoint> pareto_sweep(const std::vector<FidelityRow>& rows, const std::string& method) {
   std::vector<ParetoPoint> sweep;
   for (const FidelityRow& r : rows) {
-    if (r.method != "tcsb") continue;
+    if (r.method != method) continue;
     ParetoPoint p;
     p.compression = r.compression;
     if (r.nets > 0) {

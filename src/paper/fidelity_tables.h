@@ -47,8 +47,9 @@ struct ParetoPoint {
   bool on_front = false;
 };
 
-/// The TC-SB rows as a sweep, ascending compression; points without a ratio or an error are never on the front.
-std::vector<ParetoPoint> pareto_sweep(const std::vector<FidelityRow>& rows);
+/// The rows of `method` (TC-SB by default; "tcsb_calibrated" for the calibrated body's sweep) as a sweep, ascending
+/// compression; points without a ratio or an error are never on the front.
+std::vector<ParetoPoint> pareto_sweep(const std::vector<FidelityRow>& rows, const std::string& method = "tcsb");
 
 /// The maximal compression factor: the smallest budget (fraction of the net's nodes) such that it and every larger
 /// target of the sweep keep the worst net's mean-over-steps RMS error at most `threshold_pct` of the net's extent.

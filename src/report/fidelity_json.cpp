@@ -83,6 +83,29 @@ ojson floors_json(const FidelityFloors& f) {
           {"interpolation_floor_pct", std::move(interpolation)}};
 }
 
+/// A method's rows as a time-versus-error sweep (`sweep`) and its maximal compression (`best`).
+void add_sweep(const std::vector<FidelityRow>& rows, const std::string& method, double threshold_pct, ojson& sweep,
+               ojson& best) {
+  sweep = ojson::array();
+  const std::vector<ParetoPoint> points = pareto_sweep(rows, method);
+  for (const ParetoPoint& p : points) {
+    sweep.push_back({{"compression", json_number(p.compression)},
+                     {"N", json_number(p.N)},
+                     {"time_ratio_vs_plain", json_number(p.time_ratio_vs_plain)},
+                     {"rms_pct", json_number(p.rms_pct)},
+                     {"worst_net_rms_pct", json_number(p.worst_net_rms_pct)},
+                     {"on_front", p.on_front}});
+  }
+  const MaxCompression m = max_compression(points, threshold_pct);
+  best = {{"threshold_pct", json_number(m.threshold_pct)},
+          {"compression", json_number(m.compression)},
+          {"worst_net_rms_pct", json_number(m.rms_pct)},
+          {"time_ratio_vs_plain", json_number(m.time_ratio_vs_plain)},
+          {"definition", "smallest " + std::string(method == "tcsb" ? "TC-SB" : "calibrated TC-SB") +
+                             " budget (fraction of the net's nodes) at which it and every larger target keep the "
+                             "worst net's mean-over-steps RMS error within threshold_pct of the net's extent"}};
+}
+
 }  // namespace
 
 void add_fidelity_json(const RunResult& result, nlohmann::ordered_json& doc) {
@@ -120,25 +143,11 @@ void add_fidelity_json(const RunResult& result, nlohmann::ordered_json& doc) {
       {"targets", std::move(targets)},
       {"wall_s", json_number(f.wall_s)},
   };
-  ojson sweep = ojson::array();
-  const std::vector<ParetoPoint> points = pareto_sweep(rows);
-  for (const ParetoPoint& p : points) {
-    sweep.push_back({{"compression", json_number(p.compression)},
-                     {"N", json_number(p.N)},
-                     {"time_ratio_vs_plain", json_number(p.time_ratio_vs_plain)},
-                     {"rms_pct", json_number(p.rms_pct)},
-                     {"worst_net_rms_pct", json_number(p.worst_net_rms_pct)},
-                     {"on_front", p.on_front}});
-  }
-  doc["pareto"] = std::move(sweep);
-  const MaxCompression m = max_compression(points, settings.rms_threshold_pct);
-  doc["max_compression"] = {
-      {"threshold_pct", json_number(m.threshold_pct)},
-      {"compression", json_number(m.compression)},
-      {"worst_net_rms_pct", json_number(m.rms_pct)},
-      {"time_ratio_vs_plain", json_number(m.time_ratio_vs_plain)},
-      {"definition", "smallest TC-SB budget (fraction of the net's nodes) at which it and every larger target keep "
-                     "the worst net's mean-over-steps RMS error within threshold_pct of the net's extent"}};
+  // The sweep of TC-SB, and with a calibration that of calibrated TC-SB (written only then: older results lack it).
+  add_sweep(rows, "tcsb", settings.rms_threshold_pct, doc["pareto"], doc["max_compression"]);
+  if (!pareto_sweep(rows, "tcsb_calibrated").empty())
+    add_sweep(rows, "tcsb_calibrated", settings.rms_threshold_pct, doc["pareto_calibrated"],
+              doc["max_compression_calibrated"]);
 }
 
 }  // namespace tcsb

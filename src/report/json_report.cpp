@@ -277,7 +277,7 @@ ojson native_json(const RunResult& result) {
     doc["scaling"] = {{"step_ms_vs_nodes", ojson::array()}, {"op_ms_vs_nodes", ojson::array()}};
     doc["configurations"] = configurations_json(result);
   }
-  add_fidelity_json(result, doc);  // fidelity, pareto, max_compression: only when the run has a fidelity pass
+  add_fidelity_json(result, doc);  // fidelity, pareto, max_compression (and calibrated): only with a fidelity pass
   doc["status"] = diverged ? "diverged" : "ok";
   doc["wall_s"] = json_number(result.wall_s);
   if (result.shard) doc["merge_data"] = merge_data_json(result);  // what `tcsb merge` needs beyond the summaries

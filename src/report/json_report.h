@@ -40,7 +40,8 @@ nlohmann::ordered_json suite_json(const Suite& suite);
 
 /// The whole run as the native JSON document (schema_version, tool, context, suite, cases, table1, table2,
 /// scaling, [configurations when the suite has axes: per configuration its tables and fits, the run-wide tables
-/// then empty], [fidelity, pareto, max_compression when the run has a fidelity pass], status, wall_s — in that
+/// then empty], [fidelity, pareto, max_compression when the run has a fidelity pass; pareto_calibrated,
+/// max_compression_calibrated when it has calibrated TC-SB], status, wall_s — in that
 /// order); with axes every case has its `configuration` {label, axes} and the suite block its `axes`;
 /// a shard's run also has context.shard {k, n} and, last, merge_data (report/shard_merge.h).
 nlohmann::ordered_json native_json(const RunResult& result);

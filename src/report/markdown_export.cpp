@@ -472,6 +472,33 @@ Column metric(std::string header, std::string metric_key, std::string stat) {
           }};
 }
 
+/// A Pareto sweep and its maximal compression, of "TC-SB" or "calibrated TC-SB"; empty when neither is there.
+std::string sweep_section(const ojson& pareto, const ojson& best, const std::string& label) {
+  std::string out;
+  if (non_empty_array(pareto)) {
+    out += "\nPareto sweep (" + label + " budgets; on front: no other budget is both faster and more accurate):\n\n" +
+           table({{"compression", [](const ojson& row) { return compression_text(at(row, "compression")); }},
+                  field("N", "N"),
+                  field("time ratio", "time_ratio_vs_plain"),
+                  field("RMS %", "rms_pct"),
+                  field("worst net RMS %", "worst_net_rms_pct"),
+                  field("on front", "on_front")},
+                 pareto);
+  }
+  if (best.is_object()) {
+    out += "\nMaximum compression" + std::string(label == "TC-SB" ? "" : " of " + label) + ": ";
+    const ojson& c = at(best, "compression");
+    out += c.is_number() ? compression_text(c) + " of the nodes" : std::string("none");
+    out +=
+        " keeps the worst net's RMS error within " + markdown_number(at(best, "threshold_pct"), 3) + " % of its extent";
+    if (c.is_number())
+      out += " (worst net " + markdown_number(at(best, "worst_net_rms_pct")) + " %, time ratio " +
+             markdown_number(at(best, "time_ratio_vs_plain")) + ")";
+    out += ".\n";
+  }
+  return out;
+}
+
 std::string fidelity_section(const ojson& doc) {
   const ojson& fidelity = at(doc, "fidelity");
   const ojson& rows = at(fidelity, "rows");
@@ -496,27 +523,8 @@ std::string fidelity_section(const ojson& doc) {
       columns.push_back(std::move(c));
     out += "\n" + table(columns, rows);
   }
-  if (non_empty_array(pareto)) {
-    out += "\nPareto sweep (TC-SB budgets; on front: no other budget is both faster and more accurate):\n\n" +
-           table({{"compression", [](const ojson& row) { return compression_text(at(row, "compression")); }},
-                  field("N", "N"),
-                  field("time ratio", "time_ratio_vs_plain"),
-                  field("RMS %", "rms_pct"),
-                  field("worst net RMS %", "worst_net_rms_pct"),
-                  field("on front", "on_front")},
-                 pareto);
-  }
-  if (best.is_object()) {
-    out += "\nMaximum compression: ";
-    const ojson& c = at(best, "compression");
-    out += c.is_number() ? compression_text(c) + " of the nodes" : std::string("none");
-    out +=
-        " keeps the worst net's RMS error within " + markdown_number(at(best, "threshold_pct"), 3) + " % of its extent";
-    if (c.is_number())
-      out += " (worst net " + markdown_number(at(best, "worst_net_rms_pct")) + " %, time ratio " +
-             markdown_number(at(best, "time_ratio_vs_plain")) + ")";
-    out += ".\n";
-  }
+  out += sweep_section(pareto, best, "TC-SB");
+  out += sweep_section(at(doc, "pareto_calibrated"), at(doc, "max_compression_calibrated"), "calibrated TC-SB");
   // A reproduction lists these targets with the claims; a plain run with a fidelity pass has them only here.
   if (const ojson& targets = at(fidelity, "targets"); non_empty_array(targets) && !at(doc, "reproduction").is_object())
     out += "\nFidelity targets of this project (reported, not gating):\n\n" + claims_table(targets);

@@ -36,9 +36,13 @@ std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
     for (const FidelityMethod m : {FidelityMethod::kUniform, FidelityMethod::kSwitch, FidelityMethod::kTcsbRandom,
                                    FidelityMethod::kTcsbRigid, FidelityMethod::kTcsbNoGeomorph})
       add_at_targets(m);
-  if (suite.calibration)
-    for (const FidelityMethod m : {FidelityMethod::kTcsbCalibrated, FidelityMethod::kUniformCalibrated})
-      add_at_targets(m);
+  if (suite.calibration) {
+    // Calibrated TC-SB at every target below 1 of the sweep too, so its maximal compression can be reported (at 1
+    // it would be the uncalibrated full-resolution body); its rival, the calibrated grid, at the suite's targets.
+    for (const double c : targets)
+      if (c < 1.0) plan.push_back({FidelityMethod::kTcsbCalibrated, c});
+    add_at_targets(FidelityMethod::kUniformCalibrated);
+  }
   return plan;
 }
 

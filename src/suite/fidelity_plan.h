@@ -37,8 +37,9 @@ struct FidelitySubjectSpec {
 
 /// The subjects, in report order: TC-SB at every target of compression and fidelity.pareto_targets (ascending,
 /// each once), then, with fidelity.ablations, the five ablations at every suite compression target below 1 (at 1
-/// they would all be the full-resolution body), then, with a calibration, calibrated TC-SB and the calibrated uniform
-/// grid at the same targets. Empty unless fidelity.enabled and the suite runs TC-SB.
+/// they would all be the full-resolution body), then, with a calibration, calibrated TC-SB at every target of the
+/// sweep below 1 and the calibrated uniform grid at the suite's targets below 1. Empty unless fidelity.enabled and the
+/// suite runs TC-SB.
 std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite);
 
 /// Grid of the uniform coarse net holding about `nodes` nodes with the aspect of a width x height net:

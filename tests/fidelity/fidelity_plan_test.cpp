@@ -5,6 +5,7 @@
 
 #include "fidelity/fidelity_runner.h"
 #include "fidelity/fidelity_subject.h"
+#include "suite/calibration_file.h"
 #include "suite/case_plan.h"
 
 namespace tcsb {
@@ -44,6 +45,19 @@ TEST(FidelityPlan, TcsbAtEveryTargetOnceAscendingThenTheAblationsBelowOne) {
                                                          {"tcsb_rigid", 0.3},
                                                          {"tcsb_no_geomorph", 0.75},
                                                          {"tcsb_no_geomorph", 0.3}};
+  EXPECT_EQ(got, want);
+}
+
+TEST(FidelityPlan, CalibratedTcsbAtEverySweepTargetBelowOneAndTheCalibratedGridAtTheSuitesTargets) {
+  Suite s = suite_with_fidelity(false);
+  s.calibration = Calibration{};
+  std::vector<std::pair<std::string, double>> got;
+  for (const FidelitySubjectSpec& spec : fidelity_plan(s))
+    if (spec.method == FidelityMethod::kTcsbCalibrated || spec.method == FidelityMethod::kUniformCalibrated)
+      got.emplace_back(fidelity_method_name(spec.method), spec.compression);
+  const std::vector<std::pair<std::string, double>> want{
+      {"tcsb_calibrated", 0.1},  {"tcsb_calibrated", 0.3},          {"tcsb_calibrated", 0.5},
+      {"tcsb_calibrated", 0.75}, {"uniform_grid_calibrated", 0.75}, {"uniform_grid_calibrated", 0.3}};
   EXPECT_EQ(got, want);
 }
 

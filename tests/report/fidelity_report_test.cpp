@@ -64,6 +64,25 @@ bool has_nan_or_inf(const ojson& j) {
   return false;
 }
 
+TEST(FidelityJson, CalibratedTcsbHasItsOwnSweepOnlyWhenItRan) {
+  RunResult r = run_with_fidelity();
+  EXPECT_FALSE(native_json(r).contains("pareto_calibrated"));
+  EXPECT_FALSE(native_json(r).contains("max_compression_calibrated"));
+  r.fidelity->cases.push_back(fidelity_case(FidelityMethod::kTcsbCalibrated, 0.5, 0.8));
+  r.fidelity->cases.push_back(fidelity_case(FidelityMethod::kTcsbCalibrated, 0.3, 1.2));
+  const ojson doc = native_json(r);
+  ASSERT_EQ(doc["pareto_calibrated"].size(), 2u);
+  EXPECT_EQ(doc["pareto_calibrated"][0]["compression"], 0.3);
+  EXPECT_EQ(doc["pareto_calibrated"][1]["rms_pct"], 0.8);
+  // 0.3 errs 1.2 % (over the 1 % threshold), 0.5 errs 0.8 %: the calibrated body compresses to half the nodes.
+  EXPECT_EQ(doc["max_compression_calibrated"]["compression"], 0.5);
+  EXPECT_EQ(doc["max_compression"]["compression"], 1.0) << "TC-SB's own sweep is unchanged";
+  EXPECT_EQ(doc["pareto"].size(), 2u);
+  std::ostringstream console;
+  print_fidelity_report(r, console);
+  EXPECT_NE(console.str().find("Calibrated TC-SB time versus error"), std::string::npos) << console.str();
+}
+
 TEST(FidelityJson, AbsentWithoutAFidelityPass) {
   RunResult r = run_with_fidelity();
   r.fidelity.reset();

@@ -249,6 +249,14 @@ TEST(MarkdownExport, FidelitySummary) {
                     {"worst_net_rms_pct", 3.0},
                     {"on_front", true}}};
   doc["max_compression"] = {{"threshold_pct", 2.0}, {"compression", nullptr}};
+  doc["pareto_calibrated"] = {{{"compression", 0.3},
+                               {"N", 1270.0},
+                               {"time_ratio_vs_plain", 0.26},
+                               {"rms_pct", 0.9},
+                               {"worst_net_rms_pct", 1.1},
+                               {"on_front", true}}};
+  doc["max_compression_calibrated"] = {
+      {"threshold_pct", 2.0}, {"compression", 0.3}, {"worst_net_rms_pct", 1.1}, {"time_ratio_vs_plain", 0.26}};
   const std::string md = markdown_report(doc);
   EXPECT_TRUE(has_line(md, "| tcsb | 30% | 1279 | 1.500 | 2.500 | 4.000 | 1.500 | 4.000 | | 0.2500 | | 3.000 | 5 | "
                            "ok |"))
@@ -256,6 +264,11 @@ TEST(MarkdownExport, FidelitySummary) {
   EXPECT_FALSE(contains(md, "| grid |")) << "no row has a grid";
   EXPECT_TRUE(has_line(md, "| 30% | 1279 | 0.2500 | 1.500 | 3.000 | yes |")) << md;
   EXPECT_TRUE(contains(md, "Maximum compression: none keeps the worst net's RMS error within 2.00 % of its extent."))
+      << md;
+  EXPECT_TRUE(contains(md, "Pareto sweep (calibrated TC-SB budgets;")) << md;
+  EXPECT_TRUE(has_line(md, "| 30% | 1270 | 0.2600 | 0.9000 | 1.100 | yes |")) << md;
+  EXPECT_TRUE(contains(md, "Maximum compression of calibrated TC-SB: 30% of the nodes keeps the worst net's RMS error "
+                           "within 2.00 % of its extent (worst net 1.100 %, time ratio 0.2600)."))
       << md;
   EXPECT_TRUE(has_line(md, "| fidelity_rms_30 | at_most | FAIL |")) << md;
   EXPECT_TRUE(contains(md, " · 12.3 s wall (fidelity pass 13.5 s).")) << md;
