@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 
 #include "softbody/affine_fit.h"
 
@@ -71,18 +72,7 @@ double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours,
   }
   const Eigen::Vector3d rp = tree.rest(parent);
   Eigen::Vector3d xp = p.pinned() || mass <= 0 ? rp : Eigen::Vector3d(weighted / mass);
-  if (!p.pinned() && mass > 0 && tree.touches_border(p) && rp != tree.centroid(parent)) {
-    // On the net's border: where the children's fit puts the parent's rest position (begin_coarse).
-    std::array<Eigen::Vector3d, 4> child_rest;
-    std::array<double, 4> child_mass;
-    for (int k = 0; k < p.child_count; ++k) {
-      const TreeId c = p.children[static_cast<std::size_t>(k)];
-      child_rest[static_cast<std::size_t>(k)] = tree.rest(c);
-      child_mass[static_cast<std::size_t>(k)] = tree.node(c).mass;
-    }
-    const auto n = static_cast<std::size_t>(p.child_count);
-    xp = fitted_arrival({child_x.data(), n}, {child_rest.data(), n}, {child_mass.data(), n}, rp);
-  }
+  if (const std::optional<Eigen::Vector3d> border = border_arrival(tree, parent, child_x)) xp = *border;
 
   // The parent's fit while it arrives: its tethers to the children and its links to their outside neighbours.
   Eigen::Matrix2d rr = Eigen::Matrix2d::Zero();

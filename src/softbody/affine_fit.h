@@ -5,7 +5,11 @@
 
 #include <Eigen/Core>
 #include <Eigen/LU>
+#include <array>
+#include <optional>
 #include <span>
+
+#include "net/lod_tree.h"
 
 namespace tcsb {
 
@@ -42,6 +46,28 @@ inline Eigen::Vector3d fitted_arrival(std::span<const Eigen::Vector3d> x, std::s
     xr += mass[i] * (x[i] - xm) * r.transpose();
   }
   return xm + solve_affine_fit(rr, xr) * Eigen::Vector2d(block_rest.x() - rm.x(), block_rest.z() - rm.z());
+}
+
+/// Where `parent`'s node appears when its children, at positions `child_x` (in children order), coarsen into it, if
+/// that is not their centre of mass: fitted_arrival() for a block without a pin that rests off its centroid on the
+/// net's border; nullopt for every other block (and for children without mass). The one rule of begin_coarse and the
+/// feedback's jump estimate.
+inline std::optional<Eigen::Vector3d> border_arrival(const LodTree& tree, TreeId parent,
+                                                     std::span<const Eigen::Vector3d> child_x) {
+  const LodNode& p = tree.node(parent);
+  if (p.pinned() || !tree.touches_border(p) || tree.rest(parent) == tree.centroid(parent)) return std::nullopt;
+  std::array<Eigen::Vector3d, 4> rest;
+  std::array<double, 4> mass;
+  double total = 0;
+  for (int k = 0; k < p.child_count; ++k) {
+    const TreeId c = p.children[static_cast<std::size_t>(k)];
+    rest[static_cast<std::size_t>(k)] = tree.rest(c);
+    mass[static_cast<std::size_t>(k)] = tree.node(c).mass;
+    total += tree.node(c).mass;
+  }
+  if (total <= 0) return std::nullopt;
+  const auto n = static_cast<std::size_t>(p.child_count);
+  return fitted_arrival(child_x.first(n), {rest.data(), n}, {mass.data(), n}, tree.rest(parent));
 }
 
 }  // namespace tcsb

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 
 #include "net/cut_adjacency.h"
@@ -190,30 +191,21 @@ void TcSoftBody::begin_coarse(TreeId p) {
   const std::int32_t op = new_op(OpKind::kCoarse, p);
   ++work_.tree_records;  // p's LOD node, record and state
   // The parent appears at its children's centre of mass with their mean velocity, carrying half their mass.
+  // A block on the net's border rests on the border: it appears where its children's fit puts that point instead.
   Eigen::Vector3d weighted_x = Eigen::Vector3d::Zero(), momentum = Eigen::Vector3d::Zero();
+  std::array<Eigen::Vector3d, 4> child_x;
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     const Node& n = m_nodes[record(c).bullet];
     const double m = tree().node(c).mass;
     ++work_.tree_records;  // c's LOD node, record, state and incidence list
     ++work_.nodes;         // c's position and velocity
-    weighted_x += m * to_eigen(n.m_x);
+    child_x[static_cast<std::size_t>(i)] = to_eigen(n.m_x);
+    weighted_x += m * child_x[static_cast<std::size_t>(i)];
     momentum += m * to_eigen(n.m_v);
   }
   btVector3 xp = pn.pinned() ? record(p).rest_position() : to_bullet(weighted_x / pn.mass);
-  if (!pn.pinned() && tree().touches_border(pn) && tree().rest(p) != tree().centroid(p)) {
-    // A block on the net's border rests on the border: it appears where its children's fit puts that point.
-    std::array<Eigen::Vector3d, 4> cx, cr;
-    std::array<double, 4> cm;
-    for (int i = 0; i < pn.child_count; ++i) {
-      const TreeId c = pn.children[static_cast<std::size_t>(i)];
-      cx[static_cast<std::size_t>(i)] = to_eigen(m_nodes[record(c).bullet].m_x);
-      cr[static_cast<std::size_t>(i)] = tree().rest(c);
-      cm[static_cast<std::size_t>(i)] = tree().node(c).mass;
-    }
-    const auto n = static_cast<std::size_t>(pn.child_count);
-    xp = to_bullet(fitted_arrival({cx.data(), n}, {cr.data(), n}, {cm.data(), n}, tree().rest(p)));
-  }
+  if (const std::optional<Eigen::Vector3d> border = border_arrival(tree(), p, child_x)) xp = to_bullet(*border);
   record(p).sim_mass = 0.5 * pn.mass;
   add_node(p, xp, to_bullet(momentum / pn.mass), pn.children[0]);
   state_[static_cast<std::size_t>(p)] = CutState::kArriving;
