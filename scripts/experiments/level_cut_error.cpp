@@ -99,6 +99,7 @@ int main(int argc, char** argv) {
                 FILE* f = std::fopen(pattern.c_str() + 5, "r");
                 char line[256];
                 while (f && std::fgets(line, sizeof line, f)) r.emplace_back(line);
+                if (f) std::fclose(f);
                 return r;
               }();
               want =

@@ -83,11 +83,11 @@ ojson floors_json(const FidelityFloors& f) {
           {"interpolation_floor_pct", std::move(interpolation)}};
 }
 
-/// A method's rows as a time-versus-error sweep (`sweep`) and its maximal compression (`best`).
-void add_sweep(const std::vector<FidelityRow>& rows, const std::string& method, double threshold_pct, ojson& sweep,
+/// A method's time-versus-error sweep (`points`, from pareto_sweep) as JSON (`sweep`) and its maximal compression
+/// (`best`); `label` names the method in the definition.
+void add_sweep(const std::vector<ParetoPoint>& points, const std::string& label, double threshold_pct, ojson& sweep,
                ojson& best) {
   sweep = ojson::array();
-  const std::vector<ParetoPoint> points = pareto_sweep(rows, method);
   for (const ParetoPoint& p : points) {
     sweep.push_back({{"compression", json_number(p.compression)},
                      {"N", json_number(p.N)},
@@ -101,7 +101,7 @@ void add_sweep(const std::vector<FidelityRow>& rows, const std::string& method, 
           {"compression", json_number(m.compression)},
           {"worst_net_rms_pct", json_number(m.rms_pct)},
           {"time_ratio_vs_plain", json_number(m.time_ratio_vs_plain)},
-          {"definition", "smallest " + std::string(method == "tcsb" ? "TC-SB" : "calibrated TC-SB") +
+          {"definition", "smallest " + label +
                              " budget (fraction of the net's nodes) at which it and every larger target keep the "
                              "worst net's mean-over-steps RMS error within threshold_pct of the net's extent"}};
 }
@@ -144,9 +144,9 @@ void add_fidelity_json(const RunResult& result, nlohmann::ordered_json& doc) {
       {"wall_s", json_number(f.wall_s)},
   };
   // The sweep of TC-SB, and with a calibration that of calibrated TC-SB (written only then: older results lack it).
-  add_sweep(rows, "tcsb", settings.rms_threshold_pct, doc["pareto"], doc["max_compression"]);
-  if (!pareto_sweep(rows, "tcsb_calibrated").empty())
-    add_sweep(rows, "tcsb_calibrated", settings.rms_threshold_pct, doc["pareto_calibrated"],
+  add_sweep(pareto_sweep(rows), "TC-SB", settings.rms_threshold_pct, doc["pareto"], doc["max_compression"]);
+  if (const std::vector<ParetoPoint> calibrated = pareto_sweep(rows, "tcsb_calibrated"); !calibrated.empty())
+    add_sweep(calibrated, "calibrated TC-SB", settings.rms_threshold_pct, doc["pareto_calibrated"],
               doc["max_compression_calibrated"]);
 }
 
