@@ -29,7 +29,7 @@ void keep_best(std::vector<Candidate>& all, int limit, Better better) {
 }  // namespace
 
 void rank_candidates(const CutSnapshot& snapshot, std::span<const float> saliency, int limit, Evaluation& out,
-                     const JumpCharge& charge, double interface_charge) {
+                     const JumpCharge& charge, const InterfaceCharge& interface) {
   const LodTree& tree = *snapshot.cut.tree;
   out.snapshot_step = snapshot.step;
   const auto higher = [](const Candidate& a, const Candidate& b) {
@@ -51,8 +51,7 @@ void rank_candidates(const CutSnapshot& snapshot, std::span<const float> salienc
       double priority = (s + kSaliencyFloor) * static_cast<double>(1u << node.level);
       // A refine adds a level boundary towards every neighbour at its level or coarser and removes one towards every
       // finer neighbour: a positive balance lowers the priority.
-      if (interface_charge > 0)
-        priority *= std::exp(-interface_charge * neighbour_balance(snapshot.cut, static_cast<TreeId>(id)) / 4.0);
+      priority *= interface.factor(snapshot.cut, static_cast<TreeId>(id));
       out.refine.push_back({priority, static_cast<TreeId>(id)});
     }
     // Each parent once: from its first child (the even-even corner of the block, so the parent is read only for a
@@ -75,7 +74,7 @@ void rank_candidates(const CutSnapshot& snapshot, std::span<const float> salienc
     double priority = (worst + kSaliencyFloor) * static_cast<double>(1u << p.level);
     // A coarsen removes the boundary towards every neighbour at the parent's level or coarser and adds one towards
     // every finer neighbour: a positive balance lowers the priority (lower coarsens sooner).
-    if (interface_charge > 0) priority *= std::exp(-interface_charge * neighbour_balance(snapshot.cut, parent) / 4.0);
+    priority *= interface.factor(snapshot.cut, parent);
     if (charge.per_pct > 0)
       priority += charge.per_pct * 100.0 * coarse_jump(snapshot, *charge.neighbours, parent) / charge.extent;
     out.coarse.push_back({priority, parent});

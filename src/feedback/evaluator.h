@@ -15,6 +15,7 @@
 
 #include "feedback/coarse_jump.h"
 #include "feedback/cut_snapshot.h"
+#include "feedback/interface_balance.h"
 
 namespace tcsb {
 
@@ -41,10 +42,11 @@ struct JumpCharge {
 /// Ranks at most `limit` candidates of each kind (ties broken by a hash of the tree id: deterministic, and spread
 /// over the net).
 /// With a charge, each coarse candidate's priority grows by per_pct x its jump in % of the extent (the snapshot must
-/// hold positions). With an interface charge c > 0, every candidate's priority is multiplied by exp(-c b / 4), where
-/// b is its neighbour_balance (feedback/interface_balance.h): coarsens that merge a block into coarser surroundings go
-/// sooner, coarsens that leave an isolated block later, and refines likewise the other way round.
+/// hold positions). With an interface charge c > 0, every candidate's priority is multiplied by exp(-c w b / 4), where
+/// b is its neighbour_balance (feedback/interface_balance.h) and w its weight there (1, or more near the pins:
+/// feedback/pin_tension.h): coarsens that merge a block into coarser surroundings go sooner, coarsens that leave an
+/// isolated block later, and refines likewise the other way round.
 void rank_candidates(const CutSnapshot& snapshot, std::span<const float> saliency, int limit, Evaluation& out,
-                     const JumpCharge& charge = {}, double interface_charge = 0);
+                     const JumpCharge& charge = {}, const InterfaceCharge& interface = {});
 
 }  // namespace tcsb

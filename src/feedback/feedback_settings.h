@@ -32,6 +32,11 @@ struct FeedbackSettings {
   /// instead of as isolated blocks. 0 disables it (and its O(levels) per candidate). Issue 20; the paper has no such
   /// term.
   double interface_charge = 0.0;
+  /// How much more a level boundary weighs near the pins, where the hanging cloth's tension concentrates
+  /// (feedback/pin_tension.h): the interface charge of a block at distance r from the nearest pin is multiplied by
+  /// 1 + interface_tension x L / max(r, 1), L the net's larger side, both in grid steps. 0 (weight 1 everywhere)
+  /// disables it; it needs interface_charge > 0. Issue 20; the paper has no such term.
+  double interface_tension = 0.0;
 };
 
 /// Name used in suites and reports: "saliency" or "random".

@@ -1,5 +1,7 @@
 #include "feedback/interface_balance.h"
 
+#include <cmath>
+
 namespace tcsb {
 
 namespace {
@@ -22,6 +24,12 @@ int neighbour_balance(const CutView& cut, TreeId id) {
          coarser_or_equal(cut, tree.at(n.level, n.gx + 1, n.gy)) +
          coarser_or_equal(cut, tree.at(n.level, n.gx, n.gy - 1)) +
          coarser_or_equal(cut, tree.at(n.level, n.gx, n.gy + 1));
+}
+
+double InterfaceCharge::factor(const CutView& cut, TreeId id) const {
+  if (!(per_boundary > 0)) return 1.0;
+  const double w = weight.empty() ? 1.0 : static_cast<double>(weight[static_cast<std::size_t>(id)]);
+  return std::exp(-per_boundary * w * neighbour_balance(cut, id) / 4.0);
 }
 
 }  // namespace tcsb

@@ -8,6 +8,8 @@
 // (FeedbackSettings::interface_charge).
 #pragma once
 
+#include <span>
+
 #include "feedback/cut_snapshot.h"
 
 namespace tcsb {
@@ -17,5 +19,16 @@ namespace tcsb {
 /// committed), and -1 when it is finer. Range [-4, 4]. Coarsening `id`'s children into `id` removes a level boundary
 /// on each +1 side and adds one on each -1 side; refining `id` does the opposite. O(levels).
 int neighbour_balance(const CutView& cut, TreeId id);
+
+/// How the evaluator charges a candidate for the level boundaries it adds or removes.
+struct InterfaceCharge {
+  double per_boundary = 0;  ///< c (FeedbackSettings::interface_charge); 0: off
+  /// Per tree node, how much its boundaries weigh (feedback/pin_tension.h: more near the pins); empty: 1 everywhere.
+  std::span<const float> weight;
+
+  /// The factor exp(-c w b / 4) on the priority of refining or coarsening into `id`, b its neighbour_balance: a
+  /// positive balance (the operation adds boundaries) lowers it. 1 when off.
+  double factor(const CutView& cut, TreeId id) const;
+};
 
 }  // namespace tcsb

@@ -50,8 +50,9 @@ class SaliencyController final : public Controller {
   std::int64_t boundary_ = 0;  // step boundaries seen
   CutSnapshot snapshot_;
   NeighbourSums sums_;
-  CutNeighbours neighbours_;  // for the popping charge
-  double extent_ = 1;         // the net's, for the popping charge
+  CutNeighbours neighbours_;              // for the popping charge
+  double extent_ = 1;                     // the net's, for the popping charge
+  std::vector<float> interface_weights_;  // per tree node, when the interface charge weighs the pins' tension
   std::vector<float> saliency_;
   Evaluation evaluation_;
   bool evaluation_ready_ = false;

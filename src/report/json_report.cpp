@@ -80,6 +80,7 @@ ojson suite_json(const Suite& s) {
   // results still compare with older baselines (the gate refuses runs whose suite blocks differ).
   if (f.popping_charge > 0) out["feedback"]["popping_charge"] = json_number(f.popping_charge);
   if (f.interface_charge > 0) out["feedback"]["interface_charge"] = json_number(f.interface_charge);
+  if (f.interface_tension > 0) out["feedback"]["interface_tension"] = json_number(f.interface_tension);
   // Optional: only a suite with axes has it, so the block of a suite without stays as it always was.
   if (!s.axes.empty()) {
     ojson axes = ojson::object();

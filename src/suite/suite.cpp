@@ -84,7 +84,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     const Object fb(r, *j, "feedback",
                     {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale",
                      "illumination", "light_direction", "parallel", "threads", "max_step_ms", "popping_charge",
-                     "interface_charge"});
+                     "interface_charge", "interface_tension"});
     FeedbackSettings& f = s.feedback;
     for (const char* key :
          {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale", "illumination"})
@@ -98,6 +98,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     fb.read("max_step_ms", f.max_step_ms, kNonNegative);
     read_axis_setting(r, fb, "popping_charge", s);
     read_axis_setting(r, fb, "interface_charge", s);
+    read_axis_setting(r, fb, "interface_tension", s);
   }
 
   if (const json* j = root.find("fidelity")) {
@@ -224,6 +225,11 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   read_axis_setting(r, root, "seed", s, true);
   parse_settings(r, root, s);
   if (const json* axes = root.find("axes")) parse_axes(r, *axes, s);
+  // The tension only weighs the interface charge: without one (and no axis that sets one) it would do nothing.
+  const bool charge_axis =
+      std::any_of(s.axes.begin(), s.axes.end(), [](const Axis& a) { return a.path == "feedback.interface_charge"; });
+  if (s.feedback.interface_tension > 0 && s.feedback.interface_charge == 0 && !charge_axis)
+    r.fail("feedback.interface_tension", "weighs the interface charge, which is 0 here: set feedback.interface_charge");
 
   // CreatePatch makes structural links (and, with gendiags, one diagonal per cell), never our shear/bend sets; the
   // TreeCut soft body's balanced-cut adjacency is the 4-neighbourhood, so it is structural-only too (the paper's

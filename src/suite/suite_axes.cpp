@@ -65,6 +65,8 @@ const AxisSetting kAxisSettings[] = {
                                    Suite& s) { s.feedback.popping_charge = r.number(v, at, kNonNegative); }},
     {"feedback.interface_charge", [](const Reader& r, const json& v, const std::string& at,
                                      Suite& s) { s.feedback.interface_charge = r.number(v, at, kNonNegative); }},
+    {"feedback.interface_tension", [](const Reader& r, const json& v, const std::string& at,
+                                      Suite& s) { s.feedback.interface_tension = r.number(v, at, kNonNegative); }},
     {"seed",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.seed = r.unsigned_integer(v, at); }},
     {"dt",

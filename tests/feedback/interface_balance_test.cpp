@@ -28,13 +28,7 @@ void coarsen_now(TcSoftBody& body, TreeId parent) {
   while (body.interpolations() > 0) body.advance_blends();
 }
 
-/// Links of the cut between nodes of different levels.
-int level_boundary_links(const TcSoftBody& body) {
-  int count = 0;
-  for (const CutLink& link : body.cut_links())
-    if (link.joins_committed() && body.tree().node(link.a).level != body.tree().node(link.b).level) ++count;
-  return count;
-}
+using testing::level_boundary_links;
 
 TEST(InterfaceBalance, CountsNeighboursAtTheSameLevelOrCoarserAgainstFinerOnes) {
   const auto net = unpinned_net(17);
@@ -73,8 +67,8 @@ TEST(InterfaceBalance, TheChargeCoarsensNextToCoarseBlocksFirst) {
   const std::vector<float> saliency(snapshot.size(), 0.0f);  // at rest: only the charge tells blocks apart
   Evaluation plain, charged, zero;
   rank_candidates(snapshot, saliency, 1000, plain);
-  rank_candidates(snapshot, saliency, 1000, zero, {}, 0.0);
-  rank_candidates(snapshot, saliency, 1000, charged, {}, 3.0);
+  rank_candidates(snapshot, saliency, 1000, zero, {}, {0.0, {}});
+  rank_candidates(snapshot, saliency, 1000, charged, {}, {3.0, {}});
   ASSERT_EQ(plain.coarse.size(), zero.coarse.size());
   for (std::size_t i = 0; i < plain.coarse.size(); ++i) EXPECT_EQ(plain.coarse[i].id, zero.coarse[i].id);
   ASSERT_EQ(charged.coarse.size(), plain.coarse.size());

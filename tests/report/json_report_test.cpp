@@ -138,6 +138,9 @@ TEST(NativeJson, TheCandidateChargesAreWrittenOnlyWhenSet) {
   EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("interface_charge"));
   run.suite.feedback.interface_charge = 3;
   EXPECT_EQ(native_json(run)["suite"]["feedback"]["interface_charge"], 3.0);
+  EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("interface_tension"));
+  run.suite.feedback.interface_tension = 0.5;
+  EXPECT_EQ(native_json(run)["suite"]["feedback"]["interface_tension"], 0.5);
 }
 
 TEST(NativeJson, CaseAndRepetitionKeys) {

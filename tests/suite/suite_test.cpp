@@ -410,6 +410,13 @@ TEST(SuiteReject, OtherRanges) {
   rejected_edit([](json& j) { j["feedback"] = {{"popping_charge", "high"}}; }, "feedback.popping_charge");
   rejected_edit([](json& j) { j["feedback"] = {{"interface_charge", -1}}; }, "feedback.interface_charge");
   rejected_edit([](json& j) { j["feedback"] = {{"interface_charge", true}}; }, "feedback.interface_charge");
+  rejected_edit(
+      [](json& j) {
+        j["feedback"] = {{"interface_charge", 3}, {"interface_tension", -1}};
+      },
+      "feedback.interface_tension");
+  // It only weighs the interface charge: alone it would do nothing.
+  rejected_edit([](json& j) { j["feedback"] = {{"interface_tension", 0.5}}; }, "feedback.interface_tension");
   rejected_edit([](json& j) { j["fidelity"] = {{"rms_threshold_pct", 0}}; }, "fidelity.rms_threshold_pct");
   rejected_edit([](json& j) { j["fidelity"] = {{"pareto_targets", {0.5, 1.5}}}; }, "fidelity.pareto_targets[1]");
   // Enabled without TC-SB it would measure nothing and look like a pass.

@@ -1,0 +1,128 @@
+// The distance of every leaf to the nearest pin (an exact distance transform), the weights it gives a block's level
+// boundaries, and the controller's cut keeping its boundaries away from the pins when they weigh more there.
+#include "feedback/pin_tension.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "feedback/interface_balance.h"
+#include "feedback/saliency_controller.h"
+#include "fixed_field.h"
+
+namespace tcsb {
+namespace {
+
+std::shared_ptr<const Net> net_of(int width, int height, unsigned pinned_corners) {
+  NetSpec spec;
+  spec.width = width;
+  spec.height = height;
+  spec.pinned_corners = pinned_corners;
+  return std::make_shared<const Net>(spec);
+}
+
+/// The distance by brute force: every leaf against every pinned leaf.
+std::vector<double> brute_force_distances(const LodTree& tree) {
+  const int w = tree.level_width(0);
+  std::vector<double> out(tree.leaf_count(), std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (std::size_t p = 0; p < out.size(); ++p)
+      if (tree.nodes()[p].pinned()) {
+        const double dx = static_cast<double>(static_cast<int>(i) % w - static_cast<int>(p) % w);
+        const double dy = static_cast<double>(static_cast<int>(i) / w - static_cast<int>(p) / w);
+        out[i] = std::min(out[i], std::sqrt(dx * dx + dy * dy));
+      }
+  return out;
+}
+
+TEST(PinTension, DistancesAreExactEuclidean) {
+  for (const unsigned corners : {unsigned{kAllCorners}, unsigned{kCornerMaxMin}, unsigned{kCornerMinMin | kCornerMaxMax},
+                                 unsigned{kCornerMinMax | kCornerMaxMax}}) {
+    for (const auto& [w, h] : {std::pair{13, 9}, std::pair{9, 13}, std::pair{2, 2}, std::pair{17, 17}}) {
+      const auto net = net_of(w, h, corners);
+      const std::vector<float> fast = pin_distances(net->lod());
+      const std::vector<double> slow = brute_force_distances(net->lod());
+      ASSERT_EQ(fast.size(), slow.size());
+      for (std::size_t i = 0; i < slow.size(); ++i)
+        ASSERT_NEAR(fast[i], slow[i], 1e-5) << w << " x " << h << ", corners " << corners << ", leaf " << i;
+    }
+  }
+}
+
+TEST(PinTension, NothingPinnedOrNoTensionWeighsOne) {
+  const auto free_net = net_of(17, 17, 0);
+  for (const float d : pin_distances(free_net->lod())) EXPECT_TRUE(std::isinf(d));
+  for (const float w : interface_weights(free_net->lod(), 0.5)) EXPECT_EQ(w, 1.0f);
+  const auto pinned = net_of(17, 17, kAllCorners);
+  for (const float w : interface_weights(pinned->lod(), 0.0)) EXPECT_EQ(w, 1.0f);
+}
+
+TEST(PinTension, ABlockWeighsAsItsLeafNearestToAPin) {
+  const auto net = net_of(17, 17, kCornerMinMin);
+  const LodTree& tree = net->lod();
+  const std::vector<float> weight = interface_weights(tree, 0.5);
+  const double side = 16;
+  EXPECT_FLOAT_EQ(weight[static_cast<std::size_t>(tree.at(0, 0, 0))], static_cast<float>(1 + 0.5 * side / 1))
+      << "on the pin: the distance counts as 1";
+  EXPECT_FLOAT_EQ(weight[static_cast<std::size_t>(tree.at(0, 16, 16))],
+                  static_cast<float>(1 + 0.5 * side / std::sqrt(2.0 * 16 * 16)));
+  // Level-1 block (3, 2) covers leaves 6..7 x 4..5: its nearest leaf to (0, 0) is (6, 4).
+  EXPECT_FLOAT_EQ(weight[static_cast<std::size_t>(tree.at(1, 3, 2))],
+                  static_cast<float>(1 + 0.5 * side / std::sqrt(6.0 * 6 + 4 * 4)));
+  EXPECT_FLOAT_EQ(weight[static_cast<std::size_t>(tree.root())], static_cast<float>(1 + 0.5 * side))
+      << "the root holds the pin";
+}
+
+TEST(PinTension, ABoundaryNearAPinWeighsMore) {
+  const auto net = net_of(17, 17, kCornerMinMin);
+  SoftBodyWorld world(WorldSettings{});
+  TcSoftBody body(world, net, {}, {});
+  const LodTree& tree = body.tree();
+  const std::vector<float> weight = interface_weights(tree, 0.5);
+  const CutView cut = cut_view(body);
+  const TreeId near = tree.at(1, 1, 1), far = tree.at(1, 6, 6);  // both among leaves only: balance -4
+  ASSERT_EQ(neighbour_balance(cut, near), neighbour_balance(cut, far));
+  const InterfaceCharge flat{3.0, {}}, weighed{3.0, weight};
+  EXPECT_DOUBLE_EQ(flat.factor(cut, near), flat.factor(cut, far));
+  EXPECT_DOUBLE_EQ(weighed.factor(cut, far), std::exp(3.0 * weight[static_cast<std::size_t>(far)]));
+  EXPECT_GT(weighed.factor(cut, near), weighed.factor(cut, far)) << "a coarsen among finer blocks waits longer there";
+  EXPECT_DOUBLE_EQ(InterfaceCharge{}.factor(cut, near), 1.0);
+}
+
+/// A 33 x 33 net pinned at its four corners, falling, under the saliency controller at 75 % for 200 steps: the
+/// links of its final cut between levels with an end within a quarter of the side from a pin.
+int boundaries_near_the_pins(double tension) {
+  NetSpec spec;
+  spec.width = spec.height = 33;
+  const auto net = std::make_shared<const Net>(spec);
+  SoftBodyWorld world({});
+  TcSoftBody body(world, net, {}, {});
+  FeedbackSettings settings;
+  settings.threshold = 0.3;
+  settings.interface_charge = 3;
+  settings.interface_tension = tension;
+  SaliencyController controller(settings, net->node_count() * 3 / 4);
+  for (int step = 0; step < 200; ++step) {
+    body.advance_blends();
+    controller.before_step(body);
+    body.simulate_step(1.0f / 60);
+    controller.after_step(body);
+  }
+  EXPECT_TRUE(controller.converged());
+  EXPECT_TRUE(body.validate().ok()) << body.validate().summary();
+  const std::vector<float> leaf_distance = pin_distances(net->lod());
+  return testing::level_boundary_links(body, [&](TreeId id) {
+    const LodNode& n = net->lod().node(id);
+    return leaf_distance[static_cast<std::size_t>(n.leaf_y0 * 33 + n.leaf_x0)] < 8.0f;
+  });
+}
+
+TEST(PinTension, TheControllerKeepsBoundariesAwayFromThePins) {
+  const int flat = boundaries_near_the_pins(0.0), weighed = boundaries_near_the_pins(0.5);
+  EXPECT_GT(flat, 0);
+  EXPECT_LT(weighed, flat) << "flat " << flat << ", weighed " << weighed;
+}
+
+}  // namespace
+}  // namespace tcsb
