@@ -71,8 +71,8 @@ std::vector<float> pin_distances(const LodTree& tree) {
   }
   std::vector<float> distance(squared.size());
   for (std::size_t i = 0; i < squared.size(); ++i)
-    distance[i] = squared[i] == kNoPin ? std::numeric_limits<float>::infinity()
-                                       : static_cast<float>(std::sqrt(squared[i]));
+    distance[i] =
+        squared[i] == kNoPin ? std::numeric_limits<float>::infinity() : static_cast<float>(std::sqrt(squared[i]));
   return distance;
 }
 

@@ -37,8 +37,8 @@ std::vector<double> brute_force_distances(const LodTree& tree) {
 }
 
 TEST(PinTension, DistancesAreExactEuclidean) {
-  for (const unsigned corners : {unsigned{kAllCorners}, unsigned{kCornerMaxMin}, unsigned{kCornerMinMin | kCornerMaxMax},
-                                 unsigned{kCornerMinMax | kCornerMaxMax}}) {
+  for (const unsigned corners : {unsigned{kAllCorners}, unsigned{kCornerMaxMin},
+                                 unsigned{kCornerMinMin | kCornerMaxMax}, unsigned{kCornerMinMax | kCornerMaxMax}}) {
     for (const auto& [w, h] : {std::pair{13, 9}, std::pair{9, 13}, std::pair{2, 2}, std::pair{17, 17}}) {
       const auto net = net_of(w, h, corners);
       const std::vector<float> fast = pin_distances(net->lod());
