@@ -37,6 +37,12 @@ struct FeedbackSettings {
   /// 1 + interface_tension x L / max(r, 1), L the net's larger side, both in grid steps. 0 (weight 1 everywhere)
   /// disables it; it needs interface_charge > 0. Issue 20; the paper has no such term.
   double interface_tension = 0.0;
+  /// Near the pins, how strongly a block leans to the level the budget forces on most of the cloth
+  /// (feedback/interface_balance.h, budget_level): that level counts as one more neighbour in the interface charge,
+  /// weighing pin_level_pull x (w - 1), w the pin tension's weight (0 far from the pins). At 30 % of the nodes most of
+  /// the cloth is coarse, and fine patches at the pins doubled the error of a coarse cut; at 75 % most of it is fine.
+  /// 0 disables it; it needs interface_tension > 0. Issue 20; the paper has no such term.
+  double pin_level_pull = 0.0;
 };
 
 /// Name used in suites and reports: "saliency" or "random".

@@ -20,14 +20,25 @@ namespace tcsb {
 /// on each +1 side and adds one on each -1 side; refining `id` does the opposite. O(levels).
 int neighbour_balance(const CutView& cut, TreeId id);
 
+/// The level most of the cloth must take under a budget of `budget` simulated nodes: with n_l the node count of the
+/// whole cut at level l, a budget between n_(l+1) and n_l holds a share (budget - n_(l+1)) / (n_l - n_(l+1)) of the
+/// net at level l and the rest at level l + 1; the level holding at least half. 0 when the whole net fits; the tree's
+/// top level when the budget is below every other level's count. O(levels).
+int budget_level(const LodTree& tree, int budget);
+
 /// How the evaluator charges a candidate for the level boundaries it adds or removes.
 struct InterfaceCharge {
   double per_boundary = 0;  ///< c (FeedbackSettings::interface_charge); 0: off
   /// Per tree node, how much its boundaries weigh (feedback/pin_tension.h: more near the pins); empty: 1 everywhere.
   std::span<const float> weight;
+  /// p (FeedbackSettings::pin_level_pull) and budget_level(): where the weight w exceeds 1, the cloth of the budget's
+  /// level counts as one more neighbour of weight p (w - 1). 0: none.
+  double pull = 0;
+  int budget_level = 0;
 
-  /// The factor exp(-c w b / 4) on the priority of refining or coarsening into `id`, b its neighbour_balance: a
-  /// positive balance (the operation adds boundaries) lowers it. 1 when off.
+  /// The factor exp(-c (w b + p (w - 1) s) / 4) on the priority of refining or coarsening into `id`: b its
+  /// neighbour_balance, s +1 when the budget's level is id's level or coarser and -1 when finer. A positive sum (the
+  /// operation adds boundaries, or moves the cloth away from the budget's level) lowers it. 1 when off.
   double factor(const CutView& cut, TreeId id) const;
 };
 

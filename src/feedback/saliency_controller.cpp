@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "feedback/interface_balance.h"
 #include "feedback/pin_tension.h"
 #include "feedback/saliency.h"
 
@@ -47,7 +48,7 @@ void SaliencyController::evaluate() {
     charge = {settings_.popping_charge, extent_, &neighbours_};
   }
   rank_candidates(snapshot_, saliency_, 2 * settings_.max_ops_per_step, evaluation_, charge,
-                  {settings_.interface_charge, interface_weights_});
+                  {settings_.interface_charge, interface_weights_, settings_.pin_level_pull, budget_level_});
   evaluation_ms_ = ms_since(t0);
 }
 
@@ -67,6 +68,7 @@ void SaliencyController::before_step(TcSoftBody& body) {
     extent_ = body.net().extent();
     if (settings_.interface_charge > 0 && settings_.interface_tension > 0 && interface_weights_.empty())
       interface_weights_ = interface_weights(body.tree(), settings_.interface_tension);  // once: O(N)
+    budget_level_ = budget_level(body.tree(), budget());  // the budget may move (max_step_ms)
     take_snapshot(body, cut_view(body), settings_.illumination || settings_.popping_charge > 0, boundary_, snapshot_);
     if (workers_) {
       workers_->post([this] { evaluate(); });

@@ -53,6 +53,7 @@ class SaliencyController final : public Controller {
   CutNeighbours neighbours_;              // for the popping charge
   double extent_ = 1;                     // the net's, for the popping charge
   std::vector<float> interface_weights_;  // per tree node, when the interface charge weighs the pins' tension
+  int budget_level_ = 0;                  // the level most of the cloth takes under the budget, for the pull
   std::vector<float> saliency_;
   Evaluation evaluation_;
   bool evaluation_ready_ = false;

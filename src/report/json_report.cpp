@@ -81,6 +81,7 @@ ojson suite_json(const Suite& s) {
   if (f.popping_charge > 0) out["feedback"]["popping_charge"] = json_number(f.popping_charge);
   if (f.interface_charge > 0) out["feedback"]["interface_charge"] = json_number(f.interface_charge);
   if (f.interface_tension > 0) out["feedback"]["interface_tension"] = json_number(f.interface_tension);
+  if (f.pin_level_pull > 0) out["feedback"]["pin_level_pull"] = json_number(f.pin_level_pull);
   // Optional: only a suite with axes has it, so the block of a suite without stays as it always was.
   if (!s.axes.empty()) {
     ojson axes = ojson::object();

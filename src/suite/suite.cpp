@@ -84,7 +84,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     const Object fb(r, *j, "feedback",
                     {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale",
                      "illumination", "light_direction", "parallel", "threads", "max_step_ms", "popping_charge",
-                     "interface_charge", "interface_tension"});
+                     "interface_charge", "interface_tension", "pin_level_pull"});
     FeedbackSettings& f = s.feedback;
     for (const char* key :
          {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale", "illumination"})
@@ -99,6 +99,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     read_axis_setting(r, fb, "popping_charge", s);
     read_axis_setting(r, fb, "interface_charge", s);
     read_axis_setting(r, fb, "interface_tension", s);
+    read_axis_setting(r, fb, "pin_level_pull", s);
   }
 
   if (const json* j = root.find("fidelity")) {
@@ -230,6 +231,10 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
       std::any_of(s.axes.begin(), s.axes.end(), [](const Axis& a) { return a.path == "feedback.interface_charge"; });
   if (s.feedback.interface_tension > 0 && s.feedback.interface_charge == 0 && !charge_axis)
     r.fail("feedback.interface_tension", "weighs the interface charge, which is 0 here: set feedback.interface_charge");
+  const bool tension_axis =
+      std::any_of(s.axes.begin(), s.axes.end(), [](const Axis& a) { return a.path == "feedback.interface_tension"; });
+  if (s.feedback.pin_level_pull > 0 && s.feedback.interface_tension == 0 && !tension_axis)
+    r.fail("feedback.pin_level_pull", "acts through the pin tension, which is 0 here: set feedback.interface_tension");
 
   // CreatePatch makes structural links (and, with gendiags, one diagonal per cell), never our shear/bend sets; the
   // TreeCut soft body's balanced-cut adjacency is the 4-neighbourhood, so it is structural-only too (the paper's

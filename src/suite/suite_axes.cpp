@@ -67,6 +67,8 @@ const AxisSetting kAxisSettings[] = {
                                      Suite& s) { s.feedback.interface_charge = r.number(v, at, kNonNegative); }},
     {"feedback.interface_tension", [](const Reader& r, const json& v, const std::string& at,
                                       Suite& s) { s.feedback.interface_tension = r.number(v, at, kNonNegative); }},
+    {"feedback.pin_level_pull", [](const Reader& r, const json& v, const std::string& at,
+                                   Suite& s) { s.feedback.pin_level_pull = r.number(v, at, kNonNegative); }},
     {"seed",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.seed = r.unsigned_integer(v, at); }},
     {"dt",

@@ -90,38 +90,101 @@ TEST(PinTension, ABoundaryNearAPinWeighsMore) {
   EXPECT_DOUBLE_EQ(InterfaceCharge{}.factor(cut, near), 1.0);
 }
 
-/// A 33 x 33 net pinned at its four corners, falling, under the saliency controller at 75 % for 200 steps: the
-/// links of its final cut between levels with an end within a quarter of the side from a pin.
-int boundaries_near_the_pins(double tension) {
-  NetSpec spec;
-  spec.width = spec.height = 33;
-  const auto net = std::make_shared<const Net>(spec);
-  SoftBodyWorld world({});
-  TcSoftBody body(world, net, {}, {});
-  FeedbackSettings settings;
-  settings.threshold = 0.3;
-  settings.interface_charge = 3;
-  settings.interface_tension = tension;
-  SaliencyController controller(settings, net->node_count() * 3 / 4);
-  for (int step = 0; step < 200; ++step) {
-    body.advance_blends();
-    controller.before_step(body);
-    body.simulate_step(1.0f / 60);
-    controller.after_step(body);
+/// A 33 x 33 net pinned at its four corners, falling under the saliency controller for 200 steps with the interface
+/// charge 3 and the given pin tension and pull, at `share` of its nodes.
+struct ControlledCut {
+  std::shared_ptr<const Net> net;
+  SoftBodyWorld world{WorldSettings{}};
+  std::unique_ptr<TcSoftBody> body;
+
+  ControlledCut(double tension, double pull, double share) {
+    NetSpec spec;
+    spec.width = spec.height = 33;
+    net = std::make_shared<const Net>(spec);
+    body = std::make_unique<TcSoftBody>(world, net, SolverSettings{}, TcSettings{});
+    FeedbackSettings settings;
+    settings.threshold = 0.3;
+    settings.interface_charge = 3;
+    settings.interface_tension = tension;
+    settings.pin_level_pull = pull;
+    SaliencyController controller(settings, static_cast<int>(net->node_count() * share));
+    for (int step = 0; step < 200; ++step) {
+      body->advance_blends();
+      controller.before_step(*body);
+      body->simulate_step(1.0f / 60);
+      controller.after_step(*body);
+    }
+    EXPECT_TRUE(controller.converged());
+    EXPECT_TRUE(body->validate().ok()) << body->validate().summary();
   }
-  EXPECT_TRUE(controller.converged());
-  EXPECT_TRUE(body.validate().ok()) << body.validate().summary();
-  const std::vector<float> leaf_distance = pin_distances(net->lod());
-  return testing::level_boundary_links(body, [&](TreeId id) {
+
+  /// Is the block's nearest leaf within 8 grid steps of a pin?
+  bool near_a_pin(TreeId id) const {
+    static const std::vector<float> distance = pin_distances(net->lod());
     const LodNode& n = net->lod().node(id);
-    return leaf_distance[static_cast<std::size_t>(n.leaf_y0 * 33 + n.leaf_x0)] < 8.0f;
-  });
-}
+    return distance[static_cast<std::size_t>(n.leaf_y0 * 33 + n.leaf_x0)] < 8.0f;
+  }
+  /// Links of the cut between levels with an end near a pin.
+  int boundaries_near_the_pins() const {
+    return testing::level_boundary_links(*body, [&](TreeId id) { return near_a_pin(id); });
+  }
+  /// Simulated leaves (level 0) near a pin.
+  int fine_nodes_near_the_pins() const {
+    int count = 0;
+    for (const TreeId id : body->tree_ids())
+      if (net->lod().node(id).level == 0 && near_a_pin(id)) ++count;
+    return count;
+  }
+};
 
 TEST(PinTension, TheControllerKeepsBoundariesAwayFromThePins) {
-  const int flat = boundaries_near_the_pins(0.0), weighed = boundaries_near_the_pins(0.5);
+  const int flat = ControlledCut(0.0, 0.0, 0.75).boundaries_near_the_pins();
+  const int weighed = ControlledCut(0.5, 0.0, 0.75).boundaries_near_the_pins();
   EXPECT_GT(flat, 0);
   EXPECT_LT(weighed, flat) << "flat " << flat << ", weighed " << weighed;
+}
+
+TEST(PinTension, ThePullMakesThePinsTakeTheBudgetsLevel) {
+  // At 30 % most of the cloth is at level 1: with the pull the pins' surroundings are too.
+  const int fine = ControlledCut(0.5, 0.0, 0.3).fine_nodes_near_the_pins();
+  const int pulled = ControlledCut(0.5, 8.0, 0.3).fine_nodes_near_the_pins();
+  EXPECT_LT(pulled, fine) << "without the pull " << fine << ", with it " << pulled;
+  // At 75 % most of it is at level 0, and the pull keeps the pins fine.
+  const int fine75 = ControlledCut(0.5, 0.0, 0.75).fine_nodes_near_the_pins();
+  const int pulled75 = ControlledCut(0.5, 8.0, 0.75).fine_nodes_near_the_pins();
+  EXPECT_GE(pulled75, fine75) << "without the pull " << fine75 << ", with it " << pulled75;
+}
+
+TEST(PinTension, BudgetLevelIsTheLevelHoldingMostOfTheNet) {
+  const auto net = net_of(17, 17, kAllCorners);
+  const LodTree& tree = net->lod();
+  ASSERT_EQ(tree.level_width(1), 9);  // 289, 81, 25, ... nodes in the whole cut of each level
+  ASSERT_EQ(tree.level_width(2), 5);
+  EXPECT_EQ(budget_level(tree, 289), 0);
+  EXPECT_EQ(budget_level(tree, 1000), 0);
+  EXPECT_EQ(budget_level(tree, 200), 0) << "(200 - 81) / (289 - 81) = 0.57 of the net at level 0";
+  EXPECT_EQ(budget_level(tree, 150), 1) << "0.33 at level 0";
+  EXPECT_EQ(budget_level(tree, 81), 1);
+  EXPECT_EQ(budget_level(tree, 50), 2) << "(50 - 25) / (81 - 25) = 0.45 at level 1";
+  EXPECT_EQ(budget_level(tree, 0), tree.level_count() - 1);
+}
+
+TEST(PinTension, ThePullLeansTowardsTheBudgetsLevelNearThePins) {
+  const auto net = net_of(17, 17, kCornerMinMin);
+  SoftBodyWorld world(WorldSettings{});
+  TcSoftBody body(world, net, {}, {});
+  const LodTree& tree = body.tree();
+  const std::vector<float> weight = interface_weights(tree, 0.5);
+  const CutView cut = cut_view(body);
+  const TreeId block = tree.at(1, 1, 1);  // a coarsen candidate among leaves, near the pin
+  const InterfaceCharge none{3.0, weight}, coarse{3.0, weight, 8.0, 1}, fine{3.0, weight, 8.0, 0};
+  EXPECT_LT(coarse.factor(cut, block), none.factor(cut, block)) << "budget at level 1: the coarsen goes sooner";
+  EXPECT_GT(fine.factor(cut, block), none.factor(cut, block)) << "budget at level 0: later";
+  const double w = weight[static_cast<std::size_t>(block)];
+  EXPECT_NEAR(std::log(coarse.factor(cut, block) / none.factor(cut, block)), -3.0 * 8.0 * (w - 1) / 4, 1e-9);
+  const InterfaceCharge unweighed{3.0, {}, 8.0, 1};
+  const InterfaceCharge flat{3.0, {}};
+  EXPECT_DOUBLE_EQ(unweighed.factor(cut, block), flat.factor(cut, block)) << "no pins, no pull";
 }
 
 }  // namespace

@@ -141,6 +141,9 @@ TEST(NativeJson, TheCandidateChargesAreWrittenOnlyWhenSet) {
   EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("interface_tension"));
   run.suite.feedback.interface_tension = 0.5;
   EXPECT_EQ(native_json(run)["suite"]["feedback"]["interface_tension"], 0.5);
+  EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("pin_level_pull"));
+  run.suite.feedback.pin_level_pull = 8;
+  EXPECT_EQ(native_json(run)["suite"]["feedback"]["pin_level_pull"], 8.0);
 }
 
 TEST(NativeJson, CaseAndRepetitionKeys) {

@@ -417,6 +417,16 @@ TEST(SuiteReject, OtherRanges) {
       "feedback.interface_tension");
   // It only weighs the interface charge: alone it would do nothing.
   rejected_edit([](json& j) { j["feedback"] = {{"interface_tension", 0.5}}; }, "feedback.interface_tension");
+  rejected_edit(
+      [](json& j) {
+        j["feedback"] = {{"interface_charge", 3}, {"pin_level_pull", 8}};
+      },
+      "feedback.pin_level_pull");
+  rejected_edit(
+      [](json& j) {
+        j["feedback"] = {{"interface_charge", 3}, {"interface_tension", 0.5}, {"pin_level_pull", -8}};
+      },
+      "feedback.pin_level_pull");
   rejected_edit([](json& j) { j["fidelity"] = {{"rms_threshold_pct", 0}}; }, "fidelity.rms_threshold_pct");
   rejected_edit([](json& j) { j["fidelity"] = {{"pareto_targets", {0.5, 1.5}}}; }, "fidelity.pareto_targets[1]");
   // Enabled without TC-SB it would measure nothing and look like a pass.
