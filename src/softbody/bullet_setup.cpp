@@ -34,15 +34,20 @@ void init_net_nodes(btSoftBody& body, const Net& net, int capacity) {
     node.m_material = body.m_materials[0];
     body.m_X[i] = node.m_x;
   }
-  std::vector<int> order(static_cast<std::size_t>(n));
-  std::iota(order.begin(), order.end(), 0);
-  std::shuffle(order.begin(), order.end(), std::mt19937(20111219));  // fixed: every body gets the same tree
+  std::vector<std::int32_t> order;
+  dbvt_insertion_order(n, order);
   const btScalar margin = body.getCollisionShape()->getMargin();
-  for (int i : order) {
+  for (const std::int32_t i : order) {
     btSoftBody::Node& node = body.m_nodes[i];
     node.m_leaf = body.m_ndbvt.insert(btDbvtVolume::FromCR(node.m_x, margin), &node);
   }
   body.updateBounds();
+}
+
+void dbvt_insertion_order(int n, std::vector<std::int32_t>& order) {
+  order.resize(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  std::shuffle(order.begin(), order.end(), std::mt19937(20111219));  // fixed: every body gets the same tree
 }
 
 void append_net_links(btSoftBody& body, const Net& net) {

@@ -4,6 +4,7 @@
 
 #include <BulletSoftBody/btSoftBody.h>
 
+#include <cstdint>
 #include <cstring>
 #include <vector>
 
@@ -31,6 +32,10 @@ void apply_solver_settings(btSoftBody& body, const SolverSettings& settings);
 /// chain (depth 2W: 513 at 257x257), which costs 10x at build time and ~30% per step (DBVT re-insertions walk
 /// from the root). `capacity` reserves the node array first (TC-SB reserves its whole tree).
 void init_net_nodes(btSoftBody& body, const Net& net, int capacity = 0);
+
+/// The order init_net_nodes inserts n nodes' DBVT leaves in: 0..n-1 in a fixed shuffle, the same for every body of
+/// n nodes (TcSoftBody::rebuild_node_dbvt builds its tree in it too).
+void dbvt_insertion_order(int n, std::vector<std::int32_t>& order);
 
 /// Appends the net's links in canonical order with stock appendLink(), then lets Bullet compute every link
 /// constant once, at rest (updateConstants), and clears the dirty flag so no later step redoes it (docs/design.md,

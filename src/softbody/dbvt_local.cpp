@@ -18,8 +18,11 @@ int index_in_parent(const btDbvtNode* node) { return node->parent->childs[1] == 
 
 }  // namespace
 
-DbvtNodeCache::~DbvtNodeCache() {
+DbvtNodeCache::~DbvtNodeCache() { release(); }
+
+void DbvtNodeCache::release() {
   for (void* storage : spare_) btAlignedFree(storage);
+  spare_.clear();
 }
 
 btDbvtNode* DbvtNodeCache::take(btDbvtNode* parent) {

@@ -42,6 +42,8 @@ class DbvtNodeCache {
   /// Takes back a node that is no longer in any tree.
   void give(btDbvtNode* node);
   std::size_t spare() const { return spare_.size(); }
+  /// Frees every spare node (before the tree is rebuilt elsewhere in memory).
+  void release();
 
  private:
   std::vector<void*> spare_;  // storage from btAlignedAlloc, no node living in it

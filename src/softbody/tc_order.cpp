@@ -1,4 +1,5 @@
-// TcSoftBody::restore_order(): Bullet's node and link arrays back in a plain body's spatial order.
+// TcSoftBody::restore_order(): Bullet's node and link arrays back in a plain body's spatial order; and
+// rebuild_node_dbvt(): the node DBVT as a plain body builds it.
 //
 // Why (docs/methodology.md, "The tax of adaptivity"): Bullet's step walks its node array (integration, one DBVT
 // update per node) and its link array (the solver), and a plain body's arrays are row-major, so consecutive
@@ -8,6 +9,11 @@
 #include <array>
 #include <utility>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
+#include "softbody/bullet_setup.h"
 #include "softbody/tc_softbody.h"
 
 namespace tcsb {
@@ -93,6 +99,24 @@ void TcSoftBody::restore_order() {
   for (const TreeId id : tree_of_) incidence_[static_cast<std::size_t>(id)].renumber(position_);
   displaced_ = 0;
   ++order_restorations_;
+}
+
+void TcSoftBody::rebuild_node_dbvt() {
+  m_ndbvt.clear();
+  m_ndbvt.m_leaves = 0;  // Bullet's clear() frees every node but leaves the count as it was
+  dbvt_nodes_.release();
+#ifdef __GLIBC__
+  // The freed tree nodes sit in malloc's fast bins, one by one, spread over the old tree's allocation: taken again
+  // from there, the new tree would be as scattered as the old. Trimming first merges them into large free blocks,
+  // from which the new nodes are then carved one after the other.
+  malloc_trim(0);
+#endif
+  dbvt_insertion_order(m_nodes.size(), order_);
+  const btScalar margin = getCollisionShape()->getMargin();
+  for (const std::int32_t i : order_)
+    m_nodes[i].m_leaf = m_ndbvt.insert(btDbvtVolume::FromCR(m_nodes[i].m_x, margin), &m_nodes[i]);
+  dbvt_peak_nodes_ = m_nodes.size();
+  ++dbvt_rebuilds_;
 }
 
 }  // namespace tcsb

@@ -35,6 +35,13 @@ struct TcSettings {
   /// twice the passes; 1/2 fewer passes, but half the arrays out of order (callgrind, scripts/step-profile.sh;
   /// docs/methodology.md).
   static constexpr double kReorderFraction = 1.0 / 4;
+  /// With restore_order, on bodies of at least restore_order_min_nodes: once the body has shrunk to
+  /// 1/kDbvtRebuildShrink of its largest node count since the node DBVT was last built, rebuild that tree as a plain
+  /// body builds it (TcSoftBody::rebuild_node_dbvt). A body coarsened from the full net otherwise keeps its tree nodes
+  /// scattered over the full tree's allocation, and the per-step leaf updates miss the cache where a plain body of its
+  /// size does not (docs/methodology.md, "The node DBVT as a plain body has it").
+  bool rebuild_dbvt = true;
+  static constexpr double kDbvtRebuildShrink = 1.3;
 };
 
 }  // namespace tcsb

@@ -133,7 +133,8 @@ class TcSoftBody : public btSoftBody {
   /// before beginning new operations. O(interpolations); when TcSettings::restore_order is on and operations have
   /// displaced more than TcSettings::kReorderFraction of the arrays' elements, it then restores their order
   /// (restore_order(): O(N + L + T) once per (N + L)/4 displacements, T the tree's size, so amortised O(1 + T/N) per
-  /// displacement: O(1) at any fixed compression, 4.4 N at 30 %).
+  /// displacement: O(1) at any fixed compression, 4.4 N at 30 %). On bodies that shrank by
+  /// TcSettings::kDbvtRebuildShrink since their node DBVT was built it rebuilds that tree too (rebuild_node_dbvt()).
   void advance_blends();
   /// One Bullet step, exactly as the plain baseline steps.
   void simulate_step(btScalar dt);
@@ -154,6 +155,16 @@ class TcSoftBody : public btSoftBody {
   int displaced() const { return displaced_; }
   /// Times restore_order() has run (by advance_blends() or a direct call).
   int order_restorations() const { return order_restorations_; }
+  /// Builds the node DBVT afresh, as a plain body's is built (bullet_setup.h, init_net_nodes: every node's leaf
+  /// inserted from the root, in the same fixed shuffled order, with a box of the node's position and the margin),
+  /// after freeing the old tree and giving the freed memory back to malloc's free lists in one piece, so the new tree
+  /// lies in one compact region. The tree takes no part in the physics (collisions are off), so positions, velocities
+  /// and every invariant are unchanged. O(N log N); advance_blends() calls it only after the body has shrunk by the
+  /// factor TcSettings::kDbvtRebuildShrink since the last build, so it costs amortised O(log N) per node removed and
+  /// nothing at a fixed compression.
+  void rebuild_node_dbvt();
+  /// Times rebuild_node_dbvt() has run.
+  int dbvt_rebuilds() const { return dbvt_rebuilds_; }
 
   // ---- invariants --------------------------------------------------------------------------------------------
   /// Checks every invariant: incidence lists equal Bullet's link set; node and link pointers consistent; one DBVT
@@ -277,6 +288,8 @@ class TcSoftBody : public btSoftBody {
   DbvtNodeCache dbvt_nodes_;  // spare nodes for the node DBVT's local edits
   int displaced_ = 0;         // nodes and links out of order since restore_order() (see displaced())
   int order_restorations_ = 0;
+  int dbvt_rebuilds_ = 0;
+  int dbvt_peak_nodes_ = 0;  // the most nodes simulated since the node DBVT was last built
   /// restore_order()'s scratch, kept to reuse the room: a permutation (new -> old), its inverse, and one slot per
   /// spatial rank of the tree.
   std::vector<std::int32_t> order_, position_, rank_slots_;

@@ -144,6 +144,9 @@ TEST(NativeJson, TheCandidateChargesAreWrittenOnlyWhenSet) {
   EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("pin_level_pull"));
   run.suite.feedback.pin_level_pull = 8;
   EXPECT_EQ(native_json(run)["suite"]["feedback"]["pin_level_pull"], 8.0);
+  EXPECT_FALSE(native_json(run)["suite"]["tcsb"].contains("rebuild_dbvt"));
+  run.suite.tcsb.rebuild_dbvt = false;
+  EXPECT_EQ(native_json(run)["suite"]["tcsb"]["rebuild_dbvt"], false);
 }
 
 TEST(NativeJson, CaseAndRepetitionKeys) {

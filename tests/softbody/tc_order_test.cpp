@@ -189,5 +189,59 @@ TEST(TcSoftBodyOrder, BodiesBelowTheMinimumNodeCountAreLeftInTheOperationsOrder)
   EXPECT_TRUE(below.validate().ok()) << below.validate().summary();
 }
 
+TEST(TcSoftBodyDbvt, ABodyThatShrankGetsAFreshTreeAndMovesExactlyAsWithout) {
+  const auto net = testing::square_net(33);
+  SoftBodyWorld world({});
+  TcSettings without = always_ordered();
+  without.rebuild_dbvt = false;
+  TcSoftBody on(world, net, testing::test_solver(), always_ordered());
+  TcSoftBody off(world, net, testing::test_solver(), without);
+  RandomPolicy policy_on(5), policy_off(5);
+  operate(on, policy_on, 300, 60);
+  operate(off, policy_off, 300, 60);
+  // From 1 089 nodes to about 300: a tree built again each time the body is down by the factor since the last.
+  EXPECT_GE(on.dbvt_rebuilds(), 3);
+  EXPECT_EQ(off.dbvt_rebuilds(), 0);
+  EXPECT_TRUE(on.validate().ok()) << on.validate().summary();
+  // The tree takes no part in the physics: every node and link the same, bit for bit.
+  EXPECT_EQ(nodes_by_tree_id(on), nodes_by_tree_id(off));
+  EXPECT_EQ(link_set(on), link_set(off));
+  EXPECT_EQ(on.m_ndbvt.m_leaves, on.node_count());
+
+  // At a fixed compression the body does not shrink, and no tree is built again.
+  const int rebuilds = on.dbvt_rebuilds();
+  operate(on, policy_on, 300, 100);
+  EXPECT_EQ(on.dbvt_rebuilds(), rebuilds);
+  EXPECT_TRUE(on.validate().ok()) << on.validate().summary();
+}
+
+TEST(TcSoftBodyDbvt, ARebuiltTreeIsThePlainBodysTree) {
+  // Rebuilt on the finest cut, the tree is the one a plain body of the net builds: the same leaves in the same
+  // shuffled order, so the same shape.
+  const auto net = testing::square_net(17);
+  SoftBodyWorld world({});
+  TcSoftBody tc(world, net, testing::test_solver(), always_ordered());
+  tc.rebuild_node_dbvt();
+  auto plain = make_plain_softbody(world, *net, testing::test_solver());
+  const auto shape = [](const btDbvtNode* root) {
+    std::vector<int> depths;
+    std::vector<std::pair<const btDbvtNode*, int>> stack{{root, 0}};
+    while (!stack.empty()) {
+      const auto [node, depth] = stack.back();
+      stack.pop_back();
+      if (node->isleaf()) {
+        depths.push_back(depth);
+      } else {
+        stack.push_back({node->childs[0], depth + 1});
+        stack.push_back({node->childs[1], depth + 1});
+      }
+    }
+    return depths;
+  };
+  EXPECT_EQ(shape(tc.m_ndbvt.m_root), shape(plain->m_ndbvt.m_root));
+  EXPECT_EQ(tc.dbvt_rebuilds(), 1);
+  EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
+}
+
 }  // namespace
 }  // namespace tcsb

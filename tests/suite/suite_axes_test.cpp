@@ -175,14 +175,14 @@ TEST(SuiteAxes, TheFidelityPassIsNotCombinedWithAxes) {
 TEST(SuiteAxes, EverySettingThatCanBeAnAxisIsReadThroughTheAxisTable) {
   // Each axis-able path is a real setting whose reader accepts a valid value.
   const std::vector<std::string> paths = axis_setting_paths();
-  EXPECT_EQ(paths.size(), 24u);
+  EXPECT_EQ(paths.size(), 25u);
   for (const std::string& path : paths) {
     json value;
     if (path == "tcsb.placement")
       value = "rigid";
     else if (path == "feedback.policy")
       value = "random";
-    else if (path == "feedback.illumination" || path == "tcsb.restore_order")
+    else if (path == "feedback.illumination" || path == "tcsb.restore_order" || path == "tcsb.rebuild_dbvt")
       value = false;
     else if (path == "solver.damping" || path == "solver.stiffness" || path == "dt")
       value = 0.5;
