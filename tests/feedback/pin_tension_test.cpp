@@ -74,13 +74,19 @@ TEST(PinTension, ABlockWeighsAsItsLeafNearestToAPin) {
       << "the root holds the pin";
 }
 
+/// A 17 x 17 TC-SB body at its finest cut, pinned at grid (0, 0), and its tree's weights at tension 0.5.
+struct PinnedCorner17 {
+  std::shared_ptr<const Net> net = net_of(17, 17, kCornerMinMin);
+  SoftBodyWorld world{WorldSettings{}};
+  TcSoftBody body{world, net, {}, {}};
+  std::vector<float> weight = interface_weights(body.tree(), 0.5);
+};
+
 TEST(PinTension, ABoundaryNearAPinWeighsMore) {
-  const auto net = net_of(17, 17, kCornerMinMin);
-  SoftBodyWorld world(WorldSettings{});
-  TcSoftBody body(world, net, {}, {});
-  const LodTree& tree = body.tree();
-  const std::vector<float> weight = interface_weights(tree, 0.5);
-  const CutView cut = cut_view(body);
+  const PinnedCorner17 f;
+  const LodTree& tree = f.body.tree();
+  const std::vector<float>& weight = f.weight;
+  const CutView cut = cut_view(f.body);
   const TreeId near = tree.at(1, 1, 1), far = tree.at(1, 6, 6);  // both among leaves only: balance -4
   ASSERT_EQ(neighbour_balance(cut, near), neighbour_balance(cut, far));
   const InterfaceCharge flat{3.0, {}}, weighed{3.0, weight};
@@ -170,12 +176,10 @@ TEST(PinTension, BudgetLevelIsTheLevelHoldingMostOfTheNet) {
 }
 
 TEST(PinTension, ThePullLeansTowardsTheBudgetsLevelNearThePins) {
-  const auto net = net_of(17, 17, kCornerMinMin);
-  SoftBodyWorld world(WorldSettings{});
-  TcSoftBody body(world, net, {}, {});
-  const LodTree& tree = body.tree();
-  const std::vector<float> weight = interface_weights(tree, 0.5);
-  const CutView cut = cut_view(body);
+  const PinnedCorner17 f;
+  const LodTree& tree = f.body.tree();
+  const std::vector<float>& weight = f.weight;
+  const CutView cut = cut_view(f.body);
   const TreeId block = tree.at(1, 1, 1);  // a coarsen candidate among leaves, near the pin
   const InterfaceCharge none{3.0, weight}, coarse{3.0, weight, 8.0, 1}, fine{3.0, weight, 8.0, 0};
   EXPECT_LT(coarse.factor(cut, block), none.factor(cut, block)) << "budget at level 1: the coarsen goes sooner";
