@@ -51,24 +51,22 @@ std::vector<float> pin_distances(const LodTree& tree) {
   std::vector<double> squared(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
   for (std::size_t i = 0; i < squared.size(); ++i) squared[i] = tree.nodes()[i].pinned() ? 0.0 : kNoPin;
   const int longest = std::max(w, h);
-  std::vector<double> f(static_cast<std::size_t>(longest)), out(static_cast<std::size_t>(longest));
+  std::vector<double> f, out;
   std::vector<int> sites(static_cast<std::size_t>(longest));
   std::vector<double> bounds(static_cast<std::size_t>(longest) + 1);
+  // One pass transforms `lines` lines of `length` cells, cell (line, i) at squared[index(line, i)].
+  const auto pass = [&](int lines, int length, auto index) {
+    f.resize(static_cast<std::size_t>(length));
+    out.resize(static_cast<std::size_t>(length));
+    for (int line = 0; line < lines; ++line) {
+      for (int i = 0; i < length; ++i) f[static_cast<std::size_t>(i)] = squared[index(line, i)];
+      transform_line(f, out, sites, bounds);
+      for (int i = 0; i < length; ++i) squared[index(line, i)] = out[static_cast<std::size_t>(i)];
+    }
+  };
   // Columns first, then rows over the columns' result: separable, so exact in two dimensions.
-  f.resize(static_cast<std::size_t>(h));
-  out.resize(static_cast<std::size_t>(h));
-  for (int x = 0; x < w; ++x) {
-    for (int y = 0; y < h; ++y) f[static_cast<std::size_t>(y)] = squared[at(x, y)];
-    transform_line(f, out, sites, bounds);
-    for (int y = 0; y < h; ++y) squared[at(x, y)] = out[static_cast<std::size_t>(y)];
-  }
-  f.resize(static_cast<std::size_t>(w));
-  out.resize(static_cast<std::size_t>(w));
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) f[static_cast<std::size_t>(x)] = squared[at(x, y)];
-    transform_line(f, out, sites, bounds);
-    for (int x = 0; x < w; ++x) squared[at(x, y)] = out[static_cast<std::size_t>(x)];
-  }
+  pass(w, h, [&](int x, int y) { return at(x, y); });
+  pass(h, w, [&](int y, int x) { return at(x, y); });
   std::vector<float> distance(squared.size());
   for (std::size_t i = 0; i < squared.size(); ++i)
     distance[i] =

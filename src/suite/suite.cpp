@@ -227,14 +227,14 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   read_axis_setting(r, root, "seed", s, true);
   parse_settings(r, root, s);
   if (const json* axes = root.find("axes")) parse_axes(r, *axes, s);
-  // The tension only weighs the interface charge: without one (and no axis that sets one) it would do nothing.
-  const bool charge_axis =
-      std::any_of(s.axes.begin(), s.axes.end(), [](const Axis& a) { return a.path == "feedback.interface_charge"; });
-  if (s.feedback.interface_tension > 0 && s.feedback.interface_charge == 0 && !charge_axis)
+  // The tension only weighs the interface charge, and the pull acts through the tension: without what it needs (set,
+  // or varied by an axis) each would do nothing.
+  const auto set_or_varied = [&](double value, const std::string& path) {
+    return value > 0 || std::any_of(s.axes.begin(), s.axes.end(), [&](const Axis& a) { return a.path == path; });
+  };
+  if (s.feedback.interface_tension > 0 && !set_or_varied(s.feedback.interface_charge, "feedback.interface_charge"))
     r.fail("feedback.interface_tension", "weighs the interface charge, which is 0 here: set feedback.interface_charge");
-  const bool tension_axis =
-      std::any_of(s.axes.begin(), s.axes.end(), [](const Axis& a) { return a.path == "feedback.interface_tension"; });
-  if (s.feedback.pin_level_pull > 0 && s.feedback.interface_tension == 0 && !tension_axis)
+  if (s.feedback.pin_level_pull > 0 && !set_or_varied(s.feedback.interface_tension, "feedback.interface_tension"))
     r.fail("feedback.pin_level_pull", "acts through the pin tension, which is 0 here: set feedback.interface_tension");
 
   // CreatePatch makes structural links (and, with gendiags, one diagonal per cell), never our shear/bend sets; the
