@@ -1,10 +1,11 @@
 // tcsb_dbvt_probe: how often each body's node DBVT re-inserts a leaf, and how deep its tree is, over a suite's timed
 // window (docs/methodology.md, "Where Bullet's extra time goes").
 //
-// Usage: tcsb_dbvt_probe SUITE NET_INDEX COMPRESSION [RESTORE_ORDER [SHUFFLE_LINKS]]   (RESTORE_ORDER 0 or 1:
-// tcsb.restore_order, with restore_order_min_nodes 0; omitted or -1: the suite's settings. SHUFFLE_LINKS 1: the
+// Usage: tcsb_dbvt_probe SUITE NET_INDEX COMPRESSION [RESTORE_ORDER [SHUFFLE_LINKS [PER_STEP]]]   (RESTORE_ORDER 0 or
+// 1: tcsb.restore_order, with restore_order_min_nodes 0; omitted or -1: the suite's settings. SHUFFLE_LINKS 1: the
 // stock bodies' links are put in a random order first, by Bullet's btSoftBody::randomizeConstraints(), to see what
-// the link order alone does to their motion). Runs TC-SB, plain_equal and plain on the net, one after the other,
+// the link order alone does to their motion. PER_STEP 1: each timed step's re-inserts too, one line a step, to see
+// when they come). Runs TC-SB, plain_equal and plain on the net, one after the other,
 // the feedback on the simulation thread, for the suite's warm-up and timed steps.
 //
 // A leaf's box changes only when btDbvt::update(leaf, volume, velocity, margin) finds the node outside it and
@@ -65,7 +66,8 @@ const char* name_of(Method m) {
 
 int main(int argc, char** argv) {
   if (argc < 4) {
-    std::fprintf(stderr, "usage: tcsb_dbvt_probe SUITE NET_INDEX COMPRESSION [RESTORE_ORDER]\n");
+    std::fprintf(stderr,
+                 "usage: tcsb_dbvt_probe SUITE NET_INDEX COMPRESSION [RESTORE_ORDER [SHUFFLE_LINKS [PER_STEP]]]\n");
     return 2;
   }
   Suite suite = parse_suite(argv[1]);
@@ -77,6 +79,7 @@ int main(int argc, char** argv) {
     suite.tcsb.restore_order_min_nodes = 0;
   }
   const bool shuffle_links = argc > 5 && std::atoi(argv[5]) != 0;
+  const bool per_step = argc > 6 && std::atoi(argv[6]) != 0;
   const int warmup = suite.warmup_steps;
   const int steps = suite.steps;
   auto net = std::make_shared<const Net>(suite.nets.at(net_index));
@@ -101,6 +104,7 @@ int main(int argc, char** argv) {
       for (int i = 0; i < bullet.m_nodes.size(); ++i)
         after[tc ? tc->tree_id(i) : i] = {bullet.m_nodes[i].m_leaf, bullet.m_nodes[i].m_leaf->volume};
       if (s >= warmup) {
+        const long reinserts_before = reinserts;
         for (const auto& [id, leaf] : after) {
           const auto it = before.find(id);
           if (it == before.end() || it->second.first != leaf.first) continue;  // inserted during this step
@@ -111,6 +115,9 @@ int main(int argc, char** argv) {
           level.first += moved;
           ++level.second;
         }
+        if (per_step)
+          std::printf("%-11s step %d: %d nodes, %ld re-inserts\n", name_of(method), s, bullet.m_nodes.size(),
+                      reinserts - reinserts_before);
         if ((s - warmup) % 10 == 0) {
           TreeShape shape;
           measure(bullet.m_ndbvt.m_root, 0, shape);
