@@ -198,6 +198,19 @@ std::optional<std::size_t> plain_case_for(const RunResult& result, std::size_t c
   return std::nullopt;
 }
 
+std::optional<std::size_t> equal_plain_case_for(const RunResult& result, std::size_t case_index) {
+  if (case_index >= result.cases.size()) return std::nullopt;
+  const CaseKey& key = result.cases[case_index].key;
+  if (key.method != Method::kTcsb || !key.compression) return std::nullopt;
+  for (std::size_t i = 0; i < result.cases.size(); ++i) {
+    const CaseKey& other = result.cases[i].key;
+    if (other.net == key.net && other.configuration == key.configuration && other.method == Method::kPlainEqual &&
+        other.compression && same_compression(*other.compression, *key.compression))
+      return i;
+  }
+  return std::nullopt;
+}
+
 std::vector<Table1Row> table1(const RunResult& result) {
   struct Pool {
     std::vector<double> nodes, links, node_ms, link_ms, complete_us;

@@ -95,6 +95,10 @@ std::optional<double> paired_ratio(const RunResult& result, std::size_t case_ind
 /// The plain case of the same net and configuration as `case_index` (the case itself if it is plain), or nullopt.
 std::optional<std::size_t> plain_case_for(const RunResult& result, std::size_t case_index);
 
+/// For a TC-SB case, the plain_equal case of the same net, configuration and compression (the static plain grid of
+/// its node budget), or nullopt (other methods, or no plain_equal in the run).
+std::optional<std::size_t> equal_plain_case_for(const RunResult& result, std::size_t case_index);
+
 /// Table 1: rows for refine, end-refine, coarse, end-coarse (OpKind order) over all op samples of the ok TC-SB
 /// cases. A case with a diverged repetition is left out: its samples cannot be told apart by repetition.
 std::vector<Table1Row> table1(const RunResult& result);

@@ -19,29 +19,36 @@ std::optional<double> measured(const Summary& s, double v) {
 }
 
 void print_cases(const RunResult& r, std::ostream& out) {
-  TextTable t({{"case", Align::kLeft},
-               {"status", Align::kLeft},
-               {"N"},
-               {"L"},
-               {"I"},
-               {"median ms"},
-               {"CV %"},
-               {"vs plain"},
-               {"reps", Align::kRight}});
+  bool any_equal = false;
+  for (std::size_t i = 0; i < r.cases.size() && !any_equal; ++i) any_equal = equal_plain_case_for(r, i).has_value();
+  std::vector<TextTable::Column> columns = {
+      {"case", Align::kLeft}, {"status", Align::kLeft}, {"N"}, {"L"}, {"I"}, {"median ms"}, {"CV %"}, {"vs plain"}};
+  if (any_equal) columns.push_back({"vs equal"});
+  columns.push_back({"reps", Align::kRight});
+  TextTable t(columns);
   for (std::size_t i = 0; i < r.cases.size(); ++i) {
     const CaseResult& c = r.cases[i];
-    std::optional<double> ratio;
+    std::optional<double> ratio, equal_ratio;
     if (const auto plain = plain_case_for(r, i)) ratio = paired_ratio(r, i, *plain);
+    if (const auto equal = equal_plain_case_for(r, i)) equal_ratio = paired_ratio(r, i, *equal);
     const bool ok = c.status == "ok";
     std::string status = c.status;
     if (c.step_ms.unstable) status += " (unstable)";
-    t.add_row({c.label, status, fixed(ok ? std::optional(c.mean_nodes) : std::nullopt, 0),
-               fixed(ok ? std::optional(c.mean_links) : std::nullopt, 0),
-               fixed(ok ? std::optional(c.mean_interpolations) : std::nullopt, 1),
-               general(measured(c.step_ms, c.step_ms.median), 4), fixed(measured(c.step_ms, 100.0 * c.step_ms.cv), 1),
-               fixed(ratio, 3), std::to_string(c.step_ms.count) + "/" + std::to_string(c.repetitions.size())});
+    std::vector<std::string> row = {c.label,
+                                    status,
+                                    fixed(ok ? std::optional(c.mean_nodes) : std::nullopt, 0),
+                                    fixed(ok ? std::optional(c.mean_links) : std::nullopt, 0),
+                                    fixed(ok ? std::optional(c.mean_interpolations) : std::nullopt, 1),
+                                    general(measured(c.step_ms, c.step_ms.median), 4),
+                                    fixed(measured(c.step_ms, 100.0 * c.step_ms.cv), 1),
+                                    fixed(ratio, 3)};
+    if (any_equal) row.push_back(fixed(equal_ratio, 3));
+    row.push_back(std::to_string(c.step_ms.count) + "/" + std::to_string(c.repetitions.size()));
+    t.add_row(row);
   }
-  out << "Cases (median of per-repetition mean step times; 'vs plain' = median of paired same-run ratios):\n";
+  out << "Cases (median of per-repetition mean step times; 'vs plain' = median of paired same-run ratios";
+  if (any_equal) out << "; 'vs equal' = the same against plain_equal, TC-SB's tax over a static grid of its budget";
+  out << "):\n";
   t.print(out);
 }
 

@@ -149,13 +149,16 @@ ojson case_json(const RunResult& result, std::size_t index) {
       {"mean_feedback_total_ms", json_number(c.mean_feedback_total_ms)},
       {"step_ms", summary_json(c.step_ms)},
       {"ratio_vs_plain", json_number(ratio)},
-      {"step_breakdown_ms",
-       {{"bullet", json_number(c.breakdown.bullet_ms)},
-        {"feedback", json_number(c.breakdown.feedback_ms)},
-        {"operations", json_number(c.breakdown.operations_ms)},
-        {"blending", json_number(c.breakdown.blending_ms)}}},
-      {"repetitions", std::move(reps)},
   };
+  // TC-SB against the static plain grid of its budget, paired as ratio_vs_plain is: the per-net tax of adaptivity
+  // (Table 2's time_ratio_vs_equal_plain averages the nets). Only where the run has that grid.
+  if (const auto equal = equal_plain_case_for(result, index))
+    out["ratio_vs_equal_plain"] = json_number(paired_ratio(result, index, *equal));
+  out["step_breakdown_ms"] = {{"bullet", json_number(c.breakdown.bullet_ms)},
+                              {"feedback", json_number(c.breakdown.feedback_ms)},
+                              {"operations", json_number(c.breakdown.operations_ms)},
+                              {"blending", json_number(c.breakdown.blending_ms)}};
+  out["repetitions"] = std::move(reps);
   // Only TC-SB has TreeCut operations; the key stays absent elsewhere (and in results written before it existed).
   if (c.key.method == Method::kTcsb) out["op_work"] = op_work_json(c.ops.samples);
   if (c.key.configuration < result.suite.configurations.size()) out["configuration"] = configuration_json(result, c);

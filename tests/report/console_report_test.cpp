@@ -53,5 +53,28 @@ TEST(ConsoleReport, HasEverySection) {
   EXPECT_EQ(text.find("nan"), std::string::npos);
 }
 
+TEST(ConsoleReport, TheVsEqualColumnAppearsOnlyWithPlainEqual) {
+  RunResult r;
+  r.suite = synthetic_suite(1);
+  r.suite.compression = {0.5};
+  r.cases = {make_case(r.suite, 0, Method::kPlain, std::nullopt, 100, 200, 0, 1.0, {1.0, 1.0}),
+             make_case(r.suite, 0, Method::kTcsb, 0.5, 50, 100, 3, 0.5, {0.5, 0.66})};
+  std::ostringstream without;
+  print_console_report(r, without);
+  EXPECT_EQ(without.str().find("vs equal"), std::string::npos);
+  r.suite.methods.push_back(Method::kPlainEqual);
+  r.cases.push_back(make_case(r.suite, 0, Method::kPlainEqual, 0.5, 50, 90, 0, 0.5, {0.5, 0.6}));
+  std::ostringstream with;
+  print_console_report(r, with);
+  const std::string text = with.str();
+  ASSERT_NE(text.find("vs equal"), std::string::npos);
+  // The TC-SB row: vs plain 0.580 (median of 0.5 and 0.66), vs equal 1.050 (median of 1.0 and 1.1), 2 of 2 reps.
+  const std::size_t row = text.find("n0/tcsb@0.5");
+  ASSERT_NE(row, std::string::npos);
+  const std::string line = text.substr(row, text.find('\n', row) - row);
+  EXPECT_NE(line.find("0.580  "), std::string::npos) << line;
+  EXPECT_NE(line.find("1.050  "), std::string::npos) << line;
+}
+
 }  // namespace
 }  // namespace tcsb

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -147,6 +148,23 @@ TEST(NativeJson, TheCandidateChargesAreWrittenOnlyWhenSet) {
   EXPECT_FALSE(native_json(run)["suite"]["tcsb"].contains("rebuild_dbvt"));
   run.suite.tcsb.rebuild_dbvt = false;
   EXPECT_EQ(native_json(run)["suite"]["tcsb"]["rebuild_dbvt"], false);
+}
+
+TEST(NativeJson, TcsbCasesCarryTheirPairedRatioToTheGridOfTheirBudget) {
+  RunResult r = small_run();
+  EXPECT_FALSE(native_json(r)["cases"][1].contains("ratio_vs_equal_plain"));  // no plain_equal in the run
+  r.suite.methods.push_back(Method::kPlainEqual);
+  r.cases.insert(r.cases.begin() + 2, make_case(r.suite, 0, Method::kPlainEqual, 0.3, 30, 55, 0, 0.5, {0.5, 0.4}));
+  const ojson doc = native_json(r);
+  const ojson& tcsb = doc["cases"][1];
+  const std::vector<std::string> k = keys(tcsb);
+  const auto at = std::find(k.begin(), k.end(), "ratio_vs_equal_plain");
+  ASSERT_NE(at, k.end());
+  EXPECT_EQ(*(at - 1), "ratio_vs_plain");
+  EXPECT_NEAR(tcsb["ratio_vs_equal_plain"].get<double>(), 1.2, 1e-12);  // 0.6 / 0.5 and 0.48 / 0.4, paired
+  EXPECT_FALSE(doc["cases"][0].contains("ratio_vs_equal_plain"));       // plain
+  EXPECT_FALSE(doc["cases"][2].contains("ratio_vs_equal_plain"));       // plain_equal itself
+  EXPECT_FALSE(doc["cases"][4].contains("ratio_vs_equal_plain"));       // n1's TC-SB: no grid on that net
 }
 
 TEST(NativeJson, CaseAndRepetitionKeys) {
