@@ -89,6 +89,13 @@ class Cli : public ::testing::Test {
     return o;
   }
 
+  /// Writes the 9 x 9 suite "small" with `repetitions` as small.json and runs it into result.json, which must succeed.
+  void run_small_suite(int repetitions) {
+    write_file(dir_ / "small.json", nine_by_nine_suite("small", repetitions));
+    const Outcome o = tcsb("run small.json --quiet --out result.json");
+    ASSERT_EQ(o.exit_code, 0) << o.err;
+  }
+
   fs::path dir_;
 };
 

@@ -11,8 +11,6 @@ namespace {
 using namespace tcsb::cli_test;
 using ojson = nlohmann::ordered_json;
 
-const std::string kSmallSuite = nine_by_nine_suite("small", 3);
-
 // Debian's libbenchmark-tools; compare.py needs SciPy (python3-scipy), which pyenv-style pythons may lack.
 const char* const kCompareScript = "/usr/share/benchmark/compare.py";
 const char* const kSystemPython = "/usr/bin/python3";
@@ -21,9 +19,7 @@ class Export : public Cli {
  protected:
   void SetUp() override {
     Cli::SetUp();
-    write_file(dir_ / "small.json", kSmallSuite);
-    const Outcome o = tcsb("run small.json --quiet --out result.json");
-    ASSERT_EQ(o.exit_code, 0) << o.err;
+    run_small_suite(3);
   }
 };
 

@@ -22,9 +22,7 @@ class Input : public Cli {
  protected:
   void SetUp() override {
     Cli::SetUp();
-    write_file(dir_ / "small.json", kSmallSuite);
-    const Outcome o = tcsb("run small.json --quiet --out result.json");
-    ASSERT_EQ(o.exit_code, 0) << o.err;
+    run_small_suite(1);
     write_file(dir_ / "paper.json", read_file(fs::path(TCSB_SOURCE_DIR) / "results/paper.json"));
   }
 

@@ -35,10 +35,7 @@ class Output : public Cli {
     write_file(dir_ / "small.json", kSmallSuite);
   }
   /// A finished run of the small suite, as result.json.
-  void make_result() {
-    const Outcome o = tcsb("run small.json --quiet --out result.json");
-    ASSERT_EQ(o.exit_code, 0) << o.err;
-  }
+  void make_result() { run_small_suite(1); }
   /// `tcsb ARGS` with stdout redirected as `redirect` says (">/dev/full", ">&-"), under a timeout.
   Outcome tcsb_with_stdout(const std::string& args, const std::string& redirect) const {
     return shell("( timeout 60 '" + kBinary + "' " + args + " " + redirect + " )");
