@@ -183,6 +183,25 @@ std::string table2_section(const ojson& doc) {
   return out + "\n\n" + table(columns, rows);
 }
 
+/// Per net, TC-SB against plain_equal (the cases' ratio_vs_equal_plain): Table 2 averages the nets, and the tax of
+/// adaptivity differs with the net's size. Empty unless the run has plain_equal (and was written since the field).
+std::string tax_section(const ojson& doc) {
+  ojson rows = ojson::array();
+  if (const ojson& cases = at(doc, "cases"); cases.is_array())
+    for (const ojson& c : cases)
+      if (!text_of(at(c, "ratio_vs_equal_plain")).empty()) rows.push_back(c);
+  if (rows.empty()) return "";
+  const std::vector<Column> columns{field("case", "label"),
+                                    field("N", "mean_nodes"),
+                                    field("L", "mean_links"),
+                                    {"ms", [](const ojson& c) { return text_of(at(at(c, "step_ms"), "median")); }},
+                                    field("ratio to equal plain", "ratio_vs_equal_plain")};
+  return "### TC-SB against a static grid of its size, per net\n\nEach TC-SB case's mean nodes and links, its median "
+         "step time in ms, and the median over repetitions of its step time to plain_equal's (the same net and "
+         "budget, paired by repetition).\n\n" +
+         table(columns, rows);
+}
+
 std::string table1_section(const ojson& doc) {
   const ojson& rows = at(doc, "table1");
   if (!non_empty_array(rows)) return "";
@@ -440,8 +459,8 @@ std::string markdown_number(const ojson& value, int digits) {
 std::string markdown_report(const ojson& native) {
   std::string out = heading(native) + "\n" + source_line(native);
   for (const std::string& section :
-       {table2_section(native), table1_section(native), scaling_section(native), configurations_section(native),
-        fidelity_section(native), claims_section(native)}) {
+       {table2_section(native), tax_section(native), table1_section(native), scaling_section(native),
+        configurations_section(native), fidelity_section(native), claims_section(native)}) {
     if (!section.empty()) out += "\n" + section;
   }
   return out;

@@ -109,6 +109,15 @@ TEST(MarkdownExport, Table2ShowsTheRatioToEqualPlainWhenTheRunHasIt) {
   // (0.5 + 1.5) / (0.4 + 1.6)
   EXPECT_TRUE(has_line(md, "| tcsb | 50% | 125.0 | 250.0 | 3.000 | 1.000 | 0.5000 | 0.5000 | 1.000 | 2 | ok |")) << md;
   EXPECT_TRUE(contains(md, "Ratio to equal plain")) << md;
+  // And per net, each TC-SB case paired with its net's grid: 0.5 / 0.4 and 1.5 / 1.6.
+  EXPECT_TRUE(contains(md, "### TC-SB against a static grid of its size, per net")) << md;
+  EXPECT_TRUE(has_line(md, "| case | N | L | ms | ratio to equal plain |")) << md;
+  EXPECT_TRUE(has_line(md, "| n0/tcsb@0.5 | 50.00 | 100.0 | 0.5000 | 1.250 |")) << md;
+  EXPECT_TRUE(has_line(md, "| n1/tcsb@0.5 | 200.0 | 400.0 | 1.500 | 0.9375 |")) << md;
+}
+
+TEST(MarkdownExport, NoPerNetTaxWithoutPlainEqual) {
+  EXPECT_FALSE(contains(markdown_report(synthetic_document()), "static grid of its size")) << "no plain_equal cases";
 }
 
 TEST(MarkdownExport, Table1Rows) {
