@@ -35,19 +35,27 @@ void init_net_nodes(btSoftBody& body, const Net& net, int capacity) {
     body.m_X[i] = node.m_x;
   }
   std::vector<std::int32_t> order;
-  dbvt_insertion_order(n, order);
-  const btScalar margin = body.getCollisionShape()->getMargin();
-  for (const std::int32_t i : order) {
-    btSoftBody::Node& node = body.m_nodes[i];
-    node.m_leaf = body.m_ndbvt.insert(btDbvtVolume::FromCR(node.m_x, margin), &node);
-  }
+  insert_node_leaves(body, order);
   body.updateBounds();
 }
 
-void dbvt_insertion_order(int n, std::vector<std::int32_t>& order) {
-  order.resize(static_cast<std::size_t>(n));
+void insert_node_leaves(btSoftBody& body, std::vector<std::int32_t>& order) {
+  order.resize(static_cast<std::size_t>(body.m_nodes.size()));
   std::iota(order.begin(), order.end(), 0);
   std::shuffle(order.begin(), order.end(), std::mt19937(20111219));  // fixed: every body gets the same tree
+  // The box btSoftBody::predictMotion's btDbvt::update gives a node it re-inserts: the node and the margin, grown by
+  // the update margin and stretched by the velocity over three steps (m_sst holds the last step's margins, all zero
+  // before the first step, which leaves the node and the margin). A bare box inserted mid-fall would be left by every
+  // moving node on the next step, and re-inserting them all would cost a second build.
+  const btScalar margin = body.getCollisionShape()->getMargin();
+  const btVector3 grow(body.m_sst.updmrg, body.m_sst.updmrg, body.m_sst.updmrg);
+  for (const std::int32_t i : order) {
+    btSoftBody::Node& node = body.m_nodes[i];
+    btDbvtVolume box = btDbvtVolume::FromCR(node.m_x, margin);
+    box.Expand(grow);
+    box.SignedExpand(node.m_v * body.m_sst.velmrg);
+    node.m_leaf = body.m_ndbvt.insert(box, &node);
+  }
 }
 
 void append_net_links(btSoftBody& body, const Net& net) {

@@ -33,9 +33,11 @@ void apply_solver_settings(btSoftBody& body, const SolverSettings& settings);
 /// from the root). `capacity` reserves the node array first (TC-SB reserves its whole tree).
 void init_net_nodes(btSoftBody& body, const Net& net, int capacity = 0);
 
-/// The order init_net_nodes inserts n nodes' DBVT leaves in: 0..n-1 in a fixed shuffle, the same for every body of
-/// n nodes (TcSoftBody::rebuild_node_dbvt builds its tree in it too).
-void dbvt_insertion_order(int n, std::vector<std::int32_t>& order);
+/// Inserts every node's leaf into the body's (empty) node DBVT, as init_net_nodes and TcSoftBody::rebuild_node_dbvt
+/// build it: in a fixed shuffle of the node indices, the same for every body of as many nodes (`order` is scratch
+/// that keeps it), each leaf with the box Bullet's own update would give the node now (before the first step: its
+/// position and the margin).
+void insert_node_leaves(btSoftBody& body, std::vector<std::int32_t>& order);
 
 /// Appends the net's links in canonical order with stock appendLink(), then lets Bullet compute every link
 /// constant once, at rest (updateConstants), and clears the dirty flag so no later step redoes it (docs/design.md,

@@ -111,19 +111,7 @@ void TcSoftBody::rebuild_node_dbvt() {
   // from which the new nodes are then carved one after the other.
   malloc_trim(0);
 #endif
-  dbvt_insertion_order(m_nodes.size(), order_);
-  // Each leaf gets the box btSoftBody::predictMotion's btDbvt::update gives a node it re-inserts: the node and the
-  // margin, grown by the update margin and stretched by the velocity over three steps (m_sst holds the last step's
-  // margins; all zero before the first step, which leaves the plain body's box). A bare box (position and margin)
-  // would be left by every moving node on the next step, and re-inserting them all would cost a second rebuild.
-  const btScalar margin = getCollisionShape()->getMargin();
-  const btVector3 grow(m_sst.updmrg, m_sst.updmrg, m_sst.updmrg);
-  for (const std::int32_t i : order_) {
-    btDbvtVolume box = btDbvtVolume::FromCR(m_nodes[i].m_x, margin);
-    box.Expand(grow);
-    box.SignedExpand(m_nodes[i].m_v * m_sst.velmrg);
-    m_nodes[i].m_leaf = m_ndbvt.insert(box, &m_nodes[i]);
-  }
+  insert_node_leaves(*this, order_);  // as a plain body's tree, boxed as Bullet's update would box the moving nodes
   dbvt_peak_nodes_ = m_nodes.size();
   ++dbvt_rebuilds_;
 }

@@ -155,7 +155,7 @@ class TcSoftBody : public btSoftBody {
   int displaced() const { return displaced_; }
   /// Times restore_order() has run (by advance_blends() or a direct call).
   int order_restorations() const { return order_restorations_; }
-  /// Builds the node DBVT afresh, as a plain body's is built (bullet_setup.h, init_net_nodes: every node's leaf
+  /// Builds the node DBVT afresh, as a plain body's is built (bullet_setup.h, insert_node_leaves: every node's leaf
   /// inserted from the root, in the same fixed shuffled order; each box is the one Bullet's own update would give
   /// the node now: its position and the margin, grown by the update margin and stretched along its velocity),
   /// after freeing the old tree and giving the freed memory back to malloc's free lists in one piece, so the new tree
