@@ -16,6 +16,15 @@ std::vector<std::size_t> resample_indices(std::size_t n, std::mt19937_64& rng) {
   return picks;
 }
 
+std::vector<double> resample_groups(const std::vector<std::vector<double>>& groups, std::mt19937_64& rng) {
+  std::vector<double> pooled;
+  for (const std::size_t g : resample_indices(groups.size(), rng)) {
+    const std::vector<double>& units = groups[g];
+    for (const std::size_t u : resample_indices(units.size(), rng)) pooled.push_back(units[u]);
+  }
+  return pooled;
+}
+
 std::optional<Interval> percentile_interval(std::vector<double> replicates, double confidence) {
   if (!(confidence > 0.0 && confidence < 1.0))
     throw std::invalid_argument("percentile_interval: confidence must lie in (0, 1)");

@@ -2,10 +2,12 @@
 // so main.cpp only dispatches.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "gate/adaptivity_tax.h"
 #include "suite/suite.h"
 
 namespace CLI {
@@ -84,6 +86,15 @@ struct CompareArgs {
   std::string summary;      ///< Markdown summary file; empty: stderr
 };
 
+/// Options of `tcsb tax` (defaults: the scaling target, gate/adaptivity_tax.h's TaxTarget).
+struct TaxArgs {
+  std::vector<std::string> runs;                       ///< result files to pool
+  double bound = TaxTarget{}.bound;                    ///< the largest ratio to plain_equal that passes
+  double compression = TaxTarget{}.compression;        ///< the TC-SB node budget judged
+  std::int64_t min_nodes = TaxTarget{}.min_net_nodes;  ///< judge only nets of at least this many grid nodes
+  std::string out;                                     ///< output file; empty: stdout
+};
+
 /// Options of `tcsb export`.
 struct ExportArgs {
   std::string result;  ///< a native result file
@@ -124,6 +135,8 @@ int validate_command(const ValidateArgs& args);
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args);
 /// The CI regression gate: 0 pass, 1 a regression or changed behaviour, 2 unusable input or different suites.
 int compare_command(const CompareArgs& args);
+CLI::App* add_tax_command(CLI::App& app, TaxArgs& args);
+int tax_command(const TaxArgs& args);
 
 /// Registers `frames [--suite S] [--net N] [--compression C] [--steps A,B,...] [--out FILE]`.
 CLI::App* add_frames_command(CLI::App& app, FramesArgs& args);

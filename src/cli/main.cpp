@@ -28,6 +28,7 @@ int dispatch(int argc, char** argv) {
   FramesArgs frames_args;
   MergeArgs merge_args;
   CalibrateArgs calibrate_args;
+  TaxArgs tax_args;
   CLI::App* run = add_run_command(app, run_args);
   CLI::App* list = add_list_command(app);
   CLI::App* validate = add_validate_command(app, validate_args);
@@ -37,6 +38,7 @@ int dispatch(int argc, char** argv) {
   CLI::App* frames = add_frames_command(app, frames_args);
   CLI::App* merge = add_merge_command(app, merge_args);
   CLI::App* calibrate = add_calibrate_command(app, calibrate_args);
+  CLI::App* tax = add_tax_command(app, tax_args);
   reject_empty_values(app);  // after every option exists: "--out ''" must not mean stdout, nor '' mean 0
 
   try {
@@ -58,6 +60,7 @@ int dispatch(int argc, char** argv) {
     if (*frames) return frames_command(frames_args);
     if (*merge) return merge_command(merge_args);
     if (*calibrate) return calibrate_command(calibrate_args);
+    if (*tax) return tax_command(tax_args);
     // `reproduce`, or no subcommand at all: the default job.
     return reproduce_command(reproduce_args);
   });

@@ -16,16 +16,7 @@ std::string shorten(std::string text) { return text.size() > 60 ? text.substr(0,
 std::string brief(const ojson& j) { return shorten(j.dump(-1, ' ', false, ojson::error_handler_t::replace)); }
 
 void check_same_suite(const ResultView& base, const ResultView& next) {
-  // The path is where the file happened to live on each machine; everything else describes what was run.
-  ojson a = base.suite, b = next.suite;
-  a.erase("path");
-  b.erase("path");
-  std::string difference = first_json_difference(a, b, "suite");
-  if (difference.empty()) {
-    const auto seed = [](const ResultView& r) { return r.context.contains("seed") ? r.context["seed"] : ojson(); };
-    if (seed(base) != seed(next)) difference = "context.seed: " + brief(seed(base)) + " vs " + brief(seed(next));
-  }
-  if (!difference.empty()) {
+  if (const std::string difference = suite_difference(base, next, false); !difference.empty()) {
     throw SuiteMismatch(base.file + " and " + next.file + " are runs of different suites or settings (" + difference +
                         "); compare runs of the same suite and settings, or refresh the baseline "
                         "(scripts/refresh-baseline.sh)");
@@ -111,6 +102,8 @@ bool has_time_budget(const ResultView& r) {
   return budget != feedback->end() && budget->is_number() && budget->get<double>() > 0.0;
 }
 
+}  // namespace
+
 std::vector<std::string> machine_differences(const ResultView& base, const ResultView& next) {
   // What makes absolute times incomparable; the host name and date differ between any two runs and say nothing.
   // Huge pages change large nets' step and operation times by 10-17 % (docs/methodology.md, "Huge pages").
@@ -127,7 +120,18 @@ std::vector<std::string> machine_differences(const ResultView& base, const Resul
   return out;
 }
 
-}  // namespace
+std::string suite_difference(const ResultView& a, const ResultView& b, bool ignore_repetitions) {
+  // The path is where the file happened to live on each machine; everything else describes what was run.
+  ojson sa = a.suite, sb = b.suite;
+  for (ojson* suite : {&sa, &sb}) {
+    suite->erase("path");
+    if (ignore_repetitions) suite->erase("repetitions");
+  }
+  if (std::string difference = first_json_difference(sa, sb, "suite"); !difference.empty()) return difference;
+  const auto seed = [](const ResultView& r) { return r.context.contains("seed") ? r.context["seed"] : ojson(); };
+  if (seed(a) != seed(b)) return "context.seed: " + brief(seed(a)) + " vs " + brief(seed(b));
+  return "";
+}
 
 std::string first_json_difference(const ojson& a, const ojson& b, const std::string& path) {
   if (a.is_object() && b.is_object()) {

@@ -65,6 +65,15 @@ struct ResultComparison {
 std::string first_json_difference(const nlohmann::ordered_json& a, const nlohmann::ordered_json& b,
                                   const std::string& path);
 
+/// The first difference between two runs' suites and seeds that makes them runs of different suites or settings, as
+/// "suite.FIELD: A vs B" or "context.seed: A vs B"; "" when there is none. The suites' paths never count (where the
+/// file lived), nor, with `ignore_repetitions`, their repetitions (runs of one suite pooled across processes).
+std::string suite_difference(const ResultView& a, const ResultView& b, bool ignore_repetitions);
+
+/// The context fields that make two runs' absolute times incomparable (machine, compiler, build, Bullet, huge
+/// pages) and differ, each as "field: A vs B". Same-run ratios stay comparable whatever these say.
+std::vector<std::string> machine_differences(const ResultView& base, const ResultView& next);
+
 /// Compares `base` with `next`. Cases are matched by label and their repetitions by number, one to one and in any
 /// order (gate/one_to_one_match.h); whatever does not match is a kPresenceMetric change, even when the run is
 /// not deterministic, and only matched cases contribute timings. Throws SuiteMismatch when the suite blocks differ

@@ -120,6 +120,8 @@ CaseView read_case(const Fields& f, const ojson& j, const std::string& path) {
   if (j.contains("configuration"))  // optional: only with axes
     c.configuration = f.string(f.object(j, path, "configuration"), Fields::join(path, "configuration"), "label");
   c.compression = f.number_or_null(j, path, "compression");
+  if (j.contains("net_nodes"))
+    c.net_nodes = f.integer(j, path, "net_nodes", 1, std::numeric_limits<std::int64_t>::max());
   c.status = f.string(j, path, "status");
   c.mean_nodes = f.non_negative_or_null(j, path, "mean_nodes");
   c.mean_links = f.non_negative_or_null(j, path, "mean_links");
@@ -163,6 +165,19 @@ std::optional<std::size_t> plain_case_of(const ResultView& result, std::size_t i
   for (std::size_t i = 0; i < result.cases.size(); ++i) {
     const CaseView &c = result.cases[i], &of = result.cases[index];
     if (c.net == of.net && c.configuration == of.configuration && c.method == "plain") return i;
+  }
+  return std::nullopt;
+}
+
+std::optional<std::size_t> equal_plain_case_of(const ResultView& result, std::size_t index) {
+  if (index >= result.cases.size()) return std::nullopt;
+  const CaseView& of = result.cases[index];
+  if (of.method != "tcsb" || !of.compression) return std::nullopt;
+  for (std::size_t i = 0; i < result.cases.size(); ++i) {
+    const CaseView& c = result.cases[i];
+    if (c.net == of.net && c.configuration == of.configuration && c.method == "plain_equal" && c.compression &&
+        std::abs(*c.compression - *of.compression) <= 1e-9)
+      return i;
   }
   return std::nullopt;
 }

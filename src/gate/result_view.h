@@ -37,6 +37,9 @@ struct CaseView {
   std::string label, net, method;  ///< e.g. "n33/tcsb@0.3", "n33", "tcsb"
   std::string configuration;       ///< configuration.label of a suite with axes ("piterations=8"); "" without
   std::optional<double> compression;
+  /// net_nodes: the net's grid nodes; nullopt when the document has none (hand-made documents; a file `tcsb run`
+  /// wrote always has it, and its schema requires it)
+  std::optional<std::int64_t> net_nodes;
   std::string status;
   std::optional<double> mean_nodes, mean_links, mean_interpolations;
   std::optional<double> median_step_ms;  ///< step_ms.median
@@ -64,6 +67,10 @@ ResultView read_result(const nlohmann::ordered_json& doc, const std::string& fil
 
 /// The plain case of the same net and configuration as cases[index], or nullopt.
 std::optional<std::size_t> plain_case_of(const ResultView& result, std::size_t index);
+
+/// The plain_equal case of the same net, configuration and compression as the TC-SB case cases[index] (its static
+/// body of the same node budget), or nullopt (cases[index] is not TC-SB with a compression, or the run has none).
+std::optional<std::size_t> equal_plain_case_of(const ResultView& result, std::size_t index);
 
 /// Same-run ratios of cases[index] to `base_index`, one per repetition number that is ok in both with finite
 /// times and a non-zero base: case.mean_step_ms[r] / base.mean_step_ms[r], in the case's repetition order.

@@ -32,6 +32,40 @@ TEST(Bootstrap, ResamplesDrawInRangeWithReplacementAndRepeatForOneSeed) {
   EXPECT_TRUE(resample_indices(0, a).empty());
 }
 
+TEST(Bootstrap, GroupResamplesDrawWholeGroupsThenTheirUnits) {
+  // Two runs of four repetitions, the runs apart and their repetitions alike. A resample draws a run for each of the
+  // two places, then four of that run's repetitions: half the resamples hold one run only (both places drew it),
+  // where pooling the eight repetitions would draw one run's values alone in 2 / 2^8 of them.
+  const std::vector<std::vector<double>> runs{{0.0, 0.0, 0.0, 0.0}, {1.0, 1.0, 1.0, 1.0}};
+  std::mt19937_64 rng(11), again(11);
+  int one_run_only = 0;
+  for (int r = 0; r < 1000; ++r) {
+    const std::vector<double> drawn = resample_groups(runs, rng);
+    ASSERT_EQ(drawn.size(), 8u);
+    EXPECT_EQ(drawn, resample_groups(runs, again));  // deterministic for a generator state
+    // Each run's repetitions come as a block: the first four from one run, the last four from one run.
+    for (std::size_t block : {0u, 4u})
+      for (std::size_t i = block; i < block + 4; ++i) ASSERT_EQ(drawn[i], drawn[block]);
+    one_run_only += drawn.front() == drawn.back();
+  }
+  EXPECT_GT(one_run_only, 400);
+  EXPECT_LT(one_run_only, 600);
+}
+
+TEST(Bootstrap, GroupResamplesOfOneGroupDrawItsUnitsAndSkipEmptyGroups) {
+  std::mt19937_64 rng(3);
+  const std::vector<std::vector<double>> one{{1.0, 2.0, 3.0}};
+  std::set<double> seen;
+  for (int r = 0; r < 100; ++r) {
+    const std::vector<double> drawn = resample_groups(one, rng);
+    ASSERT_EQ(drawn.size(), 3u);
+    seen.insert(drawn.begin(), drawn.end());
+  }
+  EXPECT_EQ(seen, (std::set<double>{1.0, 2.0, 3.0}));
+  EXPECT_TRUE(resample_groups({{}, {}}, rng).empty());
+  EXPECT_TRUE(resample_groups({}, rng).empty());
+}
+
 TEST(Bootstrap, PercentileIntervalIsTheCentralQuantiles) {
   std::vector<double> replicates;
   for (int i = 0; i <= 100; ++i) replicates.push_back(100 - i);  // 100, 99, ..., 0: order must not matter

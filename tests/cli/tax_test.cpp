@@ -1,0 +1,98 @@
+// `tcsb tax`, on a real run of a tiny suite with plain_equal whose timings are then set in the JSON (so no verdict
+// depends on the machine): exit 0 / 1 / 4 for pass / fail / undecided with the JSON verdict on stdout and the table
+// on stderr, 2 with one line for anything it cannot judge.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_fixture.h"
+
+namespace {
+
+using namespace tcsb::cli_test;
+using ojson = nlohmann::ordered_json;
+
+/// The flags that put the tiny net in scope: its 81 nodes and its only budget.
+const std::string kScope = " --min-nodes 1 --compression 0.5";
+
+class Tax : public Cli {
+ protected:
+  /// Runs the 9 x 9 suite with plain_equal and `repetitions` into run.json, with TC-SB at `ratio` x plain_equal's
+  /// time in every repetition.
+  void make_run(int repetitions, double ratio, const std::string& file = "run.json") {
+    std::string suite = nine_by_nine_suite("taxed", repetitions);
+    const std::string methods = R"("methods": ["plain", "tcsb"])";
+    suite.replace(suite.find(methods), methods.size(), R"("methods": ["plain", "tcsb", "plain_equal"])");
+    write_file(dir_ / "taxed.json", suite);
+    const Outcome o = tcsb("run taxed.json --quiet --out " + file);
+    ASSERT_EQ(o.exit_code, 0) << o.err;
+    ojson doc = ojson::parse(read_file(dir_ / file));
+    for (ojson& c : doc["cases"]) {
+      const double ms = c["method"] == "tcsb" ? ratio : 1.0;
+      for (ojson& r : c["repetitions"]) r["mean_step_ms"] = ms * (1.0 + 0.01 * r["repetition"].get<int>());
+    }
+    write_file(dir_ / file, doc.dump(2));
+  }
+
+  static void expect_bad_input(const Outcome& o, const std::string& expected) {
+    EXPECT_EQ(o.exit_code, 2) << o.err;
+    EXPECT_EQ(count_lines(o.err), 1) << o.err;
+    EXPECT_NE(o.err.find(expected), std::string::npos) << o.err;
+    EXPECT_TRUE(o.out.empty()) << o.out;
+  }
+};
+
+TEST_F(Tax, BelowTheBoundPassesWithTheVerdictOnStdoutAndTheTableOnStderr) {
+  make_run(6, 1.02);
+  const Outcome o = tcsb("tax run.json" + kScope);
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const ojson verdict = ojson::parse(o.out);
+  EXPECT_EQ(verdict["tax"]["verdict"], "pass");
+  ASSERT_EQ(verdict["tax"]["nets"].size(), 1u);
+  EXPECT_EQ(verdict["tax"]["nets"][0]["net"], "n9");
+  EXPECT_EQ(verdict["tax"]["nets"][0]["ratios"], 6);
+  EXPECT_NEAR(verdict["tax"]["nets"][0]["ratio"].get<double>(), 1.02, 1e-9);
+  EXPECT_NE(o.err.find("tcsb tax: pass"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("one run"), std::string::npos) << "a single run is warned of: " << o.err;
+}
+
+TEST_F(Tax, AboveTheBoundFails) {
+  make_run(6, 1.30);
+  EXPECT_EQ(tcsb("tax run.json" + kScope).exit_code, 1);
+  EXPECT_EQ(tcsb("tax run.json --bound 1.5" + kScope).exit_code, 0);
+}
+
+TEST_F(Tax, TooFewRepetitionsAreUndecidedAndRunsPool) {
+  make_run(3, 1.02, "a.json");
+  Outcome o = tcsb("tax a.json" + kScope);
+  EXPECT_EQ(o.exit_code, 4) << o.err;
+  EXPECT_EQ(ojson::parse(o.out)["tax"]["verdict"], "undecided");
+  // A second run of the same suite and build (its own process, times a little apart) makes six ratios.
+  make_run(3, 1.03, "b.json");
+  o = tcsb("tax a.json b.json --out verdict.json" + kScope);
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_TRUE(o.out.empty());
+  const ojson verdict = ojson::parse(read_file(dir_ / "verdict.json"));
+  EXPECT_EQ(verdict["tax"]["nets"][0]["runs"], 2);
+  EXPECT_EQ(verdict["tax"]["runs"], ojson({"a.json", "b.json"}));
+  EXPECT_EQ(o.err.find("one run"), std::string::npos) << o.err;
+}
+
+TEST_F(Tax, WhatCannotBeJudgedIsOneLineAndExit2) {
+  make_run(6, 1.02);
+  expect_bad_input(tcsb("tax run.json"), "nothing to judge");  // 81 nodes: below the default 66 049
+  expect_bad_input(tcsb("tax run.json run.json" + kScope), "the same run as run.json");
+  fs::copy_file(dir_ / "run.json", dir_ / "copy.json");
+  expect_bad_input(tcsb("tax run.json copy.json" + kScope), "copy.json: the same run as run.json");
+  ojson other = ojson::parse(read_file(dir_ / "run.json"));
+  other["suite"]["steps"] = 21;
+  write_file(dir_ / "other.json", other.dump());
+  expect_bad_input(tcsb("tax run.json other.json" + kScope), "cannot be pooled");
+  expect_bad_input(tcsb("tax run.json --bound 0" + kScope), "--bound");
+  expect_bad_input(tcsb("tax run.json --min-nodes 1 --compression 1"), "--compression");
+  expect_bad_input(tcsb("tax missing.json" + kScope), "missing.json");
+  write_file(dir_ / "verdict.json", "kept");
+  expect_bad_input(tcsb("tax run.json --out verdict.json"), "nothing to judge");
+  EXPECT_EQ(read_file(dir_ / "verdict.json"), "kept") << "bad input must not touch the output file";
+}
+
+}  // namespace

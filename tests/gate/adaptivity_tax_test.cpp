@@ -1,0 +1,154 @@
+// The tax judged on finished runs: which cases are judged, how runs pool, when the verdict is undecided, and what
+// is refused. Hand-made documents: a TC-SB case and its plain_equal case per net, the times chosen so the outcome
+// is obvious.
+#include "gate/adaptivity_tax.h"
+
+#include <gtest/gtest.h>
+
+#include "gate/result_comparison.h"
+#include "result_documents.h"
+
+namespace tcsb {
+namespace {
+
+using testing::case_doc;
+using testing::ojson;
+using testing::result_doc;
+
+/// A case of `method` at compression 0.3 on a net of `net_nodes` nodes whose repetitions take `ms[r]`.
+ojson budget_case(const std::string& net, const std::string& method, std::int64_t net_nodes,
+                  const std::vector<double>& ms) {
+  ojson c = case_doc(net, method, 100, ms);
+  c["label"] = net + "/" + method + "@0.3";
+  c["method"] = method;
+  c["compression"] = 0.3;
+  c["net_nodes"] = net_nodes;
+  return c;
+}
+
+/// A run with, per net, TC-SB at 0.3 taking `ratio` x plain_equal's 1 ms in every repetition (times spread a
+/// little, so repetitions differ).
+ojson run_doc(const std::vector<std::pair<std::string, std::int64_t>>& nets, double ratio, int repetitions = 6) {
+  ojson doc = result_doc(repetitions);
+  doc["cases"] = ojson::array();
+  for (const auto& [net, nodes] : nets) {
+    std::vector<double> equal, tcsb;
+    for (int r = 0; r < repetitions; ++r) {
+      equal.push_back(1.0 + 0.01 * r);
+      tcsb.push_back(ratio * (1.0 + 0.01 * r) * (1.0 + 0.002 * (r % 3)));
+    }
+    doc["cases"].push_back(budget_case(net, "tcsb", nodes, tcsb));
+    doc["cases"].push_back(budget_case(net, "plain_equal", nodes, equal));
+  }
+  return doc;
+}
+
+std::vector<NetTax> judge(const std::vector<ojson>& docs, const TaxTarget& target = {}) {
+  std::vector<ResultView> views;
+  for (std::size_t i = 0; i < docs.size(); ++i) views.push_back(read_result(docs[i], "run" + std::to_string(i)));
+  return judge_tax(views, target);
+}
+
+TEST(AdaptivityTax, OnlyTheBudgetsCasesOnNetsFromTheMinimumSizeAreJudged) {
+  const std::vector<NetTax> nets = judge({run_doc({{"small", 1089}, {"n257", 66049}, {"n513", 263169}}, 1.05)});
+  ASSERT_EQ(nets.size(), 2u);
+  EXPECT_EQ(nets[0].net, "n257");
+  EXPECT_EQ(nets[1].net, "n513");
+  EXPECT_EQ(nets[0].claim.id, "tax_n257");
+  TaxTarget elsewhere;
+  elsewhere.compression = 0.75;  // no case at that budget
+  EXPECT_TRUE(judge({run_doc({{"n257", 66049}}, 1.05)}, elsewhere).empty());
+}
+
+TEST(AdaptivityTax, ClearlyBelowTheBoundPassesClearlyAboveFails) {
+  const std::vector<NetTax> below = judge({run_doc({{"n257", 66049}}, 1.02)});
+  ASSERT_EQ(below.size(), 1u);
+  ASSERT_TRUE(below[0].claim.interval);
+  EXPECT_NEAR(*below[0].claim.measured, 1.02, 0.01);
+  EXPECT_EQ(verdict(below[0].claim), Verdict::kPass);
+  EXPECT_EQ(tax_verdict(below), Verdict::kPass);
+  const std::vector<NetTax> above = judge({run_doc({{"n257", 66049}}, 1.30)});
+  EXPECT_EQ(verdict(above[0].claim), Verdict::kFail);
+  EXPECT_EQ(above[0].ratios, 6u);
+  EXPECT_EQ(above[0].runs, 1u);
+}
+
+TEST(AdaptivityTax, TooFewRatiosAreUndecidedNotPassed) {
+  const std::vector<NetTax> nets = judge({run_doc({{"n257", 66049}}, 1.02, 3)});
+  ASSERT_EQ(nets.size(), 1u);
+  EXPECT_FALSE(nets[0].claim.interval);
+  EXPECT_EQ(verdict(nets[0].claim), Verdict::kUndecided);
+  EXPECT_NE(nets[0].note.find("fewer than 5"), std::string::npos);
+}
+
+TEST(AdaptivityTax, RunsPoolAndTheirDisagreementWidensTheInterval) {
+  // Two runs of three repetitions each are too few alone; pooled they are six ratios over two runs.
+  const ojson low = run_doc({{"n257", 66049}}, 1.00, 3), high = run_doc({{"n257", 66049}}, 1.20, 3);
+  const std::vector<NetTax> pooled = judge({low, high});
+  ASSERT_EQ(pooled.size(), 1u);
+  EXPECT_EQ(pooled[0].runs, 2u);
+  EXPECT_EQ(pooled[0].ratios, 6u);
+  ASSERT_EQ(pooled[0].run_medians.size(), 2u);
+  EXPECT_NEAR(pooled[0].run_medians[0], 1.00, 0.01);
+  EXPECT_NEAR(pooled[0].run_medians[1], 1.20, 0.01);
+  ASSERT_TRUE(pooled[0].claim.interval);
+  // Resampling the runs first: some resamples hold only the 1.00 run, some only the 1.20 run, so the interval
+  // spans both and straddles 1.15 — undecided, where six agreeing ratios of one run at 1.10 would pass.
+  EXPECT_LT(pooled[0].claim.interval->low, 1.02);
+  EXPECT_GT(pooled[0].claim.interval->high, 1.18);
+  EXPECT_EQ(verdict(pooled[0].claim), Verdict::kUndecided);
+  EXPECT_EQ(verdict(judge({run_doc({{"n257", 66049}}, 1.10)})[0].claim), Verdict::kPass);
+}
+
+TEST(AdaptivityTax, TheSameFilesGiveTheSameInterval) {
+  const ojson a = run_doc({{"n257", 66049}}, 1.00, 3), b = run_doc({{"n257", 66049}}, 1.20, 3);
+  const NetTax first = judge({a, b})[0], second = judge({a, b})[0];
+  EXPECT_EQ(first.claim.interval->low, second.claim.interval->low);
+  EXPECT_EQ(first.claim.interval->high, second.claim.interval->high);
+}
+
+TEST(AdaptivityTax, ADivergedRepetitionFailsTheNet) {
+  ojson doc = run_doc({{"n257", 66049}}, 1.02);
+  ojson& rep = doc["cases"][1]["repetitions"][2];  // plain_equal's
+  rep["status"] = "diverged";
+  rep["diverged_step"] = 17;
+  rep["mean_step_ms"] = nullptr;
+  const std::vector<NetTax> nets = judge({doc});
+  ASSERT_EQ(nets.size(), 1u);
+  EXPECT_FALSE(nets[0].claim.measured);
+  EXPECT_EQ(verdict(nets[0].claim), Verdict::kFail);
+  EXPECT_NE(nets[0].note.find("plain_equal diverged at step 17 in run0, repetition 2"), std::string::npos);
+}
+
+TEST(AdaptivityTax, RunsOfOtherSettingsOrBuildsAreNotPooledButOtherRepetitionCountsAre) {
+  const ojson base = run_doc({{"n257", 66049}}, 1.02);
+  EXPECT_NO_THROW(judge({base, run_doc({{"n257", 66049}}, 1.02, 9)}));
+  ojson steps = base;
+  steps["suite"]["steps"] = 40;
+  EXPECT_THROW(judge({base, steps}), SuiteMismatch);
+  ojson build = base;
+  build["context"]["git_commit"] = "def";
+  try {
+    judge({base, build});
+    FAIL() << "runs of two builds were pooled";
+  } catch (const SuiteMismatch& e) {
+    EXPECT_NE(std::string(e.what()).find("context.git_commit"), std::string::npos) << e.what();
+  }
+  ojson seed = base;
+  seed["context"]["seed"] = 2;
+  EXPECT_THROW(judge({base, seed}), SuiteMismatch);
+}
+
+TEST(AdaptivityTax, AJudgedCaseWithoutItsNetSizeIsRefusedNamingTheField) {
+  ojson doc = run_doc({{"n257", 66049}}, 1.02);
+  doc["cases"][0].erase("net_nodes");
+  try {
+    judge({doc});
+    FAIL() << "judged without knowing the net's size";
+  } catch (const ResultFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("run0: cases[0].net_nodes"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace tcsb
