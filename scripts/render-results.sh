@@ -2,7 +2,9 @@
 # Renders docs/results.md from the result files in results/runs/: a fixed preamble, then one section per file, each
 # rendered by `tcsb export FILE --format markdown` and followed by a link to the file. Files are named
 # <date>-<short commit>-<suite>.json and taken in reverse order of their names (C collation), so the newest date comes
-# first (within a date: reverse order of commit, then suite) and the page depends on nothing but the files.
+# first (within a date: reverse order of commit, then suite) and the page depends on nothing but the files. Each
+# directory results/runs/pooled/<date>-<short commit>-<suite>/ holds runs of one suite and build, each made in its own
+# process; its section (after the files', newest first) is `tcsb tax` over them, the command and its table.
 #
 # Usage: bash scripts/render-results.sh [--check] [TCSB_BINARY]
 #   TCSB_BINARY  the tcsb executable (default: build/tcsb)
@@ -73,6 +75,30 @@ PREAMBLE
     echo
     "$binary" export "$runs_dir/$f" --format markdown || return $?
     printf '\nResult file: [results/runs/%s](../results/runs/%s).\n' "$f" "$f"
+  done
+  render_pooled
+}
+
+# One section per directory of pooled runs: the tax of adaptivity judged over all its runs.
+render_pooled() {
+  local pooled_dir=$runs_dir/pooled dirs=() d
+  [[ -d $pooled_dir ]] || return 0
+  mapfile -t dirs < <(find "$pooled_dir" -mindepth 1 -maxdepth 1 -type d -printf '%f\n' | LC_ALL=C sort -r)
+  for d in "${dirs[@]}"; do
+    local runs=() table status=0
+    mapfile -t runs < <(find "$pooled_dir/$d" -maxdepth 1 -type f -name '*.json' -printf '%f\n' | LC_ALL=C sort)
+    ((${#runs[@]} > 0)) || continue
+    # The verdict is the command's exit code (0 pass, 1 fail, 4 undecided); 2 and 3 mean it could not judge.
+    table=$(cd "$pooled_dir/$d" && "$binary" tax "${runs[@]}" 2>&1 >/dev/null) || status=$?
+    if ((status == 2 || status == 3)); then
+      echo "$table" >&2
+      return "$status"
+    fi
+    printf '\n## Pooled runs: %s\n\n' "$d"
+    printf '%s runs of the suite, each in its own process, in [results/runs/pooled/%s](../results/runs/pooled/%s); ' \
+      "${#runs[@]}" "$d" "$d"
+    printf 'the tax of adaptivity over them ([methodology.md](methodology.md#the-tax-across-runs)):\n\n'
+    printf '```\n$ cd results/runs/pooled/%s && tcsb tax %s\n%s\n```\n' "$d" "${runs[*]}" "$table"
   done
 }
 

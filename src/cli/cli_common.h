@@ -24,7 +24,7 @@ enum ExitCode : int {
   kExitFailed = 1,     ///< a gate or claim failed (decided)
   kExitUsage = 2,      ///< bad usage or bad input; nothing ran and no output file was touched
   kExitInternal = 3,   ///< anything else: a bug, or the machine failed us (e.g. the output could not be written)
-  kExitUndecided = 4,  ///< reproduce: no claim failed, but some remain undecided (within the run's noise)
+  kExitUndecided = 4,  ///< reproduce, tax: no claim failed, but some remain undecided (within the run's noise)
 };
 
 /// Bad usage found after parsing (an unusable --out, an unknown --format): exits with kExitUsage.

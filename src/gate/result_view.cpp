@@ -121,7 +121,7 @@ CaseView read_case(const Fields& f, const ojson& j, const std::string& path) {
     c.configuration = f.string(f.object(j, path, "configuration"), Fields::join(path, "configuration"), "label");
   c.compression = f.number_or_null(j, path, "compression");
   if (j.contains("net_nodes"))
-    c.net_nodes = f.integer(j, path, "net_nodes", 1, std::numeric_limits<std::int64_t>::max());
+    c.net_nodes = f.integer(j, path, "net_nodes", 0, std::numeric_limits<std::int64_t>::max());
   c.status = f.string(j, path, "status");
   c.mean_nodes = f.non_negative_or_null(j, path, "mean_nodes");
   c.mean_links = f.non_negative_or_null(j, path, "mean_links");
