@@ -128,7 +128,9 @@ void warn_stalls(const RunResult& result, int from) {
     if (s.repetition < from) continue;
     print_warning("case " + s.label + " repetition " + std::to_string(s.repetition) + ": mean step " +
                   fixed(s.mean_over_median, 1) + "x its median, the machine stalled for about " + fixed(s.lost_s, 1) +
-                  " s; the case's median over repetitions keeps one such repetition out");
+                  " s" +
+                  (result.suite.repetitions >= 3 ? "; the case's median over repetitions keeps one such repetition out"
+                                                 : "; with fewer than 3 repetitions it is in the case's figures"));
   }
 }
 
