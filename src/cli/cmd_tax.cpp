@@ -14,15 +14,16 @@
 #include "gate/result_comparison.h"
 #include "report/json_report.h"
 #include "report/tax_report.h"
+#include "report/text_table.h"
 
 namespace tcsb::cli {
 namespace {
 
 void check_target(const TaxArgs& args) {
   if (!(std::isfinite(args.bound) && args.bound > 0.0))
-    throw UsageError("--bound: expected a ratio > 0, got " + std::to_string(args.bound));
+    throw UsageError("--bound: expected a ratio > 0, got " + general(args.bound, 6));
   if (!(args.compression > 0.0 && args.compression < 1.0))
-    throw UsageError("--compression: expected a node budget in (0, 1), got " + std::to_string(args.compression));
+    throw UsageError("--compression: expected a node budget in (0, 1), got " + general(args.compression, 6));
   if (args.min_nodes < 1)
     throw UsageError("--min-nodes: expected a node count >= 1, got " + std::to_string(args.min_nodes));
 }
@@ -80,7 +81,7 @@ int tax_command(const TaxArgs& args) {
     throw UsageError(e.what());
   }
   if (nets.empty())
-    throw UsageError(args.runs.front() + ": nothing to judge: no TC-SB case at " + std::to_string(args.compression) +
+    throw UsageError(args.runs.front() + ": nothing to judge: no TC-SB case at " + general(args.compression, 6) +
                      " with a plain_equal case on a net of at least " + std::to_string(args.min_nodes) +
                      " nodes (the scaling suite has them)");
   for (std::size_t i = 1; i < views.size(); ++i) {
