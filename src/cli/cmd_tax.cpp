@@ -90,6 +90,13 @@ int tax_command(const TaxArgs& args) {
       print_warning(views.front().file + " and " + views[i].file + " ran on different machines or builds (" +
                     differences.front() + "): their ratios are pooled as runs of one population");
   }
+  for (const ResultView& v : views) {
+    const auto it = v.context.find("git_commit");
+    const std::string commit = it != v.context.end() && it->is_string() ? it->get<std::string>() : "";
+    if (views.size() > 1 && commit.ends_with("-dirty"))
+      print_warning(v.file + " was built from a modified tree (" + commit +
+                    "): runs of different modifications of one commit cannot be told apart, and pool");
+  }
   if (views.size() == 1)
     print_warning("one run: its intervals cover the noise between its repetitions, not the variation between runs in "
                   "separate processes (docs/methodology.md, \"The tax across runs\"); pool several runs to judge that");

@@ -77,6 +77,20 @@ TEST_F(Tax, TooFewRepetitionsAreUndecidedAndRunsPool) {
   EXPECT_EQ(o.err.find("one run"), std::string::npos) << o.err;
 }
 
+TEST_F(Tax, RunsOfAModifiedTreeAreWarnedOf) {
+  make_run(3, 1.02, "a.json");
+  make_run(3, 1.03, "b.json");
+  for (const char* file : {"a.json", "b.json"}) {
+    ojson doc = ojson::parse(read_file(dir_ / file));
+    doc["context"]["git_commit"] = "0123abc-dirty";
+    write_file(dir_ / file, doc.dump(2));
+  }
+  const Outcome o = tcsb("tax a.json b.json" + kScope);
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(o.err.find("a.json was built from a modified tree (0123abc-dirty)"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("b.json was built from a modified tree"), std::string::npos) << o.err;
+}
+
 TEST_F(Tax, WhatCannotBeJudgedIsOneLineAndExit2) {
   make_run(6, 1.02);
   expect_bad_input(tcsb("tax run.json"), "nothing to judge");  // 81 nodes: below the default 66 049

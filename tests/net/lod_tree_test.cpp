@@ -189,7 +189,9 @@ TEST(LodTree, SpatialRanksOrderEveryBlockCentreRowMajor) {
     };
     for (std::size_t r = 1; r < by_rank.size(); ++r) {
       ASSERT_LE(centre(by_rank[r - 1]), centre(by_rank[r])) << "rank " << r;
-      if (centre(by_rank[r - 1]) == centre(by_rank[r])) ASSERT_LT(by_rank[r - 1], by_rank[r]);
+      if (centre(by_rank[r - 1]) == centre(by_rank[r])) {
+        ASSERT_LT(by_rank[r - 1], by_rank[r]);
+      }
     }
     // So the finest cut alone comes out in grid order.
     for (std::size_t leaf = 1; leaf < tree.leaf_count(); ++leaf)
@@ -317,7 +319,9 @@ TEST(LodTree, PinnedLeafCountAnchorAndRestFollowTheBlock) {
         ASSERT_EQ(tree.rest(static_cast<TreeId>(id)), expected) << "node " << id;
         const bool border = n.leaf_x0 == 0 || n.leaf_y0 == 0 || n.leaf_x1 == net.width() || n.leaf_y1 == net.height();
         ASSERT_EQ(tree.touches_border(n), border) << "node " << id;
-        if (!border) ASSERT_EQ(tree.rest(static_cast<TreeId>(id)), tree.centroid(static_cast<TreeId>(id)));
+        if (!border) {
+          ASSERT_EQ(tree.rest(static_cast<TreeId>(id)), tree.centroid(static_cast<TreeId>(id)));
+        }
       }
     }
   });
