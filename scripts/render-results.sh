@@ -4,7 +4,8 @@
 # <date>-<short commit>-<suite>.json and taken in reverse order of their names (C collation), so the newest date comes
 # first (within a date: reverse order of commit, then suite) and the page depends on nothing but the files. Each
 # directory results/runs/pooled/<date>-<short commit>-<suite>/ holds runs of one suite and build, each made in its own
-# process; its section (after the files', newest first) is `tcsb tax` over them, the command and its table.
+# process; its section (after the files', newest first) is `tcsb tax` over them, the command and its table (the
+# flags of each `tcsb tax` in the directory's tax.args, one line each, or none).
 #
 # Usage: bash scripts/render-results.sh [--check] [TCSB_BINARY]
 #   TCSB_BINARY  the tcsb executable (default: build/tcsb)
@@ -79,26 +80,32 @@ PREAMBLE
   render_pooled
 }
 
-# One section per directory of pooled runs: the tax of adaptivity judged over all its runs.
+# One section per directory of pooled runs: the tax of adaptivity judged over all its runs, once with tcsb tax's
+# defaults (the scaling target) or, when the directory has a file tax.args, once per line of it with that line's flags.
 render_pooled() {
   local pooled_dir=$runs_dir/pooled dirs=() d
   [[ -d $pooled_dir ]] || return 0
   mapfile -t dirs < <(find "$pooled_dir" -mindepth 1 -maxdepth 1 -type d -printf '%f\n' | LC_ALL=C sort -r)
   for d in "${dirs[@]}"; do
-    local runs=() table status=0
+    local runs=() flag_lines=("") flags
     mapfile -t runs < <(find "$pooled_dir/$d" -maxdepth 1 -type f -name '*.json' -printf '%f\n' | LC_ALL=C sort)
     ((${#runs[@]} > 0)) || continue
-    # The verdict is the command's exit code (0 pass, 1 fail, 4 undecided); 2 and 3 mean it could not judge.
-    table=$(cd "$pooled_dir/$d" && "$binary" tax "${runs[@]}" 2>&1 >/dev/null) || status=$?
-    if ((status == 2 || status == 3)); then
-      echo "$table" >&2
-      return "$status"
-    fi
+    [[ -f $pooled_dir/$d/tax.args ]] && mapfile -t flag_lines <"$pooled_dir/$d/tax.args"
     printf '\n## Pooled runs: %s\n\n' "$d"
     printf '%s runs of the suite, each in its own process, in [results/runs/pooled/%s](../results/runs/pooled/%s); ' \
       "${#runs[@]}" "$d" "$d"
-    printf 'the tax of adaptivity over them ([methodology.md](methodology.md#the-tax-across-runs)):\n\n'
-    printf '```\n$ cd results/runs/pooled/%s && tcsb tax %s\n%s\n```\n' "$d" "${runs[*]}" "$table"
+    printf 'the tax of adaptivity over them ([methodology.md](methodology.md#the-tax-across-runs)):\n'
+    for flags in "${flag_lines[@]}"; do
+      local table status=0 args=()
+      read -ra args <<<"$flags"
+      # The verdict is the command's exit code (0 pass, 1 fail, 4 undecided); 2 and 3 mean it could not judge.
+      table=$(cd "$pooled_dir/$d" && "$binary" tax "${runs[@]}" "${args[@]}" 2>&1 >/dev/null) || status=$?
+      if ((status == 2 || status == 3)); then
+        echo "$table" >&2
+        return "$status"
+      fi
+      printf '\n```\n$ tcsb tax %s%s\n%s\n```\n' "${runs[*]}" "${flags:+ $flags}" "$table"
+    done
   done
 }
 

@@ -54,6 +54,9 @@ CLI::App* add_tax_command(CLI::App& app, TaxArgs& args) {
       ->capture_default_str();
   cmd->add_option("--min-nodes", args.min_nodes, "Judge only nets of at least this many grid nodes")
       ->capture_default_str();
+  cmd->add_flag("--over-nets", args.over_nets,
+                "Judge the nets together, as Table 2 does (the mean of TC-SB's median steps over plain_equal's), "
+                "instead of each net");
   cmd->add_option("--out", args.out, "Write the JSON verdict to FILE (atomically) instead of stdout");
   return cmd;
 }
@@ -72,6 +75,7 @@ int tax_command(const TaxArgs& args) {
   target.bound = args.bound;
   target.compression = args.compression;
   target.min_net_nodes = args.min_nodes;
+  target.over_nets = args.over_nets;
   std::vector<NetTax> nets;
   try {
     nets = judge_tax(views, target);

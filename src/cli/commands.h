@@ -92,7 +92,8 @@ struct TaxArgs {
   double bound = TaxTarget{}.bound;                    ///< the largest ratio to plain_equal that passes
   double compression = TaxTarget{}.compression;        ///< the TC-SB node budget judged
   std::int64_t min_nodes = TaxTarget{}.min_net_nodes;  ///< judge only nets of at least this many grid nodes
-  std::string out;                                     ///< output file; empty: stdout
+  bool over_nets = false;  ///< one claim on Table 2's ratio over the nets instead of one per net
+  std::string out;         ///< output file; empty: stdout
 };
 
 /// Options of `tcsb export`.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <sstream>
 
@@ -47,17 +48,62 @@ std::string text(double value) {
   return s.str();
 }
 
-/// The pooled ratios of one net, one group per run.
+/// One repetition of a net: TC-SB's mean step and plain_equal's (ms), both ok.
+using TimePair = std::pair<double, double>;
+using Pairs = std::vector<TimePair>;
+
+/// The repetitions ok in both cases with a step time, paired by number, in the TC-SB case's order.
+Pairs paired_times(const ResultView& run, std::size_t tcsb, std::size_t equal) {
+  Pairs pairs;
+  for (const RepetitionView& r : run.cases[tcsb].repetitions) {
+    if (r.status != "ok" || !r.mean_step_ms) continue;
+    for (const RepetitionView& b : run.cases[equal].repetitions) {
+      if (b.repetition != r.repetition) continue;
+      if (b.status == "ok" && b.mean_step_ms && *b.mean_step_ms > 0.0)
+        pairs.emplace_back(*r.mean_step_ms, *b.mean_step_ms);
+      break;
+    }
+  }
+  return pairs;
+}
+
+std::vector<double> ratios_of(const Pairs& pairs) {
+  std::vector<double> ratios;
+  for (const auto& [tcsb, equal] : pairs) ratios.push_back(tcsb / equal);
+  return ratios;
+}
+
+/// Table 2's ratio: the mean over the nets of TC-SB's median time over the mean of plain_equal's. NaN when a net has
+/// no pair (a resample cannot leave one empty, the data can).
+double ratio_of_means(const std::vector<Pairs>& per_net) {
+  double tcsb = 0.0, equal = 0.0;
+  for (const Pairs& pairs : per_net) {
+    if (pairs.empty()) return std::nan("");
+    std::vector<double> t, e;
+    for (const auto& [a, b] : pairs) {
+      t.push_back(a);
+      e.push_back(b);
+    }
+    tcsb += median(t);
+    equal += median(e);
+  }
+  return tcsb / equal;
+}
+
+/// The pooled pairs of one net, one group per run.
 struct NetSamples {
   NetTax tax;
-  std::vector<std::vector<double>> per_run;
+  std::vector<Pairs> per_run;
   std::string failure;  ///< the first repetition that did not end ok, "" if none
 };
 
 void judge(NetSamples& s, const TaxTarget& target) {
   NetTax& t = s.tax;
   std::vector<double> pooled;
-  for (const std::vector<double>& run : s.per_run) {
+  std::vector<std::vector<double>> per_run;
+  for (const Pairs& pairs : s.per_run) {
+    const std::vector<double> run = ratios_of(pairs);
+    per_run.push_back(run);
     if (run.empty()) continue;
     ++t.runs;
     t.run_medians.push_back(median(run));
@@ -84,8 +130,72 @@ void judge(NetSamples& s, const TaxTarget& target) {
   std::mt19937_64 rng(target.seed * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(t.net_nodes));
   std::vector<double> replicates;
   replicates.reserve(static_cast<std::size_t>(target.resamples));
-  for (int i = 0; i < target.resamples; ++i) replicates.push_back(median(resample_groups(s.per_run, rng)));
+  for (int i = 0; i < target.resamples; ++i) replicates.push_back(median(resample_groups(per_run, rng)));
   t.claim.interval = percentile_interval(std::move(replicates), target.confidence);
+}
+
+/// The nets of one configuration judged together (Table 2's ratio), pooled over the runs: the runs are drawn again
+/// once for all nets (a run measured every net in one process), then, per net, each drawn run's repetitions.
+NetTax judge_over_nets(const std::vector<NetSamples>& nets, const TaxTarget& target) {
+  NetTax t;
+  t.configuration = nets.front().tax.configuration;
+  t.net_nodes = nets.front().tax.net_nodes;
+  std::string failure;
+  for (const NetSamples& n : nets) {
+    t.net += (t.net.empty() ? "" : "+") + n.tax.net;
+    t.net_nodes = std::min(t.net_nodes, n.tax.net_nodes);
+    if (failure.empty()) failure = n.failure;
+  }
+  const std::size_t run_count = nets.front().per_run.size();
+  std::vector<Pairs> pooled(nets.size());
+  std::size_t fewest = std::numeric_limits<std::size_t>::max();
+  for (std::size_t r = 0; r < run_count; ++r) {
+    std::vector<Pairs> of_run;
+    for (std::size_t n = 0; n < nets.size(); ++n) {
+      of_run.push_back(nets[n].per_run[r]);
+      pooled[n].insert(pooled[n].end(), nets[n].per_run[r].begin(), nets[n].per_run[r].end());
+    }
+    const double ratio = ratio_of_means(of_run);
+    if (std::isnan(ratio)) continue;  // a run without these nets (a shard of others)
+    ++t.runs;
+    t.run_medians.push_back(ratio);
+  }
+  for (const Pairs& p : pooled) {
+    t.ratios += p.size();
+    fewest = std::min(fewest, p.size());
+  }
+  std::optional<double> measured;
+  if (failure.empty() && fewest > 0) measured = ratio_of_means(pooled);
+  t.claim =
+      check_claim("tax_over_nets" + (t.configuration.empty() ? "" : "_" + t.configuration),
+                  "TC-SB at " + text(target.compression * 100.0) + "% over the nets " + t.net + " costs at most " +
+                      text(target.bound) + " x plain_equal (Table 2's ratio of the nets' mean steps)",
+                  Comparison::kAtMost, target.bound, 0.0, measured, Evidence::kRepeated);
+  if (!failure.empty()) {
+    t.note = "not measured: " + failure;
+    return t;
+  }
+  if (fewest < kMinTaxRatios) {
+    t.note = std::to_string(fewest) + " repetition(s) on a net, fewer than " + std::to_string(kMinTaxRatios) +
+             ": no interval, so undecided (add repetitions or runs)";
+    return t;
+  }
+  std::mt19937_64 rng(target.seed * 0x9E3779B97F4A7C15ull);
+  std::vector<double> replicates;
+  replicates.reserve(static_cast<std::size_t>(target.resamples));
+  for (int i = 0; i < target.resamples; ++i) {
+    const std::vector<std::size_t> drawn_runs = resample_indices(run_count, rng);
+    std::vector<Pairs> drawn(nets.size());
+    for (std::size_t n = 0; n < nets.size(); ++n) {
+      for (const std::size_t r : drawn_runs) {
+        const Pairs& pairs = nets[n].per_run[r];
+        for (const std::size_t k : resample_indices(pairs.size(), rng)) drawn[n].push_back(pairs[k]);
+      }
+    }
+    replicates.push_back(ratio_of_means(drawn));  // NaN (dropped) when the drawn runs miss a net
+  }
+  t.claim.interval = percentile_interval(std::move(replicates), target.confidence);
+  return t;
 }
 
 }  // namespace
@@ -118,10 +228,24 @@ std::vector<NetTax> judge_tax(const std::vector<ResultView>& runs, const TaxTarg
       }
       if (it->failure.empty()) it->failure = first_failure(run, c);
       if (it->failure.empty()) it->failure = first_failure(run, run.cases[*equal]);
-      it->per_run[r] = paired_step_ratios(run, i, *equal);
+      it->per_run[r] = paired_times(run, i, *equal);
     }
   }
   std::vector<NetTax> out;
+  if (target.over_nets) {
+    // One claim per configuration, its nets in the order the runs list them.
+    std::vector<std::string> configurations;
+    for (const NetSamples& s : nets)
+      if (std::find(configurations.begin(), configurations.end(), s.tax.configuration) == configurations.end())
+        configurations.push_back(s.tax.configuration);
+    for (const std::string& configuration : configurations) {
+      std::vector<NetSamples> of_configuration;
+      for (const NetSamples& s : nets)
+        if (s.tax.configuration == configuration) of_configuration.push_back(s);
+      out.push_back(judge_over_nets(of_configuration, target));
+    }
+    return out;
+  }
   for (NetSamples& s : nets) {
     judge(s, target);
     out.push_back(std::move(s.tax));

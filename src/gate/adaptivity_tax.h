@@ -25,9 +25,12 @@ struct TaxTarget {
   double compression = 0.3;            ///< the TC-SB cases judged: those at this node budget (a fraction in (0, 1))
   std::int64_t min_net_nodes = 66049;  ///< only nets of at least this many grid nodes (smaller ones are dominated
                                        ///< by fixed costs, and the target is stated from here on)
-  double confidence = 0.95;            ///< of the bootstrap interval
-  int resamples = 4000;                ///< bootstrap resamples
-  std::uint64_t seed = 1;              ///< of the bootstrap: the same files give the same verdict
+  /// Judge the nets together instead, as Table 2 does: one claim on the mean over the nets of TC-SB's median step
+  /// over the mean of plain_equal's (each case's median over its repetitions, pooled over the runs).
+  bool over_nets = false;
+  double confidence = 0.95;  ///< of the bootstrap interval
+  int resamples = 4000;      ///< bootstrap resamples
+  std::uint64_t seed = 1;    ///< of the bootstrap: the same files give the same verdict
 };
 
 /// One net's judgement.
@@ -49,7 +52,10 @@ struct NetTax {
 /// `target.min_net_nodes`, pooled over `runs` (matched by configuration and net). Throws SuiteMismatch when the runs
 /// are of different suites, settings (repetitions aside) or seeds, or of different builds (context.git_commit), and
 /// ResultFileError (naming the file and the field) when a judged TC-SB case lacks net_nodes. Returns no nets when
-/// nothing matched; the caller decides what that means.
+/// nothing matched; the caller decides what that means. With `target.over_nets`, one entry for all the matched nets
+/// together: `net` lists them ("n45+n55+..."), `net_nodes` is the smallest one's, its claim's id "tax_over_nets"
+/// (+ "_" + configuration), its ratios the paired repetitions of all nets, and `run_medians` each run's own Table 2
+/// ratio.
 std::vector<NetTax> judge_tax(const std::vector<ResultView>& runs, const TaxTarget& target);
 
 /// The verdict over the nets: overall_verdict() of their claims.

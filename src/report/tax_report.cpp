@@ -11,7 +11,9 @@ void print_tax(const std::vector<NetTax>& nets, const TaxTarget& target, std::os
   const bool axes = std::any_of(nets.begin(), nets.end(), [](const NetTax& n) { return !n.configuration.empty(); });
   std::vector<TextTable::Column> columns{{"net", Align::kLeft}};
   if (axes) columns.push_back({"configuration", Align::kLeft});
-  for (const char* header : {"nodes", "runs", "ratios", "ratio", "interval"}) columns.push_back({header});
+  // Over the nets the row stands for several: its node count is the smallest net's.
+  for (const char* header : {target.over_nets ? "smallest net" : "nodes", "runs", "ratios", "ratio", "interval"})
+    columns.push_back({header});
   columns.push_back({"verdict", Align::kLeft});
   columns.push_back({"note", Align::kLeft});
   TextTable t(columns);
@@ -26,9 +28,11 @@ void print_tax(const std::vector<NetTax>& nets, const TaxTarget& target, std::os
     row.push_back(n.note);
     t.add_row(row);
   }
-  out << "TC-SB at " << general(target.compression * 100.0, 4) << "% against plain_equal, per net of "
-      << target.min_net_nodes << " nodes and more (bound " << general(target.bound, 4) << "; "
-      << general(target.confidence * 100.0, 4) << "% intervals, runs resampled, then their repetitions)\n";
+  out << "TC-SB at " << general(target.compression * 100.0, 4) << "% against plain_equal, "
+      << (target.over_nets ? "over the nets" : "per net");
+  if (target.min_net_nodes > 1) out << " of " << target.min_net_nodes << " nodes and more";
+  out << " (bound " << general(target.bound, 4) << "; " << general(target.confidence * 100.0, 4)
+      << "% intervals, runs resampled, then their repetitions)\n";
   t.print(out);
   out << "tcsb tax: " << verdict_name(tax_verdict(nets)) << "\n";
 }
@@ -57,6 +61,7 @@ nlohmann::ordered_json tax_json(const std::vector<NetTax>& nets, const TaxTarget
            {{"bound", json_number(target.bound)},
             {"compression", json_number(target.compression)},
             {"min_net_nodes", target.min_net_nodes},
+            {"over_nets", target.over_nets},
             {"confidence", json_number(target.confidence)},
             {"runs", files},
             {"nets", std::move(rows)},

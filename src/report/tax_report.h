@@ -16,9 +16,9 @@ namespace tcsb {
 /// overall verdict on its own line ("tcsb tax: pass" etc.).
 void print_tax(const std::vector<NetTax>& nets, const TaxTarget& target, std::ostream& out);
 
-/// {"tool": "tcsb", "tax": {"bound", "compression", "min_net_nodes", "confidence", "runs": [files], "nets": [{"net",
-/// "configuration", "net_nodes", "runs", "ratios", "run_medians", "ratio", "interval": {"low", "high"} or null,
-/// "verdict", "note"}], "verdict"}}; no NaN (unmeasured values are null).
+/// {"tool": "tcsb", "tax": {"bound", "compression", "min_net_nodes", "over_nets", "confidence", "runs": [files],
+/// "nets": [{"net", "configuration", "net_nodes", "runs", "ratios", "run_medians", "ratio", "interval": {"low", "high"}
+/// or null, "verdict", "note"}], "verdict"}}; no NaN (unmeasured values are null).
 nlohmann::ordered_json tax_json(const std::vector<NetTax>& nets, const TaxTarget& target,
                                 const std::vector<std::string>& files);
 

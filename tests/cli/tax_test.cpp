@@ -77,6 +77,17 @@ TEST_F(Tax, TooFewRepetitionsAreUndecidedAndRunsPool) {
   EXPECT_EQ(o.err.find("one run"), std::string::npos) << o.err;
 }
 
+TEST_F(Tax, OverTheNetsIsOneClaim) {
+  make_run(6, 1.02);
+  const Outcome o = tcsb("tax run.json --over-nets" + kScope);
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const ojson verdict = ojson::parse(o.out);
+  EXPECT_EQ(verdict["tax"]["over_nets"], true);
+  ASSERT_EQ(verdict["tax"]["nets"].size(), 1u);
+  EXPECT_EQ(verdict["tax"]["nets"][0]["net"], "n9");
+  EXPECT_NE(o.err.find("over the nets"), std::string::npos) << o.err;
+}
+
 TEST_F(Tax, RunsOfAModifiedTreeAreWarnedOf) {
   make_run(3, 1.02, "a.json");
   make_run(3, 1.03, "b.json");

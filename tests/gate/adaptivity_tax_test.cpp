@@ -139,6 +139,48 @@ TEST(AdaptivityTax, RunsOfOtherSettingsOrBuildsAreNotPooledButOtherRepetitionCou
   EXPECT_THROW(judge({base, seed}), SuiteMismatch);
 }
 
+TEST(AdaptivityTax, OverTheNetsIsTable2sRatioOfTheNetsMeanSteps) {
+  // Two nets: the small one at 2x plain_equal, the large one at 1.0x, plain_equal's steps 1 ms and 9 ms: the ratio
+  // of the nets' mean steps is (2 + 9) / (1 + 9) = 1.1, not the mean of the nets' ratios, 1.5.
+  ojson doc = run_doc({{"a", 100}, {"b", 400}}, 1.0);
+  testing::scale_case(doc, 0, 2.0);  // a/tcsb
+  testing::scale_case(doc, 2, 9.0);  // b/tcsb
+  testing::scale_case(doc, 3, 9.0);  // b/plain_equal
+  TaxTarget together;
+  together.over_nets = true;
+  together.min_net_nodes = 1;
+  const std::vector<NetTax> one = judge({doc}, together);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].net, "a+b");
+  EXPECT_EQ(one[0].net_nodes, 100);
+  EXPECT_EQ(one[0].claim.id, "tax_over_nets");
+  EXPECT_EQ(one[0].ratios, 12u);  // six repetitions of each net
+  EXPECT_NEAR(*one[0].claim.measured, 1.1, 0.01);
+  ASSERT_TRUE(one[0].claim.interval);
+  EXPECT_EQ(verdict(one[0].claim), Verdict::kPass);  // the repetitions agree: 1.15 lies well outside
+  ASSERT_EQ(one[0].run_medians.size(), 1u);
+  EXPECT_NEAR(one[0].run_medians[0], 1.1, 0.01);
+  together.min_net_nodes = 200;  // the small net out of scope: the large one alone
+  EXPECT_NEAR(*judge({doc}, together)[0].claim.measured, 1.0, 0.01);
+}
+
+TEST(AdaptivityTax, OverTheNetsTheRunsDisagreementWidensTheInterval) {
+  TaxTarget together;
+  together.over_nets = true;
+  const std::vector<NetTax> pooled = judge({run_doc({{"n257", 66049}, {"n513", 263169}}, 1.00, 3),
+                                            run_doc({{"n257", 66049}, {"n513", 263169}}, 1.20, 3)},
+                                           together);
+  ASSERT_EQ(pooled.size(), 1u);
+  EXPECT_EQ(pooled[0].runs, 2u);
+  ASSERT_TRUE(pooled[0].claim.interval);
+  EXPECT_LT(pooled[0].claim.interval->low, 1.02);
+  EXPECT_GT(pooled[0].claim.interval->high, 1.18);
+  EXPECT_EQ(verdict(pooled[0].claim), Verdict::kUndecided);
+  const std::vector<NetTax> few = judge({run_doc({{"n257", 66049}}, 1.0, 4)}, together);
+  EXPECT_EQ(verdict(few[0].claim), Verdict::kUndecided);
+  EXPECT_NE(few[0].note.find("fewer than 5"), std::string::npos);
+}
+
 TEST(AdaptivityTax, AJudgedCaseWithoutItsNetSizeIsRefusedNamingTheField) {
   ojson doc = run_doc({{"n257", 66049}}, 1.02);
   doc["cases"][0].erase("net_nodes");
