@@ -175,6 +175,12 @@ MaxCompression max_compression(const std::vector<ParetoPoint>& sweep, double thr
     m.rms_pct = it->worst_net_rms_pct;
     m.time_ratio_vs_plain = it->time_ratio_vs_plain;
   }
+  for (auto it = sweep.rbegin(); it != sweep.rend(); ++it) {
+    if (!it->rms_pct || *it->rms_pct > threshold_pct) break;
+    m.mean_compression = it->compression;
+    m.mean_rms_pct = it->rms_pct;
+    m.mean_time_ratio_vs_plain = it->time_ratio_vs_plain;
+  }
   return m;
 }
 

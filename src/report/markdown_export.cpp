@@ -385,7 +385,17 @@ std::string sweep_section(const ojson& pareto, const ojson& best, const std::str
     if (c.is_number())
       out += " (worst net " + markdown_number(at(best, "worst_net_rms_pct")) + " %, time ratio " +
              markdown_number(at(best, "time_ratio_vs_plain")) + ")";
-    out += ".\n";
+    out += ".";
+    // Files written before the mean's figure existed have no such field: nothing is said about it then.
+    if (const ojson& mean = at(best, "mean_compression"); best.contains("mean_compression")) {
+      out += " On the mean over the nets: ";
+      out += mean.is_number() ? compression_text(mean) + " of the nodes" : std::string("none");
+      if (mean.is_number())
+        out += " (mean RMS " + markdown_number(at(best, "mean_rms_pct")) + " %, time ratio " +
+               markdown_number(at(best, "mean_time_ratio_vs_plain")) + ")";
+      out += ".";
+    }
+    out += "\n";
   }
   return out;
 }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 namespace tcsb {
 namespace {
 
@@ -91,6 +93,32 @@ TEST(MaxCompression, IsTheSmallestTargetBelowWhichNothingFails) {
   EXPECT_DOUBLE_EQ(*m.compression, 0.6);
   EXPECT_DOUBLE_EQ(*m.rms_pct, 0.9);
   EXPECT_DOUBLE_EQ(max_compression(sweep, 2.0).compression.value(), 0.2);
+}
+
+TEST(MaxCompression, TheMeanOverTheNetsIsJudgedBesideTheWorstNet) {
+  // Mean and worst net RMS per target: the worst net fails at 0.5 (1.2 %), the mean only at 0.1 (1.1 %).
+  std::vector<ParetoPoint> sweep;
+  for (const auto& [compression, mean, worst] : std::vector<std::tuple<double, double, double>>{{0.1, 1.1, 2.5},
+                                                                                                {0.2, 0.98, 1.3},
+                                                                                                {0.3, 0.83, 0.99},
+                                                                                                {0.5, 0.86, 1.2},
+                                                                                                {0.75, 0.77, 0.95},
+                                                                                                {1.0, 0.0, 0.0}}) {
+    ParetoPoint p;
+    p.compression = compression;
+    p.rms_pct = mean;
+    p.worst_net_rms_pct = worst;
+    p.time_ratio_vs_plain = compression;
+    sweep.push_back(p);
+  }
+  const MaxCompression m = max_compression(sweep, 1.0);
+  EXPECT_DOUBLE_EQ(m.compression.value(), 0.75);
+  ASSERT_TRUE(m.mean_compression);
+  EXPECT_DOUBLE_EQ(*m.mean_compression, 0.2);
+  EXPECT_DOUBLE_EQ(*m.mean_rms_pct, 0.98);
+  EXPECT_DOUBLE_EQ(*m.mean_time_ratio_vs_plain, 0.2);
+  sweep[4].rms_pct.reset();  // a target without a mean stops the descent, as a failing one does
+  EXPECT_DOUBLE_EQ(max_compression(sweep, 1.0).mean_compression.value(), 1.0);
 }
 
 TEST(MaxCompression, IsAbsentWhenEvenTheLargestTargetFails) {

@@ -115,6 +115,7 @@ TEST(FidelityJson, RowsParetoAndMaxCompression) {
   // 0.5 fails the 1% threshold (worst net RMS 2%), 1.0 passes: no compression is the most that qualifies.
   EXPECT_EQ(doc["max_compression"]["compression"], 1.0);
   EXPECT_EQ(doc["max_compression"]["threshold_pct"], 1.0);
+  ASSERT_TRUE(doc["max_compression"].contains("mean_compression"));  // the mean over the nets, beside the worst net
   bool weighted_target = false;
   for (const ojson& t : f["targets"]) weighted_target |= t["id"] == "fidelity_weighted_vs_uniform_50";
   EXPECT_TRUE(weighted_target);
