@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -48,30 +49,8 @@ std::string text(double value) {
   return s.str();
 }
 
-/// One repetition of a net: TC-SB's mean step and plain_equal's (ms), both ok.
-using TimePair = std::pair<double, double>;
-using Pairs = std::vector<TimePair>;
-
-/// The repetitions ok in both cases with a step time, paired by number, in the TC-SB case's order.
-Pairs paired_times(const ResultView& run, std::size_t tcsb, std::size_t equal) {
-  Pairs pairs;
-  for (const RepetitionView& r : run.cases[tcsb].repetitions) {
-    if (r.status != "ok" || !r.mean_step_ms) continue;
-    for (const RepetitionView& b : run.cases[equal].repetitions) {
-      if (b.repetition != r.repetition) continue;
-      if (b.status == "ok" && b.mean_step_ms && *b.mean_step_ms > 0.0)
-        pairs.emplace_back(*r.mean_step_ms, *b.mean_step_ms);
-      break;
-    }
-  }
-  return pairs;
-}
-
-std::vector<double> ratios_of(const Pairs& pairs) {
-  std::vector<double> ratios;
-  for (const auto& [tcsb, equal] : pairs) ratios.push_back(tcsb / equal);
-  return ratios;
-}
+/// A net's repetitions in one run: TC-SB's mean step (case_ms) and plain_equal's (base_ms), paired by number.
+using Pairs = std::vector<PairedStepTimes>;
 
 /// Table 2's ratio: the mean over the nets of TC-SB's median time over the mean of plain_equal's. NaN when a net has
 /// no pair (a resample cannot leave one empty, the data can).
@@ -80,9 +59,9 @@ double ratio_of_means(const std::vector<Pairs>& per_net) {
   for (const Pairs& pairs : per_net) {
     if (pairs.empty()) return std::nan("");
     std::vector<double> t, e;
-    for (const auto& [a, b] : pairs) {
-      t.push_back(a);
-      e.push_back(b);
+    for (const PairedStepTimes& p : pairs) {
+      t.push_back(p.case_ms);
+      e.push_back(p.base_ms);
     }
     tcsb += median(t);
     equal += median(e);
@@ -97,12 +76,33 @@ struct NetSamples {
   std::string failure;  ///< the first repetition that did not end ok, "" if none
 };
 
+/// The claim's measured value, note and interval, the same for a net and for the nets together: not measured when a
+/// repetition failed; undecided without an interval below kMinTaxRatios samples (`fewest`, counted in `unit`);
+/// else the percentile interval of `target.resamples` values of `replicate`, drawn from a generator seeded with `seed`.
+void finish_claim(NetTax& t, const std::string& failure, std::size_t fewest, const char* unit, const TaxTarget& target,
+                  std::uint64_t seed, const std::function<double(std::mt19937_64&)>& replicate) {
+  if (!failure.empty()) {
+    t.note = "not measured: " + failure;
+    return;
+  }
+  if (fewest < kMinTaxRatios) {
+    t.note = std::to_string(fewest) + " " + unit + ", fewer than " + std::to_string(kMinTaxRatios) +
+             ": no interval, so undecided (add repetitions or runs)";
+    return;
+  }
+  std::mt19937_64 rng(seed);
+  std::vector<double> replicates;
+  replicates.reserve(static_cast<std::size_t>(target.resamples));
+  for (int i = 0; i < target.resamples; ++i) replicates.push_back(replicate(rng));
+  t.claim.interval = percentile_interval(std::move(replicates), target.confidence);
+}
+
 void judge(NetSamples& s, const TaxTarget& target) {
   NetTax& t = s.tax;
   std::vector<double> pooled;
   std::vector<std::vector<double>> per_run;
   for (const Pairs& pairs : s.per_run) {
-    const std::vector<double> run = ratios_of(pairs);
+    const std::vector<double> run = step_ratios(pairs);
     per_run.push_back(run);
     if (run.empty()) continue;
     ++t.runs;
@@ -117,21 +117,10 @@ void judge(NetSamples& s, const TaxTarget& target) {
                             text(target.bound) + " x plain_equal (the same repetition)";
   t.claim = check_claim(std::move(id), std::move(description), Comparison::kAtMost, target.bound, 0.0, measured,
                         Evidence::kRepeated);
-  if (!s.failure.empty()) {
-    t.note = "not measured: " + s.failure;
-    return;
-  }
-  if (pooled.size() < kMinTaxRatios) {
-    t.note = std::to_string(pooled.size()) + " paired ratio(s), fewer than " + std::to_string(kMinTaxRatios) +
-             ": no interval, so undecided (add repetitions or runs)";
-    return;
-  }
   // Seeded by the net, so its interval does not depend on which other nets were judged.
-  std::mt19937_64 rng(target.seed * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(t.net_nodes));
-  std::vector<double> replicates;
-  replicates.reserve(static_cast<std::size_t>(target.resamples));
-  for (int i = 0; i < target.resamples; ++i) replicates.push_back(median(resample_groups(per_run, rng)));
-  t.claim.interval = percentile_interval(std::move(replicates), target.confidence);
+  finish_claim(t, s.failure, pooled.size(), "paired ratio(s)", target,
+               target.seed * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(t.net_nodes),
+               [&](std::mt19937_64& rng) { return median(resample_groups(per_run, rng)); });
 }
 
 /// The nets of one configuration judged together (Table 2's ratio), pooled over the runs: the runs are drawn again
@@ -171,30 +160,18 @@ NetTax judge_over_nets(const std::vector<NetSamples>& nets, const TaxTarget& tar
                   "TC-SB at " + text(target.compression * 100.0) + "% over the nets " + t.net + " costs at most " +
                       text(target.bound) + " x plain_equal (Table 2's ratio of the nets' mean steps)",
                   Comparison::kAtMost, target.bound, 0.0, measured, Evidence::kRepeated);
-  if (!failure.empty()) {
-    t.note = "not measured: " + failure;
-    return t;
-  }
-  if (fewest < kMinTaxRatios) {
-    t.note = std::to_string(fewest) + " repetition(s) on a net, fewer than " + std::to_string(kMinTaxRatios) +
-             ": no interval, so undecided (add repetitions or runs)";
-    return t;
-  }
-  std::mt19937_64 rng(target.seed * 0x9E3779B97F4A7C15ull);
-  std::vector<double> replicates;
-  replicates.reserve(static_cast<std::size_t>(target.resamples));
-  for (int i = 0; i < target.resamples; ++i) {
-    const std::vector<std::size_t> drawn_runs = resample_indices(run_count, rng);
-    std::vector<Pairs> drawn(nets.size());
-    for (std::size_t n = 0; n < nets.size(); ++n) {
-      for (const std::size_t r : drawn_runs) {
-        const Pairs& pairs = nets[n].per_run[r];
-        for (const std::size_t k : resample_indices(pairs.size(), rng)) drawn[n].push_back(pairs[k]);
-      }
-    }
-    replicates.push_back(ratio_of_means(drawn));  // NaN (dropped) when the drawn runs miss a net
-  }
-  t.claim.interval = percentile_interval(std::move(replicates), target.confidence);
+  finish_claim(t, failure, fewest, "repetition(s) on a net", target, target.seed * 0x9E3779B97F4A7C15ull,
+               [&](std::mt19937_64& rng) {
+                 const std::vector<std::size_t> drawn_runs = resample_indices(run_count, rng);
+                 std::vector<Pairs> drawn(nets.size());
+                 for (std::size_t n = 0; n < nets.size(); ++n) {
+                   for (const std::size_t r : drawn_runs) {
+                     const Pairs& pairs = nets[n].per_run[r];
+                     for (const std::size_t k : resample_indices(pairs.size(), rng)) drawn[n].push_back(pairs[k]);
+                   }
+                 }
+                 return ratio_of_means(drawn);  // NaN (dropped) when the drawn runs miss a net
+               });
   return t;
 }
 
@@ -228,7 +205,7 @@ std::vector<NetTax> judge_tax(const std::vector<ResultView>& runs, const TaxTarg
       }
       if (it->failure.empty()) it->failure = first_failure(run, c);
       if (it->failure.empty()) it->failure = first_failure(run, run.cases[*equal]);
-      it->per_run[r] = paired_times(run, i, *equal);
+      it->per_run[r] = paired_step_times(run, i, *equal);
     }
   }
   std::vector<NetTax> out;

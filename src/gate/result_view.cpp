@@ -182,21 +182,31 @@ std::optional<std::size_t> equal_plain_case_of(const ResultView& result, std::si
   return std::nullopt;
 }
 
-std::vector<double> paired_step_ratios(const ResultView& result, std::size_t index, std::size_t base_index) {
-  std::vector<double> ratios;
-  if (index >= result.cases.size() || base_index >= result.cases.size()) return ratios;
+std::vector<PairedStepTimes> paired_step_times(const ResultView& result, std::size_t index, std::size_t base_index) {
+  std::vector<PairedStepTimes> pairs;
+  if (index >= result.cases.size() || base_index >= result.cases.size()) return pairs;
   const CaseView& base = result.cases[base_index];
   for (const RepetitionView& r : result.cases[index].repetitions) {
     if (r.status != "ok" || !r.mean_step_ms) continue;
     for (const RepetitionView& b : base.repetitions) {
       if (b.repetition != r.repetition) continue;
-      if (b.status == "ok" && b.mean_step_ms) {
-        if (const auto q = safe_ratio(*r.mean_step_ms, *b.mean_step_ms)) ratios.push_back(*q);
-      }
+      if (b.status == "ok" && b.mean_step_ms) pairs.push_back({*r.mean_step_ms, *b.mean_step_ms});
       break;
     }
   }
+  return pairs;
+}
+
+std::vector<double> step_ratios(const std::vector<PairedStepTimes>& pairs) {
+  std::vector<double> ratios;
+  for (const PairedStepTimes& p : pairs) {
+    if (const auto q = safe_ratio(p.case_ms, p.base_ms)) ratios.push_back(*q);
+  }
   return ratios;
+}
+
+std::vector<double> paired_step_ratios(const ResultView& result, std::size_t index, std::size_t base_index) {
+  return step_ratios(paired_step_times(result, index, base_index));
 }
 
 std::vector<double> ok_step_times(const CaseView& c) {

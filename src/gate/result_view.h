@@ -72,8 +72,22 @@ std::optional<std::size_t> plain_case_of(const ResultView& result, std::size_t i
 /// body of the same node budget), or nullopt (cases[index] is not TC-SB with a compression, or the run has none).
 std::optional<std::size_t> equal_plain_case_of(const ResultView& result, std::size_t index);
 
+/// One repetition number's mean step times (ms) in two cases of one run: the case's and its base case's.
+struct PairedStepTimes {
+  double case_ms = 0;
+  double base_ms = 0;
+};
+
+/// The mean step times of cases[index] and `base_index`, one pair per repetition number that is ok in both with a
+/// time, in the case's repetition order.
+std::vector<PairedStepTimes> paired_step_times(const ResultView& result, std::size_t index, std::size_t base_index);
+
+/// case_ms / base_ms of each pair whose ratio is finite (a non-zero base), in order.
+std::vector<double> step_ratios(const std::vector<PairedStepTimes>& pairs);
+
 /// Same-run ratios of cases[index] to `base_index`, one per repetition number that is ok in both with finite
-/// times and a non-zero base: case.mean_step_ms[r] / base.mean_step_ms[r], in the case's repetition order.
+/// times and a non-zero base: case.mean_step_ms[r] / base.mean_step_ms[r], in the case's repetition order
+/// (step_ratios of paired_step_times).
 std::vector<double> paired_step_ratios(const ResultView& result, std::size_t index, std::size_t base_index);
 
 /// The mean step times of the ok repetitions of cases[index], in repetition order.

@@ -165,21 +165,34 @@ std::vector<ParetoPoint> pareto_sweep(const std::vector<FidelityRow>& rows, cons
   return sweep;
 }
 
+namespace {
+
+/// The smallest-budget point of the sweep at which it and every larger target keep `error` within `threshold_pct`:
+/// from the largest budget down, the last target before the first failure (or a missing value); null if none.
+const ParetoPoint* smallest_within(const std::vector<ParetoPoint>& sweep, std::optional<double> ParetoPoint::*error,
+                                   double threshold_pct) {
+  const ParetoPoint* best = nullptr;
+  for (auto it = sweep.rbegin(); it != sweep.rend(); ++it) {
+    if (!((*it).*error) || *((*it).*error) > threshold_pct) break;
+    best = &*it;
+  }
+  return best;
+}
+
+}  // namespace
+
 MaxCompression max_compression(const std::vector<ParetoPoint>& sweep, double threshold_pct) {
   MaxCompression m;
   m.threshold_pct = threshold_pct;
-  // From the largest budget down: the answer is the last target before the first failure (or a missing value).
-  for (auto it = sweep.rbegin(); it != sweep.rend(); ++it) {
-    if (!it->worst_net_rms_pct || *it->worst_net_rms_pct > threshold_pct) break;
-    m.compression = it->compression;
-    m.rms_pct = it->worst_net_rms_pct;
-    m.time_ratio_vs_plain = it->time_ratio_vs_plain;
+  if (const ParetoPoint* p = smallest_within(sweep, &ParetoPoint::worst_net_rms_pct, threshold_pct)) {
+    m.compression = p->compression;
+    m.rms_pct = p->worst_net_rms_pct;
+    m.time_ratio_vs_plain = p->time_ratio_vs_plain;
   }
-  for (auto it = sweep.rbegin(); it != sweep.rend(); ++it) {
-    if (!it->rms_pct || *it->rms_pct > threshold_pct) break;
-    m.mean_compression = it->compression;
-    m.mean_rms_pct = it->rms_pct;
-    m.mean_time_ratio_vs_plain = it->time_ratio_vs_plain;
+  if (const ParetoPoint* p = smallest_within(sweep, &ParetoPoint::rms_pct, threshold_pct)) {
+    m.mean_compression = p->compression;
+    m.mean_rms_pct = p->rms_pct;
+    m.mean_time_ratio_vs_plain = p->time_ratio_vs_plain;
   }
   return m;
 }

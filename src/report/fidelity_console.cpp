@@ -88,19 +88,20 @@ void print_sweep(const char* title, const std::vector<ParetoPoint>& sweep, const
                fixed(p.worst_net_rms_pct, 3), p.on_front ? "yes" : ""});
   out << title << " time versus error (Pareto sweep):\n";
   t.print(out);
+  // The budget, the error it keeps and the speed it buys, or that none qualifies.
+  const auto answer = [&out](const std::optional<double>& compression, const char* error_name,
+                             const std::optional<double>& rms, const std::optional<double>& ratio) {
+    if (compression)
+      out << compression_label(*compression) << " of the nodes (" << error_name << " " << fixed(rms, 3)
+          << "%, time/plain " << fixed(ratio, 3) << ")\n";
+    else
+      out << "none of the targets qualifies\n";
+  };
   out << "Maximal compression (it and every larger target keep the worst net's RMS <= " << fixed(m.threshold_pct, 2)
       << "% of the extent): ";
-  if (m.compression)
-    out << compression_label(*m.compression) << " of the nodes (worst net RMS " << fixed(m.rms_pct, 3)
-        << "%, time/plain " << fixed(m.time_ratio_vs_plain, 3) << ")\n";
-  else
-    out << "none of the targets qualifies\n";
+  answer(m.compression, "worst net RMS", m.rms_pct, m.time_ratio_vs_plain);
   out << "  on the mean over the nets instead: ";
-  if (m.mean_compression)
-    out << compression_label(*m.mean_compression) << " of the nodes (mean RMS " << fixed(m.mean_rms_pct, 3)
-        << "%, time/plain " << fixed(m.mean_time_ratio_vs_plain, 3) << ")\n";
-  else
-    out << "none of the targets qualifies\n";
+  answer(m.mean_compression, "mean RMS", m.mean_rms_pct, m.mean_time_ratio_vs_plain);
 }
 
 }  // namespace
