@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "net/net.h"
-#include "softbody/soft_body_world.h"
+#include "scene/scene_world.h"
 #include "softbody/solver_settings.h"
 #include "softbody/tc_settings.h"
 #include "softbody/tc_softbody.h"
@@ -57,7 +57,7 @@ struct OpBody {
   TreeId refine_candidate(int attempts = 100000);
 
   int width;
-  SoftBodyWorld world;
+  SceneWorld world;
   std::shared_ptr<const Net> net;
   std::unique_ptr<TcSoftBody> body;
   std::mt19937_64 rng;

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "bench_bodies.h"
+#include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/plain_softbody.h"
 
@@ -31,18 +32,18 @@ void set_counters(benchmark::State& state, const btSoftBody& body) {
 }
 
 void BM_PlainStep(benchmark::State& state) {
-  SoftBodyWorld world{WorldSettings{}};
+  SceneWorld world{WorldSettings{}};
   const auto net = square_net(static_cast<int>(state.range(0)));
-  const auto body = make_plain_softbody(world, *net, bench_solver());
+  const auto body = make_plain_softbody(world.info(), *net, bench_solver());
   for (int s = 0; s < kWarmupSteps; ++s) step_soft_body(*body, kDt);
   for (auto _ : state) step_soft_body(*body, kDt);
   set_counters(state, *body);
 }
 
 void BM_TcsbStepNoOps(benchmark::State& state) {
-  SoftBodyWorld world{WorldSettings{}};
+  SceneWorld world{WorldSettings{}};
   const auto net = square_net(static_cast<int>(state.range(0)));
-  TcSoftBody body(world, net, bench_solver(), TcSettings{});
+  TcSoftBody body(world.info(), net, bench_solver(), TcSettings{});
   for (int s = 0; s < kWarmupSteps; ++s) {
     body.advance_blends();
     body.simulate_step(kDt);

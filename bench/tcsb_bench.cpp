@@ -51,7 +51,7 @@ OpBody::OpBody(int w)
   const auto t0 = std::chrono::steady_clock::now();
   // About 1 s at 513^2 (the node DBVT is built in a shuffled order: init_net_nodes), 3 s with the cut and steps below;
   // the body is therefore built once per width and process.
-  body = std::make_unique<TcSoftBody>(world, net, bench_solver(), TcSettings{});
+  body = std::make_unique<TcSoftBody>(world.info(), net, bench_solver(), TcSettings{});
   const auto tc = std::chrono::steady_clock::now();
   RandomPolicy policy(20240000ULL + static_cast<unsigned>(w));
   const int n = static_cast<int>(net->node_count());

@@ -11,9 +11,11 @@ int main() {
   spec.width = spec.height = 65;
   const auto net = std::make_shared<const tcsb::Net>(spec);
 
-  // The world parameters every body points at (gravity along -y), and the solver as the paper suite states it.
-  const tcsb::WorldSettings world_settings;  // dt 1/60 s, g 9.81 m/s^2
-  tcsb::SoftBodyWorld world(world_settings);
+  // The world parameters every body points at: gravity along -y and no collision world (the body is stepped solo),
+  // and the solver as the paper suite states it.
+  btSoftBodyWorldInfo world;
+  world.m_gravity.setValue(0, -9.81f, 0);
+  const btScalar dt = 1.0f / 60.0f;
   tcsb::SolverSettings solver;
   solver.piterations = 2;
 
@@ -22,7 +24,6 @@ int main() {
   const int budget = static_cast<int>(0.3 * static_cast<double>(spec.node_count()));
   const auto controller = tcsb::make_controller(tcsb::FeedbackSettings{}, budget, /*seed=*/1);
 
-  const auto dt = static_cast<btScalar>(world_settings.dt);
   for (int step = 1; step <= 120; ++step) {
     body.advance_blends();          // blends move on; finished operations end
     controller->before_step(body);  // new operations begin, under the budget

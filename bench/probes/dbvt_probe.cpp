@@ -28,6 +28,7 @@
 
 #include "case/case_body.h"
 #include "net/net.h"
+#include "scene/scene_world.h"
 #include "suite/suite.h"
 
 namespace {
@@ -85,7 +86,7 @@ int main(int argc, char** argv) {
   auto net = std::make_shared<const Net>(suite.nets.at(net_index));
   const btScalar dt = static_cast<btScalar>(suite.world.dt);
   for (const Method method : {Method::kTcsb, Method::kPlainEqual, Method::kPlain}) {
-    SoftBodyWorld world(suite.world);
+    SceneWorld world(suite.world);
     CaseKey key{net_index, method, std::nullopt, 0};
     if (method != Method::kPlain) key.compression = compression;
     auto body = make_case_body(suite, key, world, net, suite.seed);

@@ -15,7 +15,6 @@
 // collision code, and a wrapper would either copy Bullet's interface or expose the same object anyway.
 #pragma once
 
-#include "softbody/soft_body_world.h"  // IWYU pragma: export
 #include "softbody/solver_settings.h"  // IWYU pragma: export
 #include "softbody/tc_settings.h"      // IWYU pragma: export
 #include "softbody/tc_softbody.h"      // IWYU pragma: export

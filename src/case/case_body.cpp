@@ -1,5 +1,6 @@
 #include "case/case_body.h"
 
+#include <chrono>
 #include <cmath>
 
 #include "case/step_clock.h"
@@ -11,22 +12,35 @@ namespace tcsb {
 
 namespace {
 
+/// Gate self-test builds only (CMake option TCSB_INJECT_STEP_DELAY_US): a real, measurable slowdown of TC-SB's
+/// step. Nothing in other builds.
+void injected_step_delay() {
+#if TCSB_INJECT_STEP_DELAY_US > 0
+  const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(TCSB_INJECT_STEP_DELAY_US);
+  while (std::chrono::steady_clock::now() < until) {
+  }
+#endif
+}
+
 /// Stock Bullet: the plain baseline or CreatePatch.
 class StockBody final : public CaseBody {
  public:
-  explicit StockBody(std::unique_ptr<btSoftBody> body) : body_(std::move(body)) {}
-  void step(btScalar dt) override { step_soft_body(*body_, dt); }
+  StockBody(SceneWorld& world, std::unique_ptr<btSoftBody> body)
+      : world_(world), body_(std::move(body)), attachment_(world.attach(*body_)) {}
+  void step(btScalar dt) override { world_.step(dt); }
   const btSoftBody& bullet() const override { return *body_; }
 
  private:
+  SceneWorld& world_;
   std::unique_ptr<btSoftBody> body_;
+  SceneWorld::Attachment attachment_;  // after the body: leaves the world first
 };
 
 /// TC-SB with its controller (none at NoCompression: the body then never changes its cut).
 class TreeCutBody final : public CaseBody {
  public:
-  TreeCutBody(std::unique_ptr<TcSoftBody> body, std::unique_ptr<Controller> controller)
-      : body_(std::move(body)), controller_(std::move(controller)) {}
+  TreeCutBody(SceneWorld& world, std::unique_ptr<TcSoftBody> body, std::unique_ptr<Controller> controller)
+      : world_(world), body_(std::move(body)), attachment_(world.attach(*body_)), controller_(std::move(controller)) {}
   void step(btScalar dt) override {
     // Five clock reads a step (tens of ns against a step of 0.1 ms and more), none inside Bullet's loops.
     const StepClock::time_point t0 = StepClock::now();
@@ -34,7 +48,8 @@ class TreeCutBody final : public CaseBody {
     const StepClock::time_point t1 = StepClock::now();
     if (controller_) controller_->before_step(*body_);
     const StepClock::time_point t2 = StepClock::now();
-    body_->simulate_step(dt);
+    world_.step(dt);
+    injected_step_delay();
     const StepClock::time_point t3 = StepClock::now();
     if (controller_) controller_->after_step(*body_);
     const StepClock::time_point t4 = StepClock::now();
@@ -53,7 +68,9 @@ class TreeCutBody final : public CaseBody {
   }
 
  private:
+  SceneWorld& world_;
   std::unique_ptr<TcSoftBody> body_;
+  SceneWorld::Attachment attachment_;  // after the body: leaves the world first
   std::unique_ptr<Controller> controller_;
   StepPhases phases_;
 };
@@ -69,23 +86,25 @@ int target_node_count(const Net& net, const CaseKey& key) {
   return node_budget(net, *key.compression);
 }
 
-std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key, SoftBodyWorld& world,
+std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key, SceneWorld& world,
                                          std::shared_ptr<const Net> net, std::uint64_t seed) {
   switch (key.method) {
-    case Method::kPlain: return std::make_unique<StockBody>(make_plain_softbody(world, *net, suite.solver));
-    case Method::kBulletPatch: return std::make_unique<StockBody>(make_bullet_patch(world, *net, suite.solver));
+    case Method::kPlain:
+      return std::make_unique<StockBody>(world, make_plain_softbody(world.info(), *net, suite.solver));
+    case Method::kBulletPatch:
+      return std::make_unique<StockBody>(world, make_bullet_patch(world.info(), *net, suite.solver));
     case Method::kPlainEqual: {
       // The fidelity pass's uniform grid (coarse_net_spec): sized by the budget, not by TC-SB's measured mean node
       // count, which is known only after TC-SB ran (it holds the budget, blends included, so it stays at most that).
       const Net coarse(coarse_net_spec(net->spec(), target_node_count(*net, key)));
-      return std::make_unique<StockBody>(make_plain_softbody(world, coarse, suite.solver));
+      return std::make_unique<StockBody>(world, make_plain_softbody(world.info(), coarse, suite.solver));
     }
     case Method::kTcsb: {
       const int target = target_node_count(*net, key);
-      auto body = std::make_unique<TcSoftBody>(world, net, suite.solver, suite.tcsb);
+      auto body = std::make_unique<TcSoftBody>(world.info(), net, suite.solver, suite.tcsb);
       std::unique_ptr<Controller> controller;
       if (target < static_cast<int>(net->node_count())) controller = make_controller(suite.feedback, target, seed);
-      return std::make_unique<TreeCutBody>(std::move(body), std::move(controller));
+      return std::make_unique<TreeCutBody>(world, std::move(body), std::move(controller));
     }
   }
   return nullptr;

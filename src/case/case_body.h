@@ -9,7 +9,7 @@
 
 #include "feedback/controller.h"
 #include "net/net.h"
-#include "softbody/soft_body_world.h"
+#include "scene/scene_world.h"
 #include "softbody/tc_softbody.h"
 #include "suite/case_plan.h"
 #include "suite/suite.h"
@@ -21,7 +21,7 @@ namespace tcsb {
 struct StepPhases {
   double blends_ms = 0;    ///< advance_blends()
   double feedback_ms = 0;  ///< the controller before and after Bullet's step
-  double bullet_ms = 0;    ///< simulate_step()
+  double bullet_ms = 0;    ///< the world's step
 };
 
 /// A body being simulated for a case, with whatever drives it.
@@ -53,8 +53,9 @@ int node_budget(const Net& net, double compression);
 /// Node budget of a TC-SB or plain_equal case (node_budget), 0 for other methods.
 int target_node_count(const Net& net, const CaseKey& key);
 
-/// Builds the body for a case. `seed` drives any random choices (same seed, same run).
-std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key, SoftBodyWorld& world,
+/// Builds the body for a case inside `world` (which steps it; it must outlive the body). `seed` drives any random
+/// choices (same seed, same run).
+std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key, SceneWorld& world,
                                          std::shared_ptr<const Net> net, std::uint64_t seed);
 
 }  // namespace tcsb

@@ -18,7 +18,8 @@ FinestCut::FinestCut(const Net& net)
   for (const NetLink& l : net.links()) links_.push_back({l.a, l.b, LinkRole::kSteady, -1});
 }
 
-void take_snapshot(const btSoftBody& body, const CutView& cut, bool positions, std::int64_t step, CutSnapshot& out) {
+void take_snapshot(const btSoftBody& body, const CutView& cut, bool positions, std::int64_t step, CutSnapshot& out,
+                   const std::vector<TreeId>* contacts) {
   const int n = body.m_nodes.size();
   out.cut = cut;
   out.step = step;
@@ -31,6 +32,24 @@ void take_snapshot(const btSoftBody& body, const CutView& cut, bool positions, s
       const btVector3& x = body.m_nodes[i].m_x;
       out.position[static_cast<std::size_t>(i)] = {x.x(), x.y(), x.z()};
     }
+  }
+  out.contact.assign(contacts ? static_cast<std::size_t>(n) : 0, 0);
+  if (!contacts) return;
+  // A node the operations have taken out of the cut since the step has no index; one they brought in has no contact
+  // yet (it gets one from the next step).
+  for (const TreeId id : *contacts) {
+    const std::int32_t i = cut.index[static_cast<std::size_t>(id)];
+    if (i >= 0) out.contact[static_cast<std::size_t>(i)] = 1;
+  }
+}
+
+void nodes_in_contact(const btSoftBody& body, std::span<const TreeId> tree_of, std::vector<TreeId>& out) {
+  out.clear();
+  if (body.m_nodes.size() == 0) return;
+  const btSoftBody::Node* first = &body.m_nodes[0];
+  for (int c = 0; c < body.m_rcontacts.size(); ++c) {
+    const std::ptrdiff_t i = body.m_rcontacts[c].m_node - first;
+    if (i >= 0 && static_cast<std::size_t>(i) < tree_of.size()) out.push_back(tree_of[static_cast<std::size_t>(i)]);
   }
 }
 

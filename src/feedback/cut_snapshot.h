@@ -54,12 +54,22 @@ struct CutSnapshot {
   CutView cut;
   std::vector<std::array<float, 3>> velocity;  ///< per simulated node
   std::vector<std::array<float, 3>> position;  ///< per simulated node (only when illumination needs normals)
-  std::int64_t step = -1;                      ///< the boundary it was taken at
+  /// Per simulated node, 1 when Bullet's last step found it in contact with a rigid body (nodes_in_contact); empty
+  /// unless the contact feature asked for it.
+  std::vector<std::uint8_t> contact;
+  std::int64_t step = -1;  ///< the boundary it was taken at
 
   std::size_t size() const { return cut.size(); }
 };
 
-/// Copies the body's velocities (and positions when `positions`): O(N), memcpy-like. Reuses the buffers.
-void take_snapshot(const btSoftBody& body, const CutView& cut, bool positions, std::int64_t step, CutSnapshot& out);
+/// Copies the body's velocities (and positions when `positions`): O(N), memcpy-like. Reuses the buffers. With
+/// `contacts` (tree nodes, from nodes_in_contact) it marks those of them the cut simulates now: O(N + contacts).
+void take_snapshot(const btSoftBody& body, const CutView& cut, bool positions, std::int64_t step, CutSnapshot& out,
+                   const std::vector<TreeId>* contacts = nullptr);
+
+/// The tree nodes Bullet found in contact with a rigid body in the body's last step (its rigid contacts, whose node
+/// pointers hold only until the cut next changes: call this right after the step), `tree_of` mapping simulated node
+/// indices to tree nodes. O(contacts); a node in several contacts is listed once per contact.
+void nodes_in_contact(const btSoftBody& body, std::span<const TreeId> tree_of, std::vector<TreeId>& out);
 
 }  // namespace tcsb

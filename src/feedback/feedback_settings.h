@@ -43,6 +43,11 @@ struct FeedbackSettings {
   /// the cloth is coarse, and fine patches at the pins doubled the error of a coarse cut; at 75 % most of it is fine.
   /// 0 disables it; it needs interface_tension > 0. Issue 20; the paper has no such term.
   double pin_level_pull = 0.0;
+  /// Contact as an animation feature (the paper, §4: "other features need to be included"): a node Bullet found in
+  /// contact with a rigid collider in the last step gets at least this saliency, whatever its motion, so detail goes
+  /// to where the cloth meets the world — cloth resting on a collider has no relative motion, and the motion terms
+  /// alone coarsen it. In [0, 1]; 0 disables it (and its O(contacts) per snapshot).
+  double contact_saliency = 0.0;
 };
 
 /// Name used in suites and reports: "saliency" or "random".

@@ -90,6 +90,7 @@ void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settin
     double s = largest > 0 ? motion[i] / largest : 0.0;
     s = std::min(s, cap);
     if (settings.illumination && s > 0) s *= lambert_factor(snapshot, i, settings.light_direction);
+    if (!snapshot.contact.empty() && snapshot.contact[i]) s = std::max(s, settings.contact_saliency);
     motion[i] = static_cast<float>(s);
   }
 }

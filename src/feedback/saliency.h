@@ -7,6 +7,8 @@
 //  * Global motion: a fast object draws attention but limits focus (Yee et al. 2001), so it caps the saliency:
 //    cap = 1 / (1 + |v_cm| / global_motion_scale); the (x) operator clamps local motion to that cap.
 //  * Illumination (optional): Lambertian, o is a product with max(0, n . l), n the cloth normal at the node.
+//  * Contact (optional, not in the paper): a node in contact with a rigid collider is at least contact_saliency
+//    salient, after the cap and the light.
 #pragma once
 
 #include <array>
@@ -43,7 +45,8 @@ double global_motion_cap(double speed, double scale);
 double lambert_factor(const CutSnapshot& snapshot, std::size_t i, const std::array<double, 3>& light);
 
 /// Turns raw local motion into saliency in place: divide by the largest value, clamp to the global cap, apply the
-/// illumination factor when enabled. Deterministic for a given snapshot.
+/// illumination factor when enabled, raise nodes in contact to the contact saliency (when the snapshot has contacts).
+/// Deterministic for a given snapshot.
 void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings, std::span<float> motion);
 
 /// All of the above on one thread: saliency of every simulated node of the snapshot.

@@ -69,7 +69,8 @@ void SaliencyController::before_step(TcSoftBody& body) {
     if (settings_.interface_charge > 0 && settings_.interface_tension > 0 && interface_weights_.empty())
       interface_weights_ = interface_weights(body.tree(), settings_.interface_tension);  // once: O(N)
     budget_level_ = budget_level(body.tree(), budget());  // the budget may move (max_step_ms)
-    take_snapshot(body, cut_view(body), settings_.illumination || settings_.popping_charge > 0, boundary_, snapshot_);
+    take_snapshot(body, cut_view(body), settings_.illumination || settings_.popping_charge > 0, boundary_, snapshot_,
+                  settings_.contact_saliency > 0 ? &contacts_ : nullptr);
     if (workers_) {
       workers_->post([this] { evaluate(); });
       job_running_ = true;
@@ -84,6 +85,8 @@ void SaliencyController::before_step(TcSoftBody& body) {
 }
 
 void SaliencyController::after_step(const TcSoftBody& body) {
+  // The step's contacts, by tree node: their Bullet node pointers hold only until the next boundary's operations.
+  if (settings_.contact_saliency > 0) nodes_in_contact(body, body.tree_ids(), contacts_);
   if (!job_running_) return;
   // The worker read the cut in place; join it before the next boundary may change the cut.
   const Clock::time_point t0 = Clock::now();

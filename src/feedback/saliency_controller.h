@@ -51,6 +51,7 @@ class SaliencyController final : public Controller {
   CutSnapshot snapshot_;
   NeighbourSums sums_;
   CutNeighbours neighbours_;              // for the popping charge
+  std::vector<TreeId> contacts_;          // nodes in contact after the last step, for the contact feature
   double extent_ = 1;                     // the net's, for the popping charge
   std::vector<float> interface_weights_;  // per tree node, when the interface charge weighs the pins' tension
   int budget_level_ = 0;                  // the level most of the cloth takes under the budget, for the pull

@@ -33,13 +33,14 @@ struct Trajectory {
 };
 
 Trajectory record_reference(const Suite& suite, const Net& net) {
-  SoftBodyWorld world(suite.world);
-  std::unique_ptr<btSoftBody> body = make_plain_softbody(world, net, suite.solver);
+  SceneWorld world(suite.world, suite.scene);
+  std::unique_ptr<btSoftBody> body = make_plain_softbody(world.info(), net, suite.solver);
+  const SceneWorld::Attachment attachment = world.attach(*body);
   Trajectory t;
   t.nodes = net.node_count();
   std::vector<Eigen::Vector3d> x;
   for (int s = 0; s < suite.warmup_steps + suite.steps; ++s) {
-    step_soft_body(*body, static_cast<btScalar>(suite.world.dt));
+    world.step(static_cast<btScalar>(suite.world.dt));
     if (divergence_now(*body, net.extent()))
       throw std::runtime_error("calibrate: the reference diverged on net \"" + net.spec().name + "\"");
     if (s < suite.warmup_steps) continue;
@@ -50,15 +51,15 @@ Trajectory record_reference(const Suite& suite, const Net& net) {
   return t;
 }
 
-/// Steps `body` through the suite's steps and returns the mean over measured steps of the RMS (% of the extent) of
-/// the surface `reconstruct` gives against the reference; infinity when the body diverges.
+/// Steps `body` (attached to `world`) through the suite's steps and returns the mean over measured steps of the RMS (%
+/// of the extent) of the surface `reconstruct` gives against the reference; infinity when the body diverges.
 template <class Reconstruct>
-double mean_rms(const Suite& suite, const Net& net, btSoftBody& body, const Trajectory& reference,
-                Reconstruct reconstruct) {
+double mean_rms(const Suite& suite, const Net& net, SceneWorld& world, const btSoftBody& body,
+                const Trajectory& reference, Reconstruct reconstruct) {
   std::vector<Eigen::Vector3d> surface, ref;
   double sum = 0;
   for (int s = 0; s < suite.warmup_steps + suite.steps; ++s) {
-    step_soft_body(body, static_cast<btScalar>(suite.world.dt));
+    world.step(static_cast<btScalar>(suite.world.dt));
     if (divergence_now(body, net.extent())) return std::numeric_limits<double>::infinity();
     if (s < suite.warmup_steps) continue;
     reconstruct(surface);
@@ -71,24 +72,26 @@ double mean_rms(const Suite& suite, const Net& net, btSoftBody& body, const Traj
 /// A TC-SB body coarsened to `level` with `stiffness` for its levels, against the reference.
 double level_error(const Suite& suite, const std::shared_ptr<const Net>& net, const Trajectory& reference, int level,
                    const std::vector<double>& stiffness) {
-  SoftBodyWorld world(suite.world);
+  SceneWorld world(suite.world, suite.scene);
   TcSettings tc = suite.tcsb;
   tc.level_stiffness = stiffness;
-  TcSoftBody body(world, net, suite.solver, tc);
+  TcSoftBody body(world.info(), net, suite.solver, tc);
   coarsen_to_level(body, level);
-  return mean_rms(suite, *net, body, reference,
+  const SceneWorld::Attachment attachment = world.attach(body);
+  return mean_rms(suite, *net, world, body, reference,
                   [&](std::vector<Eigen::Vector3d>& out) { reconstruct_leaves(body, out); });
 }
 
 /// The uniform grid of a budget with material stiffness `k`, against the reference.
 double uniform_error(const Suite& suite, const Net& net, const Trajectory& reference, double compression, double k) {
-  SoftBodyWorld world(suite.world);
+  SceneWorld world(suite.world, suite.scene);
   const Net coarse(coarse_net_spec(net.spec(), subject_budget(net, {FidelityMethod::kUniform, compression})));
   SolverSettings solver = suite.solver;
   solver.linear_stiffness = k;
-  std::unique_ptr<btSoftBody> body = make_plain_softbody(world, coarse, solver);
+  std::unique_ptr<btSoftBody> body = make_plain_softbody(world.info(), coarse, solver);
+  const SceneWorld::Attachment attachment = world.attach(*body);
   std::vector<Eigen::Vector3d> x;
-  return mean_rms(suite, net, *body, reference, [&](std::vector<Eigen::Vector3d>& out) {
+  return mean_rms(suite, net, world, *body, reference, [&](std::vector<Eigen::Vector3d>& out) {
     copy_positions(*body, x);
     out.resize(net.node_count());
     resample_bilinear({coarse.width(), coarse.height()}, x, {net.width(), net.height()}, out);

@@ -60,7 +60,8 @@ struct ReferenceBlock {
 class Reference {
  public:
   Reference(const Suite& suite, const std::shared_ptr<const Net>& net)
-      : suite_(suite), net_(net), world_(suite.world), body_(make_plain_softbody(world_, *net, suite.solver)),
+      : suite_(suite), net_(net), world_(suite.world, suite.scene),
+        body_(make_plain_softbody(world_.info(), *net, suite.solver)), attachment_(world_.attach(*body_)),
         finest_(*net) {
     copy_positions(*body_, x_);
     copy_velocities(*body_, v_);
@@ -78,7 +79,7 @@ class Reference {
     block.energy.assign(frames, 0.0);
     for (int s = first; s < last; ++s) {
       const StepClock::time_point t0 = StepClock::now();
-      step_soft_body(*body_, static_cast<btScalar>(suite_.world.dt));
+      world_.step(static_cast<btScalar>(suite_.world.dt));
       const StepClock::time_point t1 = StepClock::now();
       // Every step, fully: this loop copies every node after each step anyway, so the check adds no new cache
       // traffic to the steps it times, and the pass reports the first diverged step.
@@ -96,7 +97,9 @@ class Reference {
         block.positions[f * n + i] = {static_cast<float>(x_[i].x()), static_cast<float>(x_[i].y()),
                                       static_cast<float>(x_[i].z())};
       block.energy[f] = mechanical_energy(net_->masses(), x_, v_, suite_.world.gravity);
-      take_snapshot(*body_, finest_.view(), suite_.feedback.illumination, s, snapshot_);
+      const bool contact = suite_.feedback.contact_saliency > 0;
+      if (contact) nodes_in_contact(*body_, finest_.view().tree_of, contacts_);
+      take_snapshot(*body_, finest_.view(), suite_.feedback.illumination, s, snapshot_, contact ? &contacts_ : nullptr);
       const std::vector<float> saliency = compute_saliency(snapshot_, suite_.feedback);
       std::copy(saliency.begin(), saliency.end(), block.saliency.begin() + static_cast<std::ptrdiff_t>(f * n));
     }
@@ -112,10 +115,12 @@ class Reference {
  private:
   const Suite& suite_;
   std::shared_ptr<const Net> net_;
-  SoftBodyWorld world_;
+  SceneWorld world_;
   std::unique_ptr<btSoftBody> body_;
+  SceneWorld::Attachment attachment_;  // after the body: leaves the world first
   FinestCut finest_;
   CutSnapshot snapshot_;
+  std::vector<TreeId> contacts_;
   std::vector<Eigen::Vector3d> x_, v_;
 };
 
@@ -125,7 +130,7 @@ class Track {
   /// `pace`: for switch_body, the TC-SB subject at the same target (its track must run each block first).
   Track(const Suite& suite, std::size_t net_index, const std::shared_ptr<const Net>& net,
         const FidelitySubjectSpec& spec, const FidelitySubject* pace)
-      : suite_(suite), net_(net), world_(suite.world) {
+      : suite_(suite), net_(net), world_(suite.world, suite.scene) {
     result.net = net_index;
     result.net_name = net->spec().name;
     result.subject = spec;
@@ -218,7 +223,7 @@ class Track {
  private:
   const Suite& suite_;
   std::shared_ptr<const Net> net_;
-  SoftBodyWorld world_;  // one per subject: a body keeps its world's address
+  SceneWorld world_;  // one per subject: a body keeps its world's address
   std::unique_ptr<FidelitySubject> body_;
   std::vector<Eigen::Vector3d> surface_, after_, reference_x_;  // surface_: after the last step ("before" a boundary)
   std::vector<double> rms_, max_, weighted_, popping_, drift_, step_ms_, nodes_;
@@ -235,7 +240,8 @@ class FloorTrack {
  public:
   FloorTrack(const Suite& suite, std::size_t net_index, const std::shared_ptr<const Net>& net,
              const std::vector<FidelitySubjectSpec>& plan)
-      : suite_(suite), net_(net), world_(suite.world), body_(make_plain_softbody(world_, *net, suite.solver)) {
+      : suite_(suite), net_(net), world_(suite.world, suite.scene),
+        body_(make_plain_softbody(world_.info(), *net, suite.solver)), attachment_(world_.attach(*body_)) {
     perturb_positions(*body_, kNoiseFloorPerturbation * net->extent(), kNoiseFloorSeed + net_index);
     result.net = net_index;
     result.net_name = net->spec().name;
@@ -259,7 +265,7 @@ class FloorTrack {
     const GridSize fine{net_->width(), net_->height()};
     for (int s = first; s < last; ++s) {
       if (perturbed_alive_) {
-        step_soft_body(*body_, static_cast<btScalar>(suite_.world.dt));
+        world_.step(static_cast<btScalar>(suite_.world.dt));
         if (divergence_now(*body_, net_->extent())) {
           perturbed_alive_ = false;  // no floor rather than one over part of the steps
           noise_.clear();
@@ -290,8 +296,9 @@ class FloorTrack {
  private:
   const Suite& suite_;
   std::shared_ptr<const Net> net_;
-  SoftBodyWorld world_;
+  SceneWorld world_;
   std::unique_ptr<btSoftBody> body_;
+  SceneWorld::Attachment attachment_;  // after the body: leaves the world first
   bool perturbed_alive_ = true;
   std::vector<GridSize> grids_;
   std::vector<Eigen::Vector3d> reference_x_, x_, coarse_;

@@ -42,8 +42,10 @@ class OpCounter final : public OpSink {
 class TreeCutSubject final : public FidelitySubject {
  public:
   /// `morph`: show the geomorphed surface (SurfaceMorph); otherwise the committed cut's, which jumps.
-  TreeCutSubject(std::unique_ptr<TcSoftBody> body, std::unique_ptr<Controller> controller, int budget, bool morph)
-      : body_(std::move(body)), controller_(std::move(controller)), budget_(budget) {
+  TreeCutSubject(SceneWorld& world, std::unique_ptr<TcSoftBody> body, std::unique_ptr<Controller> controller,
+                 int budget, bool morph)
+      : world_(world), body_(std::move(body)), attachment_(world.attach(*body_)), controller_(std::move(controller)),
+        budget_(budget) {
     if (morph) morph_.emplace();
     body_->set_op_sink(&ops_);
   }
@@ -68,7 +70,7 @@ class TreeCutSubject final : public FidelitySubject {
     if (controller_) controller_->resume();
   }
   void simulate(btScalar dt) override {
-    body_->simulate_step(dt);
+    world_.step(dt);
     if (controller_) controller_->after_step(*body_);
   }
   void reconstruct(std::vector<Eigen::Vector3d>& leaves) override {
@@ -91,7 +93,9 @@ class TreeCutSubject final : public FidelitySubject {
   const btSoftBody& bullet() const override { return *body_; }
 
  private:
+  SceneWorld& world_;
   std::unique_ptr<TcSoftBody> body_;
+  SceneWorld::Attachment attachment_;  // after the body: leaves the world first
   std::unique_ptr<Controller> controller_;
   int budget_;
   std::optional<SurfaceMorph> morph_;
@@ -107,11 +111,11 @@ class TreeCutSubject final : public FidelitySubject {
 class UniformSubject final : public FidelitySubject {
  public:
   /// `solver`: the suite's, or with the calibration's stiffness for the budget.
-  UniformSubject(SoftBodyWorld& world, const SolverSettings& solver, std::shared_ptr<const Net> fine, int budget)
-      : fine_(std::move(fine)), coarse_(coarse_net_spec(fine_->spec(), budget)),
-        body_(make_plain_softbody(world, coarse_, solver)) {}
+  UniformSubject(SceneWorld& world, const SolverSettings& solver, std::shared_ptr<const Net> fine, int budget)
+      : world_(world), fine_(std::move(fine)), coarse_(coarse_net_spec(fine_->spec(), budget)),
+        body_(make_plain_softbody(world.info(), coarse_, solver)), attachment_(world.attach(*body_)) {}
   void boundary(int) override {}
-  void simulate(btScalar dt) override { step_soft_body(*body_, dt); }
+  void simulate(btScalar dt) override { world_.step(dt); }
   void reconstruct(std::vector<Eigen::Vector3d>& leaves) override {
     copy_positions(*body_, x_);
     leaves.resize(fine_->node_count());
@@ -122,9 +126,11 @@ class UniformSubject final : public FidelitySubject {
   std::string grid() const override { return grid_label(coarse_); }
 
  private:
+  SceneWorld& world_;
   std::shared_ptr<const Net> fine_;
   Net coarse_;
   std::unique_ptr<btSoftBody> body_;
+  SceneWorld::Attachment attachment_;  // after the body: leaves the world first
   std::vector<Eigen::Vector3d> x_, v_;
 };
 
@@ -134,10 +140,11 @@ class UniformSubject final : public FidelitySubject {
 /// body, and that is what switch_ms times.
 class SwitchSubject final : public FidelitySubject {
  public:
-  SwitchSubject(SoftBodyWorld& world, const Suite& suite, std::shared_ptr<const Net> fine, int budget,
+  SwitchSubject(SceneWorld& world, const Suite& suite, std::shared_ptr<const Net> fine, int budget,
                 const FidelitySubject* pace, int fallback_step)
       : world_(world), suite_(suite), fine_(std::move(fine)), coarse_(coarse_net_spec(fine_->spec(), budget)),
-        pace_(pace), fallback_step_(fallback_step), body_(make_plain_softbody(world, *fine_, suite.solver)) {}
+        pace_(pace), fallback_step_(fallback_step), body_(make_plain_softbody(world.info(), *fine_, suite.solver)),
+        attachment_(world.attach(*body_)) {}
   void boundary(int step) override {
     changed_ = false;
     if (switched_at_) return;
@@ -149,7 +156,7 @@ class SwitchSubject final : public FidelitySubject {
     }
     switched_at_ = step;
     const StepClock::time_point t0 = StepClock::now();
-    std::unique_ptr<btSoftBody> coarse = make_plain_softbody(world_, coarse_, suite_.solver);
+    std::unique_ptr<btSoftBody> coarse = make_plain_softbody(world_.info(), coarse_, suite_.solver);
     copy_positions(*body_, x_);
     copy_velocities(*body_, v_);
     cx_.resize(coarse_.node_count());
@@ -165,12 +172,14 @@ class SwitchSubject final : public FidelitySubject {
       n.m_v = to_bullet(u);
     }
     coarse->updateBounds();
+    attachment_.release();
     body_ = std::move(coarse);  // frees the fine body: part of what a switch costs
+    attachment_ = world_.attach(*body_);
     switch_ms_ = ms_between(t0, StepClock::now());
     changed_ = true;
   }
   bool surface_changed() const override { return changed_; }
-  void simulate(btScalar dt) override { step_soft_body(*body_, dt); }
+  void simulate(btScalar dt) override { world_.step(dt); }
   void reconstruct(std::vector<Eigen::Vector3d>& leaves) override {
     copy_positions(*body_, x_);
     if (!switched_at_) {
@@ -189,13 +198,14 @@ class SwitchSubject final : public FidelitySubject {
   std::optional<int> switch_step() const override { return switched_at_; }
 
  private:
-  SoftBodyWorld& world_;
+  SceneWorld& world_;
   const Suite& suite_;
   std::shared_ptr<const Net> fine_;
   Net coarse_;
   const FidelitySubject* pace_;
   int fallback_step_;
   std::unique_ptr<btSoftBody> body_;
+  SceneWorld::Attachment attachment_;  // after the body: leaves the world first
   std::optional<int> switched_at_;
   bool changed_ = false;
   double switch_ms_ = 0;
@@ -207,7 +217,7 @@ class SwitchSubject final : public FidelitySubject {
 int subject_budget(const Net& net, const FidelitySubjectSpec& spec) { return node_budget(net, spec.compression); }
 
 std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const FidelitySubjectSpec& spec,
-                                                       SoftBodyWorld& world, std::shared_ptr<const Net> net,
+                                                       SceneWorld& world, std::shared_ptr<const Net> net,
                                                        std::uint64_t seed, const FidelitySubject* pace,
                                                        int fallback_switch_step) {
   const int budget = subject_budget(*net, spec);
@@ -237,11 +247,11 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
       FeedbackSettings feedback = suite.feedback;
       if (spec.method == FidelityMethod::kTcsbRandom) feedback.policy = PolicyKind::kRandom;
       const bool compressed = budget < static_cast<int>(net->node_count());
-      auto body = std::make_unique<TcSoftBody>(world, std::move(net), suite.solver, tc);
+      auto body = std::make_unique<TcSoftBody>(world.info(), std::move(net), suite.solver, tc);
       std::unique_ptr<Controller> controller;
       if (compressed) controller = make_controller(feedback, budget, seed);
       const bool morph = spec.method != FidelityMethod::kTcsbNoGeomorph;
-      return std::make_unique<TreeCutSubject>(std::move(body), std::move(controller), budget, morph);
+      return std::make_unique<TreeCutSubject>(world, std::move(body), std::move(controller), budget, morph);
     }
   }
   return nullptr;

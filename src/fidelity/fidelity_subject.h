@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "net/net.h"
-#include "softbody/soft_body_world.h"
+#include "scene/scene_world.h"
 #include "suite/fidelity_plan.h"
 #include "suite/suite.h"
 
@@ -64,7 +64,7 @@ class FidelitySubject {
 /// both are coarse from the same step on (if TC-SB never fits its budget, the body never switches and says so with
 /// an empty switch_ms); without a pace, at the boundary of `fallback_switch_step`.
 std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const FidelitySubjectSpec& spec,
-                                                       SoftBodyWorld& world, std::shared_ptr<const Net> net,
+                                                       SceneWorld& world, std::shared_ptr<const Net> net,
                                                        std::uint64_t seed, const FidelitySubject* pace,
                                                        int fallback_switch_step);
 

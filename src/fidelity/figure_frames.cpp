@@ -54,7 +54,8 @@ FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, dou
   // one the pass measures (geomorphed, SurfaceMorph), boundary by boundary. The saliency controller draws no random
   // numbers (a random policy would draw from the suite's seed).
   const CaseKey plain_key{net_index, Method::kPlain, std::nullopt};
-  SoftBodyWorld plain_world(suite.world), tc_world(suite.world);  // one world per body: a body keeps its address
+  // One world per body: a body keeps its world's address, and each steps its own.
+  SceneWorld plain_world(suite.world, suite.scene), tc_world(suite.world, suite.scene);
   const std::unique_ptr<CaseBody> plain = make_case_body(suite, plain_key, plain_world, net, suite.seed);
   const FidelitySubjectSpec subject{calibrated ? FidelityMethod::kTcsbCalibrated : FidelityMethod::kTcsb, compression};
   const std::unique_ptr<FidelitySubject> tc =

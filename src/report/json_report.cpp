@@ -83,6 +83,16 @@ ojson suite_json(const Suite& s) {
   if (f.interface_charge > 0) out["feedback"]["interface_charge"] = json_number(f.interface_charge);
   if (f.interface_tension > 0) out["feedback"]["interface_tension"] = json_number(f.interface_tension);
   if (f.pin_level_pull > 0) out["feedback"]["pin_level_pull"] = json_number(f.pin_level_pull);
+  if (f.contact_saliency > 0) out["feedback"]["contact_saliency"] = json_number(f.contact_saliency);
+  // Only in a scene with colliders, like the penetrations of its repetitions.
+  if (s.scene.has_colliders()) {
+    ojson colliders = ojson::array();
+    for (const Collider& c : s.scene.colliders) colliders.push_back(collider_name(c));
+    out["scene"] = {{"colliders", std::move(colliders)},
+                    {"margin", json_number(s.scene.margin)},
+                    {"friction", json_number(s.scene.friction)},
+                    {"sdf_voxel", json_number(s.scene.sdf_voxel)}};
+  }
   // Optional: only a suite with axes has it, so the block of a suite without stays as it always was.
   if (!s.axes.empty()) {
     ojson axes = ojson::object();
@@ -103,7 +113,7 @@ ojson summary_json(const Summary& s) {
 }
 
 ojson repetition_json(const RepetitionResult& r) {
-  return {
+  ojson j = {
       {"repetition", r.repetition},
       {"status", r.status},
       {"diverged_step", json_integer(r.diverged_step)},
@@ -119,6 +129,10 @@ ojson repetition_json(const RepetitionResult& r) {
       {"final_state_hash", r.final_state_hash},
       {"build_ms", json_number(r.build_ms)},
   };
+  if (r.penetrations)  // scenes with colliders only: results of the paper's scene keep their bytes
+    j["penetrations"] = {{"node_steps", r.penetrations->node_steps},
+                         {"deepest_pct", json_number(r.penetrations->deepest_pct)}};
+  return j;
 }
 
 /// A case's configuration: its label and axis values (only in runs of a suite with axes).

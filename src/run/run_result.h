@@ -38,6 +38,14 @@ struct StepBreakdown {
 };
 
 /// One repetition of one case: a fresh body, warm-up, then timed steps.
+/// Contact correctness of one repetition in a scene with colliders: nodes found inside a collider, deeper than the
+/// contact margin, after a step (warm-up and timed steps alike). Bullet holds a node in contact at the margin; a node
+/// deeper than that is one no contact held, and a body that falls through a collider is a defect.
+struct Penetrations {
+  std::int64_t node_steps = 0;  ///< over every step: nodes deeper than the margin, summed
+  double deepest_pct = 0;       ///< the deepest any node got, % of the net's extent (0 when none penetrated)
+};
+
 struct RepetitionResult {
   int repetition = 0;
   std::string status = "ok";         ///< "ok" or "diverged"
@@ -47,10 +55,11 @@ struct RepetitionResult {
   double mean_step_ms = 0, median_step_ms = 0;
   double mean_nodes = 0, mean_links = 0, mean_interpolations = 0;
   double mean_feedback_ms = 0, mean_feedback_total_ms = 0;
-  StepBreakdown breakdown;       ///< means over the timed steps
-  std::int64_t operations = 0;   ///< operations begun or ended during timed steps
-  std::string final_state_hash;  ///< FNV-1a of node count and final positions: deterministic, gateable
-  double build_ms = 0;           ///< building the body (not part of step times)
+  StepBreakdown breakdown;                   ///< means over the timed steps
+  std::int64_t operations = 0;               ///< operations begun or ended during timed steps
+  std::string final_state_hash;              ///< FNV-1a of node count and final positions: deterministic, gateable
+  double build_ms = 0;                       ///< building the body (not part of step times)
+  std::optional<Penetrations> penetrations;  ///< in scenes with colliders only
 };
 
 /// Operation costs of one case (TC-SB only), from timed steps.

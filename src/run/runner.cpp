@@ -47,7 +47,7 @@ struct Divergence {
 /// feedback.max_step_ms, makes runs differ), what the run found stands.
 Divergence first_divergence(const Suite& suite, const CaseKey& key, const std::shared_ptr<const Net>& net,
                             std::uint64_t seed, int clean, Divergence found) {
-  SoftBodyWorld world(suite.world);
+  SceneWorld world(suite.world, suite.scene);
   std::unique_ptr<CaseBody> body = make_case_body(suite, key, world, net, seed);
   const btScalar dt = static_cast<btScalar>(suite.world.dt);
   for (int s = 0; s < found.step; ++s) {
@@ -86,8 +86,9 @@ class RepetitionRun {
  public:
   RepetitionRun(const Suite& suite, const CaseKey& key, int repetition, std::shared_ptr<const Net> net,
                 std::uint64_t seed, std::vector<OpSample>& op_samples)
-      : suite_(suite), key_(key), net_(std::move(net)), seed_(seed), world_(suite.world), op_samples_(op_samples),
-        recorder_(op_samples), total_(static_cast<int>(steps_per_repetition(suite))), ops_before_(op_samples.size()) {
+      : suite_(suite), key_(key), net_(std::move(net)), seed_(seed), world_(suite.world, suite.scene),
+        op_samples_(op_samples), recorder_(op_samples), total_(static_cast<int>(steps_per_repetition(suite))),
+        ops_before_(op_samples.size()) {
     rep_.repetition = repetition;
     const StepClock::time_point built0 = StepClock::now();
     body_ = make_case_body(suite, key, world_, net_, seed);
@@ -162,6 +163,7 @@ class RepetitionRun {
       series.feedback_total_ms.push_back(cost.total_ms);
       add_step_breakdown(series.step_ms.back(), body_->phases(), op_samples_, ops_at_step, sum_);
     }
+    if (world_.scene().has_colliders()) count_penetrations(b);  // untimed
     const int s = step_++;
     const std::optional<std::string> diverged = divergence_after_step(b, net_->extent(), s, total_);  // untimed
     if (diverged) {
@@ -174,11 +176,21 @@ class RepetitionRun {
     }
   }
 
+  void count_penetrations(const btSoftBody& b) {
+    Penetrations& p = rep_.penetrations ? *rep_.penetrations : rep_.penetrations.emplace();
+    for (int i = 0; i < b.m_nodes.size(); ++i) {
+      const double depth = world_.penetration(b.m_nodes[i].m_x);
+      if (!world_.penetrated(depth)) continue;
+      ++p.node_steps;
+      p.deepest_pct = std::max(p.deepest_pct, 100.0 * depth / net_->extent());
+    }
+  }
+
   const Suite& suite_;
   CaseKey key_;
   std::shared_ptr<const Net> net_;
   std::uint64_t seed_;
-  SoftBodyWorld world_;
+  SceneWorld world_;
   std::vector<OpSample>& op_samples_;
   OpRecorder recorder_;
   std::unique_ptr<CaseBody> body_;

@@ -8,22 +8,24 @@
 
 namespace tcsb {
 
-std::unique_ptr<btSoftBody> make_plain_softbody(SoftBodyWorld& world, const Net& net, const SolverSettings& settings) {
-  auto body = std::make_unique<btSoftBody>(&world.info, 0, nullptr, nullptr);
+std::unique_ptr<btSoftBody> make_plain_softbody(btSoftBodyWorldInfo& world, const Net& net,
+                                                const SolverSettings& settings) {
+  auto body = std::make_unique<btSoftBody>(&world, 0, nullptr, nullptr);
   init_net_nodes(*body, net);
   apply_solver_settings(*body, settings);
   append_net_links(*body, net);
   return body;
 }
 
-std::unique_ptr<btSoftBody> make_bullet_patch(SoftBodyWorld& world, const Net& net, const SolverSettings& settings) {
+std::unique_ptr<btSoftBody> make_bullet_patch(btSoftBodyWorldInfo& world, const Net& net,
+                                              const SolverSettings& settings) {
   const NetSpec& s = net.spec();
   if (s.shear_links || s.bend_links)
     throw std::invalid_argument("bullet_patch: CreatePatch makes structural links only");
   const btScalar hx = static_cast<btScalar>(0.5 * s.size_x), hz = static_cast<btScalar>(0.5 * s.size_z);
   const btScalar y = static_cast<btScalar>(s.elevation);
   std::unique_ptr<btSoftBody> body(btSoftBodyHelpers::CreatePatch(
-      world.info, btVector3(-hx, y, -hz), btVector3(hx, y, -hz), btVector3(-hx, y, hz), btVector3(hx, y, hz), s.width,
+      world, btVector3(-hx, y, -hz), btVector3(hx, y, -hz), btVector3(-hx, y, hz), btVector3(hx, y, hz), s.width,
       s.height, static_cast<int>(s.pinned_corners), /*gendiags=*/false));
   apply_solver_settings(*body, settings);
   // The paper's mass-spring model has nodes and links only, and so do the plain baseline and TC-SB; CreatePatch's

@@ -6,18 +6,20 @@
 #include <memory>
 
 #include "net/net.h"
-#include "softbody/soft_body_world.h"
+#include "softbody/solver_settings.h"
 
 namespace tcsb {
 
 /// Stock btSoftBody whose nodes and links are exactly the net's finest level, in the net's canonical link order
 /// (row-major; for each node its +x link then its +z link — CreatePatch's order). No faces: the paper's model needs
 /// only nodes and links, and TC-SB has none either.
-std::unique_ptr<btSoftBody> make_plain_softbody(SoftBodyWorld& world, const Net& net, const SolverSettings& settings);
+std::unique_ptr<btSoftBody> make_plain_softbody(btSoftBodyWorldInfo& world, const Net& net,
+                                                const SolverSettings& settings);
 
 /// Stock btSoftBodyHelpers::CreatePatch of the same grid, corners and total mass, with the same solver settings and
 /// its faces dropped (no compared body has faces). Used only to show the plain baseline is not handicapped. The net
 /// must have structural links only (CreatePatch makes no shear or bend links).
-std::unique_ptr<btSoftBody> make_bullet_patch(SoftBodyWorld& world, const Net& net, const SolverSettings& settings);
+std::unique_ptr<btSoftBody> make_bullet_patch(btSoftBodyWorldInfo& world, const Net& net,
+                                              const SolverSettings& settings);
 
 }  // namespace tcsb

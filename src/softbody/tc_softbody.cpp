@@ -2,7 +2,6 @@
 #include "softbody/tc_softbody.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 #include <stdexcept>
 
@@ -25,9 +24,9 @@ void touch_reserved(Array& array, const T& fill) {
 
 }  // namespace
 
-TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, const SolverSettings& solver,
+TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> net, const SolverSettings& solver,
                        const TcSettings& settings)
-    : btSoftBody(&world.info, 0, nullptr, nullptr), net_(std::move(net)), settings_(settings) {
+    : btSoftBody(&world, 0, nullptr, nullptr), net_(std::move(net)), settings_(settings) {
   if (settings_.blend_steps < 1) throw std::invalid_argument("TcSoftBody: blend_steps must be >= 1");
   for (const NetLink& l : net_->links())
     if (l.kind != LinkKind::kStructural)
@@ -91,15 +90,7 @@ TcSoftBody::TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, con
   touch_reserved(link_meta_, CutLink{});
 }
 
-void TcSoftBody::simulate_step(btScalar dt) {
-  step_soft_body(*this, dt);
-#if TCSB_INJECT_STEP_DELAY_US > 0
-  // Gate self-test builds only (CMake option TCSB_INJECT_STEP_DELAY_US): a real, measurable slowdown.
-  const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(TCSB_INJECT_STEP_DELAY_US);
-  while (std::chrono::steady_clock::now() < until) {
-  }
-#endif
-}
+void TcSoftBody::simulate_step(btScalar dt) { step_soft_body(*this, dt); }
 
 int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, TreeId beside) {
   const bool pinned = tree().node(id).pinned();

@@ -33,7 +33,6 @@
 #include "softbody/dbvt_local.h"
 #include "softbody/incidence_list.h"
 #include "softbody/op_sample.h"
-#include "softbody/soft_body_world.h"
 #include "softbody/solver_settings.h"
 #include "softbody/tc_settings.h"
 
@@ -84,8 +83,10 @@ struct Validation {
 
 class TcSoftBody : public btSoftBody {
  public:
-  /// Builds the body at the finest cut (every grid node simulated), identical to the plain baseline.
-  TcSoftBody(SoftBodyWorld& world, std::shared_ptr<const Net> net, const SolverSettings& solver,
+  /// Builds the body at the finest cut (every grid node simulated), identical to the plain baseline. `world` is the
+  /// info of the world the body will live in — btSoftRigidDynamicsWorld::getWorldInfo() for a body in a collision
+  /// world, or an info of its own for a body stepped solo —, and must outlive the body.
+  TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> net, const SolverSettings& solver,
              const TcSettings& settings);
 
   // ---- queries -----------------------------------------------------------------------------------------------
@@ -136,7 +137,8 @@ class TcSoftBody : public btSoftBody {
   /// displacement: O(1) at any fixed compression, 4.4 N at 30 %). On bodies that shrank by
   /// TcSettings::kDbvtRebuildShrink since their node DBVT was built it rebuilds that tree too (rebuild_node_dbvt()).
   void advance_blends();
-  /// One Bullet step, exactly as the plain baseline steps.
+  /// One solo Bullet step (predictMotion, solveConstraints, integrateMotion), exactly as a plain body outside any
+  /// collision world steps. A body in a btSoftRigidDynamicsWorld is stepped by the world's stepSimulation instead.
   void simulate_step(btScalar dt);
   /// Receives every operation's timing (may be null).
   void set_op_sink(OpSink* sink) { sink_ = sink; }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 
@@ -85,7 +86,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     const Object fb(r, *j, "feedback",
                     {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale",
                      "illumination", "light_direction", "parallel", "threads", "max_step_ms", "popping_charge",
-                     "interface_charge", "interface_tension", "pin_level_pull"});
+                     "interface_charge", "interface_tension", "pin_level_pull", "contact_saliency"});
     FeedbackSettings& f = s.feedback;
     for (const char* key :
          {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale", "illumination"})
@@ -101,6 +102,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     read_axis_setting(r, fb, "interface_charge", s);
     read_axis_setting(r, fb, "interface_tension", s);
     read_axis_setting(r, fb, "pin_level_pull", s);
+    fb.read("contact_saliency", f.contact_saliency, Interval{0.0, false, 1.0, false});
   }
 
   if (const json* j = root.find("fidelity")) {
@@ -119,6 +121,70 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
       if (s.fidelity.calibration_path.empty()) r.fail(fi.at("calibration"), "must name a file");
     }
   }
+}
+
+std::array<double, 3> read_vector(const Reader& r, const Object& o, const char* key, const Interval& range,
+                                  std::array<double, 3> fallback) {
+  const json* j = o.find(key);
+  return j ? r.numbers<3>(*j, o.at(key), range) : fallback;
+}
+
+Collider parse_collider(const Reader& r, const json& j, const std::string& path) {
+  const Object o(r, j, path,
+                 {"shape", "motion", "position", "radius", "half_extents", "normal", "velocity", "mass", "friction"});
+  Collider c;
+  c.shape = r.choice<ColliderShape>(
+      o.need("shape"), o.at("shape"),
+      {{"sphere", ColliderShape::kSphere}, {"box", ColliderShape::kBox}, {"plane", ColliderShape::kPlane}});
+  o.read("motion", c.motion,
+         {{"static", ColliderMotion::kStatic},
+          {"kinematic", ColliderMotion::kKinematic},
+          {"dynamic", ColliderMotion::kDynamic}});
+  c.position = read_vector(r, o, "position", kAnyFinite, c.position);
+  // Each shape takes its own size and nothing else's, so a misplaced key is an error, not silently ignored.
+  const auto only_for = [&](const char* key, ColliderShape shape, const char* shape_name) {
+    if (o.find(key) && c.shape != shape) r.fail(o.at(key), std::string("only for a ") + shape_name);
+  };
+  only_for("radius", ColliderShape::kSphere, "sphere");
+  only_for("half_extents", ColliderShape::kBox, "box");
+  only_for("normal", ColliderShape::kPlane, "plane");
+  o.read("radius", c.radius, kPositive);
+  c.half_extents = read_vector(r, o, "half_extents", kPositive, c.half_extents);
+  if (const json* n = o.find("normal")) {
+    const std::array<double, 3> v = r.numbers<3>(*n, o.at("normal"), kAnyFinite);
+    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(length > 0)) r.fail(o.at("normal"), "must not be the zero vector");
+    c.normal = {v[0] / length, v[1] / length, v[2] / length};
+  }
+  if (c.shape == ColliderShape::kPlane && c.motion == ColliderMotion::kDynamic)
+    r.fail(o.at("motion"), "a plane cannot be dynamic (it has no finite mass)");
+  if (o.find("velocity") && c.motion == ColliderMotion::kStatic)
+    r.fail(o.at("velocity"), "a static collider has no velocity");
+  c.velocity = read_vector(r, o, "velocity", kAnyFinite, c.velocity);
+  if (o.find("mass") && c.motion != ColliderMotion::kDynamic) r.fail(o.at("mass"), "only for a dynamic collider");
+  o.read("mass", c.mass, kPositive);
+  o.read("friction", c.friction, Interval{0.0, false, 1.0, false});
+  return c;
+}
+
+SceneSettings parse_scene(const Reader& r, const json& j) {
+  const Object o(r, j, "scene", {"colliders", "margin", "friction", "sdf_voxel"});
+  SceneSettings scene;
+  if (const json* colliders = o.find("colliders")) {
+    r.array(*colliders, o.at("colliders"), true);
+    // Each collider is a rigid body in every case's world: a cap keeps a typo from building millions of them.
+    constexpr std::size_t kMaxColliders = 64;
+    if (colliders->size() > kMaxColliders)
+      r.fail(o.at("colliders"),
+             "at most " + std::to_string(kMaxColliders) + " colliders, got " + std::to_string(colliders->size()));
+    for (std::size_t i = 0; i < colliders->size(); ++i)
+      scene.colliders.push_back(parse_collider(r, (*colliders)[i], index_path(o.at("colliders"), i)));
+  }
+  o.read("margin", scene.margin, kPositive);
+  o.read("friction", scene.friction, Interval{0.0, false, 1.0, false});
+  // A voxel below a millimetre would make the SDF's cells (and their memory, clamped by Bullet) explode for nothing.
+  o.read("sdf_voxel", scene.sdf_voxel, Interval{0.001, false, 10.0, false});
+  return scene;
 }
 
 void check_memory(const Suite& suite, const Reader& r) {
@@ -165,7 +231,8 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
   const Object root(r, doc, "",
                     {"name", "description", "nets", "methods", "compression", "dt", "gravity", "steps", "warmup_steps",
-                     "repetitions", "interleave_steps", "seed", "solver", "tcsb", "feedback", "fidelity", "axes"});
+                     "repetitions", "interleave_steps", "seed", "solver", "tcsb", "feedback", "fidelity", "axes",
+                     "scene"});
   Suite s;
   s.path = file;
   s.sha256 = sha256_hex(text);
@@ -226,6 +293,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   root.read("interleave_steps", s.interleave_steps, 0, INT_MAX);
   read_axis_setting(r, root, "seed", s, true);
   parse_settings(r, root, s);
+  if (const json* scene = root.find("scene")) s.scene = parse_scene(r, *scene);
   if (const json* axes = root.find("axes")) parse_axes(r, *axes, s);
   // The tension only weighs the interface charge, and the pull acts through the tension: without what it needs (set,
   // or varied by an axis) each would do nothing.

@@ -14,6 +14,7 @@
 #include "base/input_error.h"
 #include "feedback/feedback_settings.h"
 #include "net/net_spec.h"
+#include "scene/scene_settings.h"
 #include "softbody/solver_settings.h"
 #include "softbody/tc_settings.h"
 #include "suite/calibration_file.h"
@@ -72,6 +73,8 @@ struct Suite {
   /// TC-SB (and plain_equal) node budgets as fractions of the initial count; 1.0 = none.
   std::vector<double> compression;
   WorldSettings world;
+  /// What surrounds the cloth (the suite's "scene" block): no colliders without one, the paper's scene.
+  SceneSettings scene;
   int steps = 300;        ///< timed steps per repetition
   int warmup_steps = 30;  ///< untimed steps before them
   int repetitions = 5;

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "feedback/evaluator.h"
+#include "scene/scene_world.h"
 #include "softbody/tc_softbody.h"
 #include "softbody/vector_conversion.h"
 
@@ -18,7 +19,7 @@ namespace {
 /// maps their rest positions.
 struct ShapedCut {
   std::shared_ptr<const Net> net;
-  SoftBodyWorld world{WorldSettings{}};
+  SceneWorld world{WorldSettings{}};
   std::unique_ptr<TcSoftBody> body;
   CutSnapshot snapshot;
   CutNeighbours neighbours;
@@ -28,7 +29,7 @@ struct ShapedCut {
     spec.width = spec.height = 17;
     spec.pinned_corners = 0;
     net = std::make_shared<const Net>(spec);
-    body = std::make_unique<TcSoftBody>(world, net, SolverSettings{}, TcSettings{});
+    body = std::make_unique<TcSoftBody>(world.info(), net, SolverSettings{}, TcSettings{});
     if (!level1) return;
     const LodTree& tree = body->tree();
     for (bool began = true; began;) {  // rounds: a block cannot coarsen while its neighbour blends

@@ -8,6 +8,7 @@
 #include "feedback/budget_policy.h"
 #include "feedback/saliency_controller.h"
 #include "fixed_field.h"
+#include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 
 namespace tcsb {
@@ -62,10 +63,10 @@ struct Trace {
 /// between its blocks.
 Trace run_swinging(const FeedbackSettings& settings, int steps, int pause_every = 0) {
   const auto net = net_of(33);
-  SoftBodyWorld world({});
+  SceneWorld world({});
   SolverSettings solver;
   solver.piterations = 2;
-  TcSoftBody body(world, net, solver, {});
+  TcSoftBody body(world.info(), net, solver, {});
   SaliencyController controller(settings, 400);
   Trace t;
   for (int s = 0; s < steps; ++s) {
@@ -120,8 +121,8 @@ TEST(SaliencyController, ATimeBudgetLowersTheNodeBudget) {
   FeedbackSettings settings;
   settings.max_step_ms = 1e-6;
   const auto net = net_of(17);
-  SoftBodyWorld world({});
-  TcSoftBody body(world, net, {}, {});
+  SceneWorld world({});
+  TcSoftBody body(world.info(), net, {}, {});
   SaliencyController controller(settings, 250);
   for (int s = 0; s < 60; ++s) {
     body.advance_blends();
@@ -141,8 +142,8 @@ TEST(SaliencyController, ATimeBudgetDoesNotCountAPauseAsAStep) {
   FeedbackSettings settings;
   settings.max_step_ms = 20;
   const auto net = net_of(17);
-  SoftBodyWorld world({});
-  TcSoftBody body(world, net, {}, {});
+  SceneWorld world({});
+  TcSoftBody body(world.info(), net, {}, {});
   SaliencyController controller(settings, 250);
   const auto step = [&] {
     body.advance_blends();

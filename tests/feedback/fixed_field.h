@@ -8,19 +8,21 @@
 
 #include "feedback/budget_policy.h"
 #include "feedback/pin_tension.h"
+#include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 
 namespace tcsb::testing {
 
 /// A TC-SB body of `net` with default settings, in a world without gravity: it moves only as operations move it.
 struct StillBody {
-  explicit StillBody(std::shared_ptr<const Net> net) : world(without_gravity()), body(world, std::move(net), {}, {}) {}
+  explicit StillBody(std::shared_ptr<const Net> net)
+      : world(without_gravity()), body(world.info(), std::move(net), {}, {}) {}
   static WorldSettings without_gravity() {
     WorldSettings settings;
     settings.gravity = 0;
     return settings;
   }
-  SoftBodyWorld world;
+  SceneWorld world;
   TcSoftBody body;
 };
 

@@ -10,6 +10,7 @@
 #include "feedback/evaluator.h"
 #include "feedback/saliency_controller.h"
 #include "fixed_field.h"
+#include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 
 namespace tcsb {
@@ -32,8 +33,8 @@ using testing::level_boundary_links;
 
 TEST(InterfaceBalance, CountsNeighboursAtTheSameLevelOrCoarserAgainstFinerOnes) {
   const auto net = unpinned_net(17);
-  SoftBodyWorld world(WorldSettings{});
-  TcSoftBody body(world, net, {}, {});
+  SceneWorld world(WorldSettings{});
+  TcSoftBody body(world.info(), net, {}, {});
   const LodTree& tree = body.tree();
   // All leaves: every level-1 neighbour is finer than level 1; a block on the border has one neighbour fewer.
   EXPECT_EQ(neighbour_balance(cut_view(body), tree.at(1, 3, 3)), -4);
@@ -58,8 +59,8 @@ TEST(InterfaceBalance, CountsNeighboursAtTheSameLevelOrCoarserAgainstFinerOnes) 
 
 TEST(InterfaceBalance, TheChargeCoarsensNextToCoarseBlocksFirst) {
   const auto net = unpinned_net(17);
-  SoftBodyWorld world(WorldSettings{});
-  TcSoftBody body(world, net, {}, {});
+  SceneWorld world(WorldSettings{});
+  TcSoftBody body(world.info(), net, {}, {});
   const LodTree& tree = body.tree();
   coarsen_now(body, tree.at(1, 3, 3));
   CutSnapshot snapshot;
@@ -119,8 +120,8 @@ int boundaries_of_the_controllers_cut(double interface_charge) {
   NetSpec spec;
   spec.width = spec.height = 33;
   const auto net = std::make_shared<const Net>(spec);
-  SoftBodyWorld world({});
-  TcSoftBody body(world, net, {}, {});
+  SceneWorld world({});
+  TcSoftBody body(world.info(), net, {}, {});
   FeedbackSettings settings;
   settings.threshold = 0.3;
   settings.interface_charge = interface_charge;

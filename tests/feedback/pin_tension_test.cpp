@@ -10,6 +10,7 @@
 #include "feedback/interface_balance.h"
 #include "feedback/saliency_controller.h"
 #include "fixed_field.h"
+#include "scene/scene_world.h"
 
 namespace tcsb {
 namespace {
@@ -77,8 +78,8 @@ TEST(PinTension, ABlockWeighsAsItsLeafNearestToAPin) {
 /// A 17 x 17 TC-SB body at its finest cut, pinned at grid (0, 0), and its tree's weights at tension 0.5.
 struct PinnedCorner17 {
   std::shared_ptr<const Net> net = net_of(17, 17, kCornerMinMin);
-  SoftBodyWorld world{WorldSettings{}};
-  TcSoftBody body{world, net, {}, {}};
+  SceneWorld world{WorldSettings{}};
+  TcSoftBody body{world.info(), net, {}, {}};
   std::vector<float> weight = interface_weights(body.tree(), 0.5);
 };
 
@@ -100,14 +101,14 @@ TEST(PinTension, ABoundaryNearAPinWeighsMore) {
 /// charge 3 and the given pin tension and pull, at `share` of its nodes.
 struct ControlledCut {
   std::shared_ptr<const Net> net;
-  SoftBodyWorld world{WorldSettings{}};
+  SceneWorld world{WorldSettings{}};
   std::unique_ptr<TcSoftBody> body;
 
   ControlledCut(double tension, double pull, double share) {
     NetSpec spec;
     spec.width = spec.height = 33;
     net = std::make_shared<const Net>(spec);
-    body = std::make_unique<TcSoftBody>(world, net, SolverSettings{}, TcSettings{});
+    body = std::make_unique<TcSoftBody>(world.info(), net, SolverSettings{}, TcSettings{});
     FeedbackSettings settings;
     settings.threshold = 0.3;
     settings.interface_charge = 3;

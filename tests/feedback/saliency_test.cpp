@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "feedback/evaluator.h"
+#include "scene/scene_world.h"
 #include "softbody/plain_softbody.h"
 
 namespace tcsb {
@@ -11,7 +12,7 @@ namespace {
 /// A 9x9 plain body's snapshot with a velocity field given per grid node.
 struct Field {
   std::shared_ptr<const Net> net;
-  SoftBodyWorld world{WorldSettings{}};
+  SceneWorld world{WorldSettings{}};
   std::unique_ptr<btSoftBody> body;
   std::unique_ptr<FinestCut> cut;
   CutSnapshot snapshot;
@@ -20,7 +21,7 @@ struct Field {
     NetSpec spec;
     spec.width = spec.height = width;
     net = std::make_shared<const Net>(spec);
-    body = make_plain_softbody(world, *net, {});
+    body = make_plain_softbody(world.info(), *net, {});
     cut = std::make_unique<FinestCut>(*net);
   }
   void set(int i, btVector3 v) { body->m_nodes[i].m_v = v; }

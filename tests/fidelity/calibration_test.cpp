@@ -10,6 +10,7 @@
 #include "fidelity/fidelity_runner.h"
 #include "fidelity/figure_frames.h"
 #include "paper/fidelity_tables.h"
+#include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 #include "suite/fidelity_plan.h"
 
@@ -103,8 +104,8 @@ TEST(Calibration, CoarsenToLevelMakesTheWholeCutThatLevel) {
   NetSpec spec;
   spec.width = spec.height = 17;
   const auto net = std::make_shared<const Net>(spec);
-  SoftBodyWorld world({});
-  TcSoftBody body(world, net, SolverSettings{}, TcSettings{});
+  SceneWorld world({});
+  TcSoftBody body(world.info(), net, SolverSettings{}, TcSettings{});
   EXPECT_EQ(coarsen_to_level(body, 1), 9 * 9);
   EXPECT_EQ(body.interpolations(), 0);
   EXPECT_EQ(body.node_count(), 9 * 9);

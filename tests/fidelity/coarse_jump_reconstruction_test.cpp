@@ -7,6 +7,7 @@
 #include "feedback/coarse_jump.h"
 #include "fidelity/calibration.h"
 #include "fidelity/reconstruction.h"
+#include "scene/scene_world.h"
 #include "softbody/vector_conversion.h"
 
 namespace tcsb {
@@ -27,8 +28,8 @@ TEST(CoarseJump, IsTheJumpTheReconstructionMakesWhenTheCoarsenBegins) {
     NetSpec spec;
     spec.width = spec.height = 17;
     const auto net = std::make_shared<const Net>(spec);
-    SoftBodyWorld world{WorldSettings{}};
-    TcSoftBody body(world, net, SolverSettings{}, TcSettings{});
+    SceneWorld world{WorldSettings{}};
+    TcSoftBody body(world.info(), net, SolverSettings{}, TcSettings{});
     coarsen_to_level(body, level - 1);
     for (int i = 0; i < body.node_count(); ++i) {  // a saddle, tilted
       const Eigen::Vector3d r = body.tree().rest(body.tree_id(i));

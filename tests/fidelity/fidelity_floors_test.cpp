@@ -8,6 +8,7 @@
 
 #include "analysis/fidelity_metrics.h"
 #include "fidelity/reconstruction.h"
+#include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/plain_softbody.h"
 
@@ -28,9 +29,9 @@ std::vector<Eigen::Vector3d> positions(const btSoftBody& body) {
 
 TEST(PerturbPositions, ZeroAmplitudeLeavesTheBodyBitForBitAndSoItsTrajectory) {
   const Net net = small_net();
-  SoftBodyWorld world_a{WorldSettings{}}, world_b{WorldSettings{}};
-  auto a = make_plain_softbody(world_a, net, SolverSettings{});
-  auto b = make_plain_softbody(world_b, net, SolverSettings{});
+  SceneWorld world_a{WorldSettings{}}, world_b{WorldSettings{}};
+  auto a = make_plain_softbody(world_a.info(), net, SolverSettings{});
+  auto b = make_plain_softbody(world_b.info(), net, SolverSettings{});
   perturb_positions(*b, 0.0, 7);
   for (int s = 0; s < 50; ++s) {
     step_soft_body(*a, btScalar(1.0 / 60));
@@ -44,11 +45,11 @@ TEST(PerturbPositions, ZeroAmplitudeLeavesTheBodyBitForBitAndSoItsTrajectory) {
 
 TEST(PerturbPositions, MovesEveryNodeWithinTheAmplitudeTheSameWayForTheSameSeed) {
   const Net net = small_net();
-  SoftBodyWorld world{WorldSettings{}};
-  auto rest = make_plain_softbody(world, net, SolverSettings{});
-  auto a = make_plain_softbody(world, net, SolverSettings{});
-  auto b = make_plain_softbody(world, net, SolverSettings{});
-  auto c = make_plain_softbody(world, net, SolverSettings{});
+  SceneWorld world{WorldSettings{}};
+  auto rest = make_plain_softbody(world.info(), net, SolverSettings{});
+  auto a = make_plain_softbody(world.info(), net, SolverSettings{});
+  auto b = make_plain_softbody(world.info(), net, SolverSettings{});
+  auto c = make_plain_softbody(world.info(), net, SolverSettings{});
   const double amplitude = 1e-3;
   perturb_positions(*a, amplitude, 1);
   perturb_positions(*b, amplitude, 1);

@@ -13,6 +13,7 @@
 #include "softbody/plain_softbody.h"
 
 #include "../softbody/test_bodies.h"
+#include "scene/scene_world.h"
 
 namespace tcsb {
 namespace {
@@ -56,9 +57,9 @@ void deform_affinely(TcSoftBody& body) {
 
 TEST(Reconstruction, FinestCutEqualsThePlainBodyExactly) {
   const auto net = square_net(33);
-  SoftBodyWorld world(world_settings(9.81));
-  TcSoftBody tc(world, net, test_solver(), {});
-  auto plain = make_plain_softbody(world, *net, test_solver());
+  SceneWorld world(world_settings(9.81));
+  TcSoftBody tc(world.info(), net, test_solver(), {});
+  auto plain = make_plain_softbody(world.info(), *net, test_solver());
   for (int s = 0; s < 60; ++s) {
     tc.advance_blends();
     tc.simulate_step(kDt);
@@ -74,8 +75,8 @@ TEST(Reconstruction, FinestCutEqualsThePlainBodyExactly) {
 
 TEST(Reconstruction, LeavesInTheCutMapToThemselvesExactly) {
   const auto net = square_net(33);
-  SoftBodyWorld world(world_settings(9.81));
-  TcSoftBody tc(world, net, test_solver(), {});
+  SceneWorld world(world_settings(9.81));
+  TcSoftBody tc(world.info(), net, test_solver(), {});
   RandomPolicy policy(5);
   for (int s = 0; s < 80; ++s) {
     tc.advance_blends();
@@ -98,10 +99,10 @@ TEST(Reconstruction, LeavesInTheCutMapToThemselvesExactly) {
 TEST(Reconstruction, ReproducesAnAffineFieldFromAnyCutWhateverThePlacement) {
   for (const Placement placement : {Placement::kAffine, Placement::kRigid}) {
     const auto net = square_net(33);
-    SoftBodyWorld world(world_settings(0.0));
+    SceneWorld world(world_settings(0.0));
     TcSettings settings;
     settings.placement = placement;
-    TcSoftBody tc(world, net, test_solver(), settings);
+    TcSoftBody tc(world.info(), net, test_solver(), settings);
     coarsen_to(tc, 33 * 33 / 4, 11);
     ASSERT_LT(tc.committed_count(), 33 * 33 / 3);
     deform_affinely(tc);
@@ -116,8 +117,8 @@ TEST(Reconstruction, ReproducesAnAffineFieldFromAnyCutWhateverThePlacement) {
 
 TEST(Reconstruction, CoversTheNetWhileOperationsBlend) {
   const auto net = square_net(17);
-  SoftBodyWorld world(world_settings(0.0));
-  TcSoftBody tc(world, net, test_solver(), {});
+  SceneWorld world(world_settings(0.0));
+  TcSoftBody tc(world.info(), net, test_solver(), {});
   coarsen_to(tc, 17 * 17 / 3, 3);
   RandomPolicy policy(8);
   tc.advance_blends();
@@ -151,10 +152,10 @@ double popping_over_operations(TcSoftBody& tc, int boundaries, int target) {
 TEST(Popping, IsZeroForOperationsOnANetAtRest) {
   for (const Placement placement : {Placement::kAffine, Placement::kRigid}) {
     const auto net = square_net(33);
-    SoftBodyWorld world(world_settings(0.0));
+    SceneWorld world(world_settings(0.0));
     TcSettings settings;
     settings.placement = placement;
-    TcSoftBody tc(world, net, test_solver(), settings);
+    TcSoftBody tc(world.info(), net, test_solver(), settings);
     // Down to a quarter and back up to three quarters: coarse, refine and both end operations.
     EXPECT_LT(popping_over_operations(tc, 60, 33 * 33 / 4), 1e-5);
     EXPECT_LT(popping_over_operations(tc, 60, 3 * 33 * 33 / 4), 1e-5);
@@ -166,10 +167,10 @@ TEST(Popping, AffinePlacementDoesNotPopOnAnAffineFieldButRigidPlacementDoes) {
   for (const Placement placement : {Placement::kAffine, Placement::kRigid}) {
     // No pins: an affine map that kept four pinned corners in place would be the identity.
     const auto net = square_net(33, 0);
-    SoftBodyWorld world(world_settings(0.0));
+    SceneWorld world(world_settings(0.0));
     TcSettings settings;
     settings.placement = placement;
-    TcSoftBody tc(world, net, test_solver(), settings);
+    TcSoftBody tc(world.info(), net, test_solver(), settings);
     coarsen_to(tc, 33 * 33 / 4, 23);
     deform_affinely(tc);
     jump[placement == Placement::kRigid] = popping_over_operations(tc, 40, 3 * 33 * 33 / 4);  // refines
@@ -180,8 +181,8 @@ TEST(Popping, AffinePlacementDoesNotPopOnAnAffineFieldButRigidPlacementDoes) {
 
 TEST(Popping, CoarseningATwistedBlockJumpsByItsTwist) {
   const auto net = square_net(17);
-  SoftBodyWorld world(world_settings(0.0));
-  TcSoftBody tc(world, net, test_solver(), {});
+  SceneWorld world(world_settings(0.0));
+  TcSoftBody tc(world.info(), net, test_solver(), {});
   // A saddle, y = 8 - 0.3 x z: inside a 2x2 block its twist is not affine (a bowl's curvature would be: the
   // block's four nodes sit at the same distance from its centre, so a bowl only shifts them all alike).
   for (int i = 0; i < tc.node_count(); ++i) {

@@ -14,6 +14,7 @@
 #include "softbody/bullet_setup.h"
 
 #include "../softbody/test_bodies.h"
+#include "scene/scene_world.h"
 
 namespace tcsb {
 namespace {
@@ -26,7 +27,7 @@ constexpr int kBlendSteps = 4;
 /// A 17 x 17 net without gravity, shaped as the saddle y = 8 - 0.3 x z: inside a 2x2 block its twist is not
 /// affine, so coarsening the block moves the surface by 0.3 x (0.25 m)^2 (reconstruction_test.cpp).
 struct SaddleBody {
-  SaddleBody() : net(square_net(17)), world(settings()), body(world, net, test_solver(), tc_settings()) {
+  SaddleBody() : net(square_net(17)), world(settings()), body(world.info(), net, test_solver(), tc_settings()) {
     for (int i = 0; i < body.node_count(); ++i) {
       const Eigen::Vector3d r = net->lod().rest(body.tree_id(i));
       body.m_nodes[i].m_x.setY(static_cast<btScalar>(8.0 - 0.3 * r.x() * r.z()));
@@ -43,7 +44,7 @@ struct SaddleBody {
     return s;
   }
   std::shared_ptr<const Net> net;
-  SoftBodyWorld world;
+  SceneWorld world;
   TcSoftBody body;
 };
 

@@ -15,6 +15,7 @@
 #include "feedback/random_policy.h"
 #include "paper/op_work.h"
 #include "paper/op_work_claims.h"
+#include "scene/scene_world.h"
 #include "softbody/op_work_bounds.h"
 #include "softbody/tc_softbody.h"
 #include "suite/suite.h"
@@ -46,8 +47,8 @@ class TallySink final : public OpSink {
 /// out).
 OpWorkTally drive(const NetSpec& spec, const Suite& suite) {
   auto net = std::make_shared<const Net>(spec);
-  SoftBodyWorld world(suite.world);
-  TcSoftBody body(world, net, suite.solver, suite.tcsb);
+  SceneWorld world(suite.world);
+  TcSoftBody body(world.info(), net, suite.solver, suite.tcsb);
   TallySink sink;
   body.set_op_sink(&sink);
   RandomPolicy policy(1);

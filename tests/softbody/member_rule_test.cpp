@@ -6,6 +6,7 @@
 #include <string>
 
 #include "feedback/random_policy.h"
+#include "scene/scene_world.h"
 #include "softbody/tc_softbody.h"
 #include "test_bodies.h"
 
@@ -17,7 +18,7 @@ constexpr btScalar kDt = 1.0f / 60;
 /// A 33 x 33 body in the middle of its operations: blends in flight, so fading links and half masses exist.
 class MemberRule : public ::testing::Test {
  protected:
-  MemberRule() : world_(WorldSettings{}), body_(world_, testing::square_net(33), testing::test_solver(), {}) {
+  MemberRule() : world_(WorldSettings{}), body_(world_.info(), testing::square_net(33), testing::test_solver(), {}) {
     RandomPolicy policy(7);
     for (int step = 0; step < 12; ++step) {
       body_.advance_blends();
@@ -40,7 +41,7 @@ class MemberRule : public ::testing::Test {
     return ::testing::AssertionFailure() << "validate() said: " << v.summary();
   }
 
-  SoftBodyWorld world_;
+  SceneWorld world_;
   TcSoftBody body_;
 };
 

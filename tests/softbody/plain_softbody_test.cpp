@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/divergence.h"
 #include "test_bodies.h"
@@ -11,8 +12,8 @@ namespace {
 
 TEST(PlainSoftBody, HasTheNetsNodesLinksAndPins) {
   const auto net = testing::square_net(17);
-  SoftBodyWorld world({});
-  auto body = make_plain_softbody(world, *net, testing::test_solver());
+  SceneWorld world({});
+  auto body = make_plain_softbody(world.info(), *net, testing::test_solver());
   EXPECT_EQ(body->m_nodes.size(), 17 * 17);
   EXPECT_EQ(body->m_links.size(), 2 * 17 * 16);
   EXPECT_EQ(body->m_faces.size(), 0);
@@ -28,9 +29,9 @@ TEST(PlainSoftBody, MatchesStockCreatePatchTrajectory) {
   // Same grid, pins, link order and solver: the plain baseline and stock CreatePatch must swing the same way
   // (CreatePatch computes positions by a different lerp, hence a tolerance).
   const auto net = testing::square_net(17);
-  SoftBodyWorld world({});
-  auto plain = make_plain_softbody(world, *net, testing::test_solver());
-  auto patch = make_bullet_patch(world, *net, testing::test_solver());
+  SceneWorld world({});
+  auto plain = make_plain_softbody(world.info(), *net, testing::test_solver());
+  auto patch = make_bullet_patch(world.info(), *net, testing::test_solver());
   ASSERT_EQ(plain->m_nodes.size(), patch->m_nodes.size());
   ASSERT_EQ(plain->m_links.size(), patch->m_links.size());
   for (int s = 0; s < 100; ++s) {
@@ -46,8 +47,8 @@ TEST(PlainSoftBody, MatchesStockCreatePatchTrajectory) {
 
 TEST(Divergence, QuickAndFullChecksCatchNaNAndStretch) {
   const auto net = testing::square_net(9);
-  SoftBodyWorld world({});
-  auto body = make_plain_softbody(world, *net, testing::test_solver());
+  SceneWorld world({});
+  auto body = make_plain_softbody(world.info(), *net, testing::test_solver());
   step_soft_body(*body, 1.0f / 60);
   EXPECT_FALSE(quick_divergence_check(*body, 80.0));
   EXPECT_FALSE(full_divergence_check(*body, 16.0));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "feedback/random_policy.h"
+#include "scene/scene_world.h"
 #include "softbody/tc_softbody.h"
 #include "test_bodies.h"
 
@@ -31,8 +32,8 @@ void run_random(TcSoftBody& body, std::uint64_t seed, int steps) {
 
 TEST(TcLevelStiffness, UncalibratedUsesTheOneMaterial) {
   const auto net = testing::square_net(17);
-  SoftBodyWorld world({});
-  TcSoftBody tc(world, net, testing::test_solver(), {});
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
   EXPECT_FALSE(tc.calibrated());
   run_random(tc, 5, 40);
   EXPECT_EQ(tc.m_materials.size(), 1);
@@ -41,10 +42,10 @@ TEST(TcLevelStiffness, UncalibratedUsesTheOneMaterial) {
 
 TEST(TcLevelStiffness, EveryLinkUsesItsCoarserEndpointsLevelAndFadesFromIt) {
   const auto net = testing::square_net(33);
-  SoftBodyWorld world({});
+  SceneWorld world({});
   TcSettings settings;
   settings.level_stiffness = {0.5, 0.25};  // level 1, then level 2 and beyond
-  TcSoftBody tc(world, net, testing::test_solver(), settings);
+  TcSoftBody tc(world.info(), net, testing::test_solver(), settings);
   ASSERT_TRUE(tc.calibrated());
   RandomPolicy policy(11);
   int checked_blends = 0, coarse_links = 0;
@@ -77,11 +78,11 @@ TEST(TcLevelStiffness, EveryLinkUsesItsCoarserEndpointsLevelAndFadesFromIt) {
 
 TEST(TcLevelStiffness, AllOnesIsTheUncalibratedBodyBitForBit) {
   const auto net = testing::square_net(33);
-  SoftBodyWorld world_a({}), world_b({});
-  TcSoftBody plain_material(world_a, net, testing::test_solver(), {});
+  SceneWorld world_a({}), world_b({});
+  TcSoftBody plain_material(world_a.info(), net, testing::test_solver(), {});
   TcSettings ones;
   ones.level_stiffness = {1.0};
-  TcSoftBody calibrated(world_b, net, testing::test_solver(), ones);
+  TcSoftBody calibrated(world_b.info(), net, testing::test_solver(), ones);
   run_random(plain_material, 9, 80);
   run_random(calibrated, 9, 80);
   EXPECT_TRUE(same_state(plain_material, calibrated));
@@ -89,11 +90,11 @@ TEST(TcLevelStiffness, AllOnesIsTheUncalibratedBodyBitForBit) {
 
 TEST(TcLevelStiffness, ASofterLevelChangesTheMotion) {
   const auto net = testing::square_net(33);
-  SoftBodyWorld world_a({}), world_b({});
-  TcSoftBody plain_material(world_a, net, testing::test_solver(), {});
+  SceneWorld world_a({}), world_b({});
+  TcSoftBody plain_material(world_a.info(), net, testing::test_solver(), {});
   TcSettings soft;
   soft.level_stiffness = {0.4};
-  TcSoftBody calibrated(world_b, net, testing::test_solver(), soft);
+  TcSoftBody calibrated(world_b.info(), net, testing::test_solver(), soft);
   run_random(plain_material, 9, 80);
   run_random(calibrated, 9, 80);
   EXPECT_FALSE(same_state(plain_material, calibrated));
@@ -101,11 +102,11 @@ TEST(TcLevelStiffness, ASofterLevelChangesTheMotion) {
 
 TEST(TcLevelStiffness, RefusesAStiffnessOutsideZeroToOne) {
   const auto net = testing::square_net(9);
-  SoftBodyWorld world({});
+  SceneWorld world({});
   for (const double bad : {0.0, -0.5, 1.5}) {
     TcSettings settings;
     settings.level_stiffness = {0.5, bad};
-    EXPECT_THROW(TcSoftBody(world, net, testing::test_solver(), settings), std::invalid_argument) << bad;
+    EXPECT_THROW(TcSoftBody(world.info(), net, testing::test_solver(), settings), std::invalid_argument) << bad;
   }
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "feedback/random_policy.h"
+#include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/plain_softbody.h"
 #include "softbody/tc_softbody.h"
@@ -61,8 +62,8 @@ int index_of(const TcSoftBody& body, const btSoftBody::Node* n) { return static_
 
 TEST(TcSoftBodyOrder, RestoringKeepsEveryNodeEveryLinkAndEveryInvariant) {
   const auto net = testing::square_net(33);
-  SoftBodyWorld world({});
-  TcSoftBody tc(world, net, testing::test_solver(), unordered());
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), unordered());
   RandomPolicy policy(7);
   operate(tc, policy, 400, 60);
   ASSERT_GT(tc.interpolations(), 0) << "the test wants operations in flight while the order is restored";
@@ -102,9 +103,9 @@ TEST(TcSoftBodyOrder, RestoringKeepsEveryNodeEveryLinkAndEveryInvariant) {
 
 TEST(TcSoftBodyOrder, OnTheFinestCutRestoringChangesNothing) {
   const auto net = testing::square_net(17);
-  SoftBodyWorld world({});
-  TcSoftBody tc(world, net, testing::test_solver(), {});
-  auto plain = make_plain_softbody(world, *net, testing::test_solver());
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
+  auto plain = make_plain_softbody(world.info(), *net, testing::test_solver());
   tc.restore_order();
   for (int s = 0; s < 50; ++s) {
     tc.advance_blends();
@@ -120,8 +121,8 @@ TEST(TcSoftBodyOrder, OnTheFinestCutRestoringChangesNothing) {
 
 TEST(TcSoftBodyOrder, BackOnTheFinestCutTheArraysAreAPlainBodysOrder) {
   const auto net = testing::square_net(17);
-  SoftBodyWorld world({});
-  TcSoftBody tc(world, net, testing::test_solver(), unordered());
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), unordered());
   RandomPolicy policy(11);
   operate(tc, policy, 90, 80);
   for (int round = 0; round < 500 && tc.committed_count() < 17 * 17; ++round) {
@@ -133,7 +134,7 @@ TEST(TcSoftBodyOrder, BackOnTheFinestCutTheArraysAreAPlainBodysOrder) {
   for (int s = 0; s < tc.settings().blend_steps; ++s) tc.advance_blends();
   ASSERT_EQ(tc.node_count(), 17 * 17);
   tc.restore_order();
-  auto plain = make_plain_softbody(world, *net, testing::test_solver());
+  auto plain = make_plain_softbody(world.info(), *net, testing::test_solver());
   ASSERT_EQ(tc.link_count(), plain->m_links.size());
   for (int i = 0; i < tc.node_count(); ++i) ASSERT_EQ(tc.tree_id(i), i);
   for (int li = 0; li < tc.link_count(); ++li) {
@@ -154,9 +155,9 @@ TcSettings always_ordered() {
 
 TEST(TcSoftBodyOrder, OperationsRestoreTheOrderOncePastTheFraction) {
   const auto net = testing::square_net(33);
-  SoftBodyWorld world({});
-  TcSoftBody on(world, net, testing::test_solver(), always_ordered());
-  TcSoftBody off(world, net, testing::test_solver(), unordered());
+  SceneWorld world({});
+  TcSoftBody on(world.info(), net, testing::test_solver(), always_ordered());
+  TcSoftBody off(world.info(), net, testing::test_solver(), unordered());
   RandomPolicy policy_on(3), policy_off(3);
   for (int s = 0; s < 200; ++s) {
     operate(on, policy_on, 300 + (s / 40) * 150, 1);
@@ -174,13 +175,13 @@ TEST(TcSoftBodyOrder, OperationsRestoreTheOrderOncePastTheFraction) {
 
 TEST(TcSoftBodyOrder, BodiesBelowTheMinimumNodeCountAreLeftInTheOperationsOrder) {
   const auto net = testing::square_net(33);
-  SoftBodyWorld world({});
+  SceneWorld world({});
   TcSettings settings;
   // Above anything this net can simulate (blends hold old and new nodes at once, so more than its leaves).
   settings.restore_order_min_nodes = static_cast<int>(net->lod().size()) + 1;
-  TcSoftBody below(world, net, testing::test_solver(), settings);
+  TcSoftBody below(world.info(), net, testing::test_solver(), settings);
   settings.restore_order_min_nodes = 33 * 33 / 2;  // restores while it simulates at least half the leaves
-  TcSoftBody above(world, net, testing::test_solver(), settings);
+  TcSoftBody above(world.info(), net, testing::test_solver(), settings);
   RandomPolicy policy_below(3), policy_above(3);
   operate(below, policy_below, 800, 40);
   operate(above, policy_above, 800, 40);
@@ -192,11 +193,11 @@ TEST(TcSoftBodyOrder, BodiesBelowTheMinimumNodeCountAreLeftInTheOperationsOrder)
 
 TEST(TcSoftBodyDbvt, ABodyThatShrankGetsAFreshTreeAndMovesExactlyAsWithout) {
   const auto net = testing::square_net(33);
-  SoftBodyWorld world({});
+  SceneWorld world({});
   TcSettings without = always_ordered();
   without.rebuild_dbvt = false;
-  TcSoftBody on(world, net, testing::test_solver(), always_ordered());
-  TcSoftBody off(world, net, testing::test_solver(), without);
+  TcSoftBody on(world.info(), net, testing::test_solver(), always_ordered());
+  TcSoftBody off(world.info(), net, testing::test_solver(), without);
   RandomPolicy policy_on(5), policy_off(5);
   operate(on, policy_on, 300, 60);
   operate(off, policy_off, 300, 60);
@@ -220,8 +221,8 @@ TEST(TcSoftBodyDbvt, TheStepAfterARebuildReinsertsNoMoreThanAnyOther) {
   // Rebuilt with the boxes Bullet's update gives, the moving cloth stays inside its leaves' boxes for the next
   // steps; with bare boxes every moving node would leave its box on the next step and be re-inserted.
   const auto net = testing::square_net(33);
-  SoftBodyWorld world({});
-  TcSoftBody body(world, net, testing::test_solver(), always_ordered());
+  SceneWorld world({});
+  TcSoftBody body(world.info(), net, testing::test_solver(), always_ordered());
   RandomPolicy policy(5);
   operate(body, policy, body.node_count(), 10);  // falling, on the finest cut
   int checked = 0;
@@ -252,10 +253,10 @@ TEST(TcSoftBodyDbvt, ARebuiltTreeIsThePlainBodysTree) {
   // Rebuilt on the finest cut, the tree is the one a plain body of the net builds: the same leaves in the same
   // shuffled order, so the same shape.
   const auto net = testing::square_net(17);
-  SoftBodyWorld world({});
-  TcSoftBody tc(world, net, testing::test_solver(), always_ordered());
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), always_ordered());
   tc.rebuild_node_dbvt();
-  auto plain = make_plain_softbody(world, *net, testing::test_solver());
+  auto plain = make_plain_softbody(world.info(), *net, testing::test_solver());
   const auto shape = [](const btDbvtNode* root) {
     std::vector<int> depths;
     std::vector<std::pair<const btDbvtNode*, int>> stack{{root, 0}};

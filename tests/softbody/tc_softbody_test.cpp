@@ -5,6 +5,7 @@
 #include <random>
 
 #include "feedback/random_policy.h"
+#include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/plain_softbody.h"
 #include "test_bodies.h"
@@ -23,9 +24,9 @@ void step_with_random_ops(TcSoftBody& body, RandomPolicy& policy, int target, in
 
 TEST(TcSoftBody, StartsAsTheFinestCutIdenticalToPlain) {
   const auto net = testing::square_net(33);
-  SoftBodyWorld world({});
-  TcSoftBody tc(world, net, testing::test_solver(), {});
-  auto plain = make_plain_softbody(world, *net, testing::test_solver());
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
+  auto plain = make_plain_softbody(world.info(), *net, testing::test_solver());
   EXPECT_EQ(tc.node_count(), plain->m_nodes.size());
   EXPECT_EQ(tc.link_count(), plain->m_links.size());
   EXPECT_EQ(tc.interpolations(), 0);
@@ -35,9 +36,9 @@ TEST(TcSoftBody, StartsAsTheFinestCutIdenticalToPlain) {
 
 TEST(TcSoftBody, WithoutOperationsMatchesPlainBitForBitAfter100Steps) {
   const auto net = testing::square_net(33);
-  SoftBodyWorld world({});
-  TcSoftBody tc(world, net, testing::test_solver(), {});
-  auto plain = make_plain_softbody(world, *net, testing::test_solver());
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
+  auto plain = make_plain_softbody(world.info(), *net, testing::test_solver());
   for (int s = 0; s < 100; ++s) {
     tc.advance_blends();
     tc.simulate_step(kDt);
@@ -51,8 +52,8 @@ TEST(TcSoftBody, WithoutOperationsMatchesPlainBitForBitAfter100Steps) {
 
 TEST(TcSoftBody, RefineAndCoarseOfOneBlockRoundTrip) {
   const auto net = testing::square_net(17);
-  SoftBodyWorld world({});
-  TcSoftBody tc(world, net, testing::test_solver(), {});
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
   const TreeId parent = net->lod().at(1, 3, 3);
   ASSERT_TRUE(tc.can_coarsen(parent).ok);
   tc.begin_coarse(parent);
@@ -78,8 +79,8 @@ TEST(TcSoftBody, RefineAndCoarseOfOneBlockRoundTrip) {
 
 TEST(TcSoftBody, BalanceForbidsNeighboursTwoLevelsApart) {
   const auto net = testing::square_net(17);
-  SoftBodyWorld world({});
-  TcSoftBody tc(world, net, testing::test_solver(), {});
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
   const LodTree& lod = net->lod();
   // Coarsen the four level-1 blocks under one level-2 node, then that node.
   const TreeId top = lod.at(2, 1, 1);
@@ -102,8 +103,8 @@ TEST(TcSoftBody, BalanceForbidsNeighboursTwoLevelsApart) {
 
 TEST(TcSoftBody, EachOperationConservesMassAndLinearMomentum) {
   const auto net = testing::square_net(33, 0);  // no pins: momentum is conserved only away from anchors
-  SoftBodyWorld world({});
-  TcSoftBody tc(world, net, testing::test_solver(), {});
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
   for (int s = 0; s < 20; ++s) tc.simulate_step(kDt);  // get it moving
   const LodTree& lod = net->lod();
   const auto check = [&](const char* what, auto&& op) {
@@ -133,11 +134,11 @@ TEST(TcSoftBody, FlatNetAtRestStaysAtRestThroughOperations) {
   const auto net = testing::square_net(33);
   WorldSettings no_gravity;
   no_gravity.gravity = 0;
-  SoftBodyWorld world(no_gravity);
+  SceneWorld world(no_gravity);
   for (Placement placement : {Placement::kAffine, Placement::kRigid}) {
     TcSettings settings;
     settings.placement = placement;
-    TcSoftBody tc(world, net, testing::test_solver(), settings);
+    TcSoftBody tc(world.info(), net, testing::test_solver(), settings);
     RandomPolicy policy(7);
     for (int s = 0; s < 600; ++s) {
       const int target = (s / 100) % 2 == 0 ? 300 : 1000;  // swing between coarse and fine cuts
@@ -161,8 +162,8 @@ TEST(TcSoftBody, CoarseNodesAppearAtTheirRestPositionsOnANetAtRest) {
   for (const int side : {33, 34}) {
     SCOPED_TRACE(side);
     const auto net = testing::square_net(side);
-    SoftBodyWorld world({});
-    TcSoftBody tc(world, net, testing::test_solver(), {});
+    SceneWorld world({});
+    TcSoftBody tc(world.info(), net, testing::test_solver(), {});
     const LodTree& tree = tc.tree();
     for (int level = 1; level <= 2; ++level) {
       for (bool began = true; began;) {
@@ -192,8 +193,8 @@ TEST(TcSoftBody, CoarseNodesAppearAtTheirRestPositionsOnANetAtRest) {
 
 TEST(TcSoftBody, RefiningEverythingBackGivesThePlainCounts) {
   const auto net = testing::square_net(33);
-  SoftBodyWorld world({});
-  TcSoftBody tc(world, net, testing::test_solver(), {});
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
   RandomPolicy policy(3);
   for (int s = 0; s < 150; ++s) step_with_random_ops(tc, policy, 250, 32);
   ASSERT_LT(tc.committed_count(), 400);
@@ -208,7 +209,7 @@ TEST(TcSoftBody, RefiningEverythingBackGivesThePlainCounts) {
     tc.simulate_step(kDt);
   }
   for (int s = 0; s < tc.settings().blend_steps; ++s) tc.advance_blends();
-  auto plain = make_plain_softbody(world, *net, testing::test_solver());
+  auto plain = make_plain_softbody(world.info(), *net, testing::test_solver());
   EXPECT_EQ(tc.node_count(), plain->m_nodes.size());
   EXPECT_EQ(tc.link_count(), plain->m_links.size());
   EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
@@ -216,11 +217,11 @@ TEST(TcSoftBody, RefiningEverythingBackGivesThePlainCounts) {
 
 TEST(TcSoftBodyProperty, HundredThousandRandomOperationsKeepEveryInvariant) {
   const auto net = testing::square_net(65);
-  SoftBodyWorld world({});
+  SceneWorld world({});
   TcSettings settings;
   settings.blend_steps = 3;
   settings.restore_order_min_nodes = 0;  // restore_order() between the operations too, whatever the body's size
-  TcSoftBody tc(world, net, testing::test_solver(), settings);
+  TcSoftBody tc(world.info(), net, testing::test_solver(), settings);
   RandomPolicy policy(20261122);
   std::mt19937 rng(5);
   // Every array was reserved for the whole tree at construction: no operation may reallocate one (that would be

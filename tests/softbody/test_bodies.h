@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "net/net.h"
-#include "softbody/soft_body_world.h"
+#include "scene/scene_world.h"
 #include "softbody/solver_settings.h"
 
 namespace tcsb::testing {

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "case/case_body.h"
+#include "scene/scene_world.h"
 
 namespace tcsb {
 namespace {
@@ -145,7 +146,7 @@ TEST(SuiteMemory, PlainEstimateBoundsTheHeapItTakes) {
   const std::size_t before = heap_in_use();
   {
     const auto net = std::make_shared<const Net>(spec);
-    SoftBodyWorld world(s.world);
+    SceneWorld world(s.world);
     const std::unique_ptr<CaseBody> body = make_case_body(s, CaseKey{}, world, net, 1);
     body->step(static_cast<btScalar>(s.world.dt));
     const double taken = static_cast<double>(heap_in_use() - before);

@@ -342,6 +342,53 @@ TEST(SuiteReject, MissingFile) {
   rejected([&] { parse_suite(kSourceDir / "suites"); }, (kSourceDir / "suites").string(), "");
 }
 
+TEST(SuiteParse, SceneBlock) {
+  json j = minimal();
+  EXPECT_FALSE(parse_suite_text(j.dump(), "plain.json").scene.has_colliders());  // no block: the paper's scene
+  j["scene"] = json::parse(R"({"margin": 0.05, "friction": 0.3, "colliders": [
+      {"shape": "sphere", "position": [0, 1, 0], "radius": 0.5},
+      {"shape": "box", "motion": "kinematic", "half_extents": [1, 0.1, 1], "velocity": [0, 0, 1]},
+      {"shape": "plane", "normal": [0, 2, 0], "friction": 0.9},
+      {"shape": "sphere", "motion": "dynamic", "mass": 3, "velocity": [0, -4, 0]}]})");
+  j["feedback"] = {{"contact_saliency", 0.8}};
+  const Suite s = parse_suite_text(j.dump(), "scene.json");
+  ASSERT_EQ(s.scene.colliders.size(), 4u);
+  EXPECT_DOUBLE_EQ(s.scene.margin, 0.05);
+  EXPECT_DOUBLE_EQ(s.scene.friction, 0.3);
+  EXPECT_EQ(s.scene.colliders[0].shape, ColliderShape::kSphere);
+  EXPECT_EQ(s.scene.colliders[0].motion, ColliderMotion::kStatic);
+  EXPECT_DOUBLE_EQ(s.scene.colliders[0].radius, 0.5);
+  EXPECT_EQ(s.scene.colliders[1].motion, ColliderMotion::kKinematic);
+  EXPECT_DOUBLE_EQ(s.scene.colliders[1].velocity[2], 1.0);
+  EXPECT_DOUBLE_EQ(s.scene.colliders[2].normal[1], 1.0);  // normalised
+  EXPECT_DOUBLE_EQ(s.scene.colliders[3].mass, 3.0);
+  EXPECT_DOUBLE_EQ(s.feedback.contact_saliency, 0.8);
+  EXPECT_EQ(collider_name(s.scene.colliders[3]), "dynamic sphere");
+}
+
+TEST(SuiteReject, SceneFields) {
+  const auto scene = [](const char* text) { return [text](json& j) { j["scene"] = json::parse(text); }; };
+  rejected_edit(scene(R"({"wind": 1})"), "scene.wind");
+  rejected_edit(scene(R"({"colliders": {}})"), "scene.colliders");
+  rejected_edit(scene(R"({"colliders": [{"radius": 1}]})"), "scene.colliders[0].shape");
+  rejected_edit(scene(R"({"colliders": [{"shape": "cone"}]})"), "scene.colliders[0].shape");
+  rejected_edit(scene(R"({"colliders": [{"shape": "box", "radius": 1}]})"), "scene.colliders[0].radius");
+  rejected_edit(scene(R"({"colliders": [{"shape": "sphere", "radius": 0}]})"), "scene.colliders[0].radius");
+  rejected_edit(scene(R"({"colliders": [{"shape": "plane", "normal": [0, 0, 0]}]})"), "scene.colliders[0].normal");
+  rejected_edit(scene(R"({"colliders": [{"shape": "plane", "motion": "dynamic"}]})"), "scene.colliders[0].motion");
+  rejected_edit(scene(R"({"colliders": [{"shape": "sphere", "velocity": [1, 0, 0]}]})"), "scene.colliders[0].velocity");
+  rejected_edit(scene(R"({"colliders": [{"shape": "sphere", "mass": 2}]})"), "scene.colliders[0].mass");
+  rejected_edit(scene(R"({"colliders": [{"shape": "box", "half_extents": [1, -1, 1]}]})"),
+                "scene.colliders[0].half_extents[1]");
+  rejected_edit(scene(R"({"margin": 0})"), "scene.margin");
+  rejected_edit(scene(R"({"friction": 1.5})"), "scene.friction");
+  rejected_edit(scene(R"({"sdf_voxel": 0})"), "scene.sdf_voxel");
+  json many = json::array();
+  for (int i = 0; i < 65; ++i) many.push_back({{"shape", "sphere"}});
+  rejected_edit([&](json& j) { j["scene"] = {{"colliders", many}}; }, "scene.colliders");
+  rejected_edit([](json& j) { j["feedback"] = {{"contact_saliency", 2}}; }, "feedback.contact_saliency");
+}
+
 TEST(SuiteReject, MalformedText) {
   // A parse error names the member being read when there is one.
   const std::string msg = rejected([] { parse_suite_text("{\"name\": ", "t.json"); }, "t.json", "name");

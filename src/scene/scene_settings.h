@@ -1,0 +1,61 @@
+// SceneSettings: what surrounds the cloth, as a suite's optional "scene" block states it — rigid colliders and the
+// soft body's contact settings. Plain data, validated by the suite parser; scene/scene_world.h builds the Bullet
+// world from it. Without a scene block every field keeps its default, there are no colliders, and bodies are
+// stepped solo exactly as before scenes existed (docs/design.md, "Scenes").
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace tcsb {
+
+/// A collider's shape.
+enum class ColliderShape {
+  kSphere,  ///< radius around `position`
+  kBox,     ///< axis-aligned half extents around `position`
+  kPlane,   ///< the plane through `position` with unit normal `normal`; everything below it is inside
+};
+
+/// How a collider moves.
+enum class ColliderMotion {
+  kStatic,     ///< never moves
+  kKinematic,  ///< moves along a scripted path: `position` + `velocity` x t, whatever the cloth does
+  kDynamic,    ///< a rigid body of `mass`, starting at `velocity`, pushed by gravity and the cloth
+};
+
+/// One rigid collider.
+struct Collider {
+  ColliderShape shape = ColliderShape::kSphere;
+  ColliderMotion motion = ColliderMotion::kStatic;
+  std::array<double, 3> position{0, 0, 0};      ///< centre (sphere, box) or a point on the plane, metres
+  double radius = 1.0;                          ///< sphere, metres
+  std::array<double, 3> half_extents{1, 1, 1};  ///< box, metres
+  std::array<double, 3> normal{0, 1, 0};        ///< plane, unit length (the parser normalises it)
+  std::array<double, 3> velocity{0, 0, 0};      ///< kinematic: constant; dynamic: initial; m/s
+  double mass = 1.0;                            ///< dynamic only, kg
+  double friction = 0.5;                        ///< the rigid body's friction (Bullet combines it with the cloth's)
+};
+
+/// "static sphere", "dynamic box", "kinematic plane": how reports name a collider.
+std::string collider_name(const Collider& collider);
+
+/// The scene around the nets.
+struct SceneSettings {
+  std::vector<Collider> colliders;
+  /// The soft body's collision margin (btSoftBodyCollisionShape's), metres: a node closer than this to a collider's
+  /// surface is in contact. Bullet's default, 0.25 m, is twice the grid spacing of the paper's 8 m net at 65 x 65;
+  /// scenes state theirs.
+  double margin = 0.02;
+  /// The cloth's dynamic friction against rigid bodies (btSoftBody::Config::kDF), in [0, 1].
+  double friction = 0.5;
+  /// Edge of the sparse SDF's voxels, metres. Bullet finds soft-rigid contacts by interpolating each collider's
+  /// distance field between samples this far apart (btSparseSdf), so a collider much smaller than a few voxels is
+  /// blurred and nodes sink into it; Bullet's default is 0.25 m.
+  double sdf_voxel = 0.25;
+
+  /// Whether bodies live in a collision world (btSoftRigidDynamicsWorld) rather than being stepped solo.
+  bool has_colliders() const { return !colliders.empty(); }
+};
+
+}  // namespace tcsb

@@ -1,0 +1,199 @@
+#include "scene/scene_world.h"
+
+#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btSphereShape.h>
+#include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
+#include <BulletDynamics/Dynamics/btRigidBody.h>
+#include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
+#include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
+#include <LinearMath/btDefaultMotionState.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "softbody/bullet_setup.h"
+
+namespace tcsb {
+
+namespace {
+
+btVector3 to_vector(const std::array<double, 3>& v) {
+  return {static_cast<btScalar>(v[0]), static_cast<btScalar>(v[1]), static_cast<btScalar>(v[2])};
+}
+
+/// A plane is built as a slab this thick under it: Bullet's soft-rigid contacts (the sparse SDF) measure distances
+/// to convex shapes only, and btStaticPlaneShape is not one.
+constexpr double kPlaneSlabHalfThickness = 0.5;
+constexpr double kPlaneSlabHalfWidth = 100.0;
+
+/// The rotation that turns +y into `normal` (unit length).
+btQuaternion rotation_to(const btVector3& normal) {
+  const btVector3 up(0, 1, 0);
+  const btScalar c = up.dot(normal);
+  if (c > btScalar(1 - 1e-6)) return btQuaternion::getIdentity();
+  if (c < btScalar(-1 + 1e-6)) return {btVector3(1, 0, 0), SIMD_PI};
+  return {up.cross(normal).normalized(), std::acos(c)};
+}
+
+/// Depth inside a collider of a point given in the collider's own frame, metres (<= 0: outside). A plane's frame is
+/// its slab's, whose top face is the plane.
+double depth_inside(const Collider& c, const btVector3& local) {
+  switch (c.shape) {
+    case ColliderShape::kSphere: return c.radius - static_cast<double>(local.length());
+    case ColliderShape::kPlane: return kPlaneSlabHalfThickness - static_cast<double>(local.y());
+    case ColliderShape::kBox: {
+      double depth = c.half_extents[0] - std::abs(static_cast<double>(local.x()));  // the shallowest way out
+      depth = std::min(depth, c.half_extents[1] - std::abs(static_cast<double>(local.y())));
+      return std::min(depth, c.half_extents[2] - std::abs(static_cast<double>(local.z())));
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+/// A collider as Bullet holds it: shape, motion state and rigid body (static and kinematic ones have mass 0).
+struct SceneWorld::Rigid {
+  Collider spec;
+  std::unique_ptr<btCollisionShape> shape;
+  std::unique_ptr<btDefaultMotionState> motion;
+  std::unique_ptr<btRigidBody> body;
+  btVector3 start;  // the shape's centre at time 0
+};
+
+SceneWorld::Attachment& SceneWorld::Attachment::operator=(Attachment&& other) noexcept {
+  if (this != &other) {
+    release();
+    world_ = other.world_;
+    body_ = other.body_;
+    other.world_ = nullptr;
+  }
+  return *this;
+}
+
+void SceneWorld::Attachment::release() {
+  if (world_ != nullptr) world_->detach(*body_);
+  world_ = nullptr;
+}
+
+SceneWorld::SceneWorld(const WorldSettings& world, const SceneSettings& scene) : settings_(world), scene_(scene) {
+  const btVector3 gravity(0, static_cast<btScalar>(-world.gravity), 0);
+  if (!scene_.has_colliders()) {
+    solo_info_ = std::make_unique<btSoftBodyWorldInfo>();
+    info_ = solo_info_.get();
+    info_->m_gravity = gravity;
+    info_->m_broadphase = nullptr;  // stepped solo, outside any collision world (docs/design.md, "One step")
+    info_->m_dispatcher = nullptr;
+    return;
+  }
+  configuration_ = std::make_unique<btSoftBodyRigidBodyCollisionConfiguration>();
+  dispatcher_ = std::make_unique<btCollisionDispatcher>(configuration_.get());
+  broadphase_ = std::make_unique<btDbvtBroadphase>();
+  solver_ = std::make_unique<btSequentialImpulseConstraintSolver>();
+  dynamics_ = std::make_unique<btSoftRigidDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+                                                         configuration_.get());
+  dynamics_->setGravity(gravity);
+  info_ = &dynamics_->getWorldInfo();
+  info_->m_gravity = gravity;
+  info_->m_sparsesdf.setDefaultVoxelsz(static_cast<btScalar>(scene_.sdf_voxel));
+  info_->m_sparsesdf.Reset();  // takes the voxel size
+  // The world's own info, whose broadphase, dispatcher and sparse SDF the world's constructor set up: a body built
+  // with an info of its own would find neither (a null broadphase, and an SDF that divides by zero at first contact).
+
+  for (const Collider& c : scene_.colliders) {
+    auto rigid = std::make_unique<Rigid>();
+    rigid->spec = c;
+    btTransform placement;
+    placement.setIdentity();
+    rigid->start = to_vector(c.position);
+    switch (c.shape) {
+      case ColliderShape::kSphere: rigid->shape = std::make_unique<btSphereShape>(static_cast<btScalar>(c.radius)); break;
+      case ColliderShape::kBox: rigid->shape = std::make_unique<btBoxShape>(to_vector(c.half_extents)); break;
+      case ColliderShape::kPlane: {
+        const btVector3 n = to_vector(c.normal);
+        rigid->shape = std::make_unique<btBoxShape>(btVector3(static_cast<btScalar>(kPlaneSlabHalfWidth),
+                                                              static_cast<btScalar>(kPlaneSlabHalfThickness),
+                                                              static_cast<btScalar>(kPlaneSlabHalfWidth)));
+        placement.setRotation(rotation_to(n));
+        rigid->start -= n * static_cast<btScalar>(kPlaneSlabHalfThickness);
+        break;
+      }
+    }
+    placement.setOrigin(rigid->start);
+    const bool dynamic = c.motion == ColliderMotion::kDynamic;
+    const btScalar mass = dynamic ? static_cast<btScalar>(c.mass) : btScalar(0);
+    btVector3 inertia(0, 0, 0);
+    if (dynamic) rigid->shape->calculateLocalInertia(mass, inertia);
+    rigid->motion = std::make_unique<btDefaultMotionState>(placement);
+    rigid->body = std::make_unique<btRigidBody>(
+        btRigidBody::btRigidBodyConstructionInfo(mass, rigid->motion.get(), rigid->shape.get(), inertia));
+    rigid->body->setFriction(static_cast<btScalar>(c.friction));
+    if (c.motion == ColliderMotion::kKinematic) {
+      rigid->body->setCollisionFlags(rigid->body->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+      rigid->body->setActivationState(DISABLE_DEACTIVATION);
+    }
+    if (dynamic) {
+      rigid->body->setLinearVelocity(to_vector(c.velocity));
+      rigid->body->setActivationState(DISABLE_DEACTIVATION);  // a ball resting in the cloth must not fall asleep
+    }
+    dynamics_->addRigidBody(rigid->body.get());
+    rigids_.push_back(std::move(rigid));
+  }
+}
+
+SceneWorld::~SceneWorld() {
+  // Bodies still attached are the owner's to destroy; the world must not touch them after this.
+  for (btSoftBody* body : std::vector<btSoftBody*>(bodies_)) detach(*body);
+  if (dynamics_) {
+    for (const auto& rigid : rigids_) dynamics_->removeRigidBody(rigid->body.get());
+    dynamics_.reset();
+  }
+}
+
+SceneWorld::Attachment SceneWorld::attach(btSoftBody& body) {
+  if (dynamics_) {
+    body.getCollisionShape()->setMargin(static_cast<btScalar>(scene_.margin));
+    body.m_cfg.kDF = static_cast<btScalar>(scene_.friction);
+    body.m_cfg.collisions = btSoftBody::fCollision::SDF_RS;
+    dynamics_->addSoftBody(&body);
+  }
+  bodies_.push_back(&body);
+  return {this, &body};
+}
+
+void SceneWorld::detach(btSoftBody& body) {
+  const auto it = std::find(bodies_.begin(), bodies_.end(), &body);
+  if (it == bodies_.end()) return;
+  bodies_.erase(it);
+  if (dynamics_) dynamics_->removeSoftBody(&body);
+}
+
+void SceneWorld::move_kinematic_colliders(double time) {
+  for (const auto& rigid : rigids_) {
+    if (rigid->spec.motion != ColliderMotion::kKinematic) continue;
+    btTransform t = rigid->body->getWorldTransform();
+    t.setOrigin(rigid->start + to_vector(rigid->spec.velocity) * static_cast<btScalar>(time));
+    rigid->motion->setWorldTransform(t);  // Bullet reads it and derives the body's velocity (saveKinematicState)
+  }
+}
+
+void SceneWorld::step(btScalar dt) {
+  ++steps_;
+  if (!dynamics_) {
+    for (btSoftBody* body : bodies_) step_soft_body(*body, dt);
+    return;
+  }
+  move_kinematic_colliders(static_cast<double>(steps_) * settings_.dt);
+  dynamics_->stepSimulation(dt, 0);  // 0 substeps: one internal step of exactly dt
+  info_->m_sparsesdf.GarbageCollect();
+}
+
+double SceneWorld::penetration(const btVector3& x) const {
+  double deepest = -1e300;
+  for (const auto& rigid : rigids_)
+    deepest = std::max(deepest, depth_inside(rigid->spec, rigid->body->getWorldTransform().invXform(x)));
+  return deepest;
+}
+
+}  // namespace tcsb
