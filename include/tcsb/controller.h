@@ -8,7 +8,11 @@
 //   controller->before_step(body);    // new operations begin
 //   body.simulate_step(dt);           // one Bullet step
 //   controller->after_step(body);     // a parallel controller snapshots the state for its worker
+//
+// In a btSoftRigidDynamicsWorld that the application steps with stepSimulation, a TreeCutDriver does the same
+// around every internal step from the world's pre-tick callback: examples/drape_tcsb.cpp.
 #pragma once
 
 #include "feedback/controller.h"         // IWYU pragma: export
 #include "feedback/feedback_settings.h"  // IWYU pragma: export
+#include "feedback/tree_cut_driver.h"    // IWYU pragma: export

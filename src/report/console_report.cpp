@@ -18,12 +18,28 @@ std::optional<double> measured(const Summary& s, double v) {
   return s.count > 0 ? std::optional<double>(v) : std::nullopt;
 }
 
+/// A case's penetrations over its repetitions: the most node-steps any repetition had, and the deepest node.
+Penetrations worst_penetrations(const CaseResult& c) {
+  Penetrations worst;
+  for (const RepetitionResult& rep : c.repetitions) {
+    if (!rep.penetrations) continue;
+    worst.node_steps = std::max(worst.node_steps, rep.penetrations->node_steps);
+    worst.deepest_pct = std::max(worst.deepest_pct, rep.penetrations->deepest_pct);
+  }
+  return worst;
+}
+
 void print_cases(const RunResult& r, std::ostream& out) {
   bool any_equal = false;
   for (std::size_t i = 0; i < r.cases.size() && !any_equal; ++i) any_equal = equal_plain_case_for(r, i).has_value();
+  const bool scene = r.suite.scene.has_colliders();
   std::vector<TextTable::Column> columns = {
       {"case", Align::kLeft}, {"status", Align::kLeft}, {"N"}, {"L"}, {"I"}, {"median ms"}, {"CV %"}, {"vs plain"}};
   if (any_equal) columns.push_back({"vs equal"});
+  if (scene) {
+    columns.push_back({"inside"});
+    columns.push_back({"deepest %"});
+  }
   columns.push_back({"reps", Align::kRight});
   TextTable t(columns);
   for (std::size_t i = 0; i < r.cases.size(); ++i) {
@@ -43,11 +59,19 @@ void print_cases(const RunResult& r, std::ostream& out) {
                                     fixed(measured(c.step_ms, 100.0 * c.step_ms.cv), 1),
                                     fixed(ratio, 3)};
     if (any_equal) row.push_back(fixed(equal_ratio, 3));
+    if (scene) {
+      const Penetrations worst = worst_penetrations(c);
+      row.push_back(std::to_string(worst.node_steps));
+      row.push_back(fixed(worst.deepest_pct, 3));
+    }
     row.push_back(std::to_string(c.step_ms.count) + "/" + std::to_string(c.repetitions.size()));
     t.add_row(row);
   }
   out << "Cases (median of per-repetition mean step times; 'vs plain' = median of paired same-run ratios";
   if (any_equal) out << "; 'vs equal' = the same against plain_equal, TC-SB's tax over a static grid of its budget";
+  if (scene)
+    out << "; 'inside' = node-steps found inside a collider deeper than the contact margin, 'deepest %' = the deepest "
+           "node in % of the net's extent, both the worst repetition's";
   out << "):\n";
   t.print(out);
 }

@@ -108,7 +108,9 @@ SceneWorld::SceneWorld(const WorldSettings& world, const SceneSettings& scene) :
     placement.setIdentity();
     rigid->start = to_vector(c.position);
     switch (c.shape) {
-      case ColliderShape::kSphere: rigid->shape = std::make_unique<btSphereShape>(static_cast<btScalar>(c.radius)); break;
+      case ColliderShape::kSphere:
+        rigid->shape = std::make_unique<btSphereShape>(static_cast<btScalar>(c.radius));
+        break;
       case ColliderShape::kBox: rigid->shape = std::make_unique<btBoxShape>(to_vector(c.half_extents)); break;
       case ColliderShape::kPlane: {
         const btVector3 n = to_vector(c.normal);

@@ -92,10 +92,10 @@ TEST(SceneWorld, PenetrationDepthOfEachShape) {
   ground.position = {0, -5, 0};
   scene.colliders.push_back(ground);
   const SceneWorld world(WorldSettings{}, scene);
-  EXPECT_NEAR(world.penetration({0, 0.25f, 0}), 0.75, 1e-6);     // in the sphere
-  EXPECT_NEAR(world.penetration({10, 1.5f, 0}), 0.5, 1e-6);      // in the box, nearest its top face
-  EXPECT_NEAR(world.penetration({30, -5.25f, 0}), 0.25, 1e-6);   // under the plane
-  EXPECT_NEAR(world.penetration({0, -3.0f, 0}), -2.0, 1e-6);     // outside all: the sphere and the plane 2 m off
+  EXPECT_NEAR(world.penetration({0, 0.25f, 0}), 0.75, 1e-6);    // in the sphere
+  EXPECT_NEAR(world.penetration({10, 1.5f, 0}), 0.5, 1e-6);     // in the box, nearest its top face
+  EXPECT_NEAR(world.penetration({30, -5.25f, 0}), 0.25, 1e-6);  // under the plane
+  EXPECT_NEAR(world.penetration({0, -3.0f, 0}), -2.0, 1e-6);    // outside all: the sphere and the plane 2 m off
   EXPECT_FALSE(world.penetrated(scene.margin));
   EXPECT_TRUE(world.penetrated(scene.margin * 1.01));
 }
