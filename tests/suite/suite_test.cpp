@@ -154,6 +154,26 @@ TEST(ShippedSuites, Scaling) {
   EXPECT_LT(gib, 8.0);
 }
 
+TEST(ShippedSuites, SceneSuitesRunEveryMethodAroundOneSphereWithContactAsAFeature) {
+  for (const char* name : {"drape", "ball"}) {
+    SCOPED_TRACE(name);
+    const Suite s = parse_suite(kSourceDir / "suites" / (std::string(name) + ".json"));
+    EXPECT_EQ(s.name, name);
+    EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kTcsb, Method::kPlainEqual}));
+    EXPECT_EQ(s.compression, (std::vector<double>{1.0, 0.75, 0.3}));
+    ASSERT_EQ(s.scene.colliders.size(), 1u);
+    EXPECT_EQ(s.scene.colliders[0].shape, ColliderShape::kSphere);
+    EXPECT_GT(s.feedback.contact_saliency, 0.0);
+    EXPECT_TRUE(s.fidelity.enabled);
+    EXPECT_TRUE(s.fidelity.ablations);  // the uniform grid, the comparison these scenes exist for
+  }
+  EXPECT_EQ(parse_suite(kSourceDir / "suites/drape.json").scene.colliders[0].motion, ColliderMotion::kStatic);
+  EXPECT_EQ(parse_suite(kSourceDir / "suites/ball.json").scene.colliders[0].motion, ColliderMotion::kDynamic);
+  // The paper's suites have no scene: their bodies are stepped solo, as always.
+  EXPECT_FALSE(parse_suite(kSourceDir / "suites/paper.json").scene.has_colliders());
+  EXPECT_FALSE(parse_suite(kSourceDir / "suites/ci.json").scene.has_colliders());
+}
+
 // ---- defaults and accepted forms ------------------------------------------------------------------------------
 
 const char* kMinimal = R"({
