@@ -29,10 +29,19 @@ bool is_child(const LodNode& block, TreeId n) {
 
 // ---- admission -----------------------------------------------------------------------------------------------
 
+bool TcSoftBody::anchored(TreeId id) const {
+  if (m_anchors.size() == 0) return false;  // the usual case, without reading the node's record
+  const int index = bullet_index(id);
+  if (index < 0) return false;
+  for (int a = 0; a < m_anchors.size(); ++a)
+    if (m_anchors[a].m_node == &m_nodes[index]) return true;
+  return false;
+}
+
 OpCheck TcSoftBody::can_refine(TreeId id) const {
   OpCheck check;
   const LodNode& node = tree().node(id);
-  if (state(id) != CutState::kActive || node.is_leaf()) return check;
+  if (state(id) != CutState::kActive || node.is_leaf() || anchored(id)) return check;
   bool neighbours_ready = true;
   const bool balanced = for_each_cut_neighbour(
       tree(), id, [this](TreeId n) { return committed(n); },
@@ -49,8 +58,10 @@ OpCheck TcSoftBody::can_coarsen(TreeId parent) const {
   OpCheck check;
   const LodNode& node = tree().node(parent);
   if (state(parent) != CutState::kOff || node.is_leaf() || !node.simulable()) return check;
-  for (int i = 0; i < node.child_count; ++i)
-    if (state(node.children[static_cast<std::size_t>(i)]) != CutState::kActive) return check;
+  for (int i = 0; i < node.child_count; ++i) {
+    const TreeId child = node.children[static_cast<std::size_t>(i)];
+    if (state(child) != CutState::kActive || anchored(child)) return check;
+  }
   bool neighbours_ready = true;
   // Looking one level below the parent finds the neighbours of its children; anything finer makes the walk report
   // an unbalanced side, which is exactly the case where coarsening would leave neighbours two levels apart.

@@ -121,11 +121,15 @@ class TcSoftBody : public btSoftBody {
   int link_reallocations() const { return link_reallocations_; }
 
   // ---- operations --------------------------------------------------------------------------------------------
-  /// Whether refine(id) may begin: id active and not a leaf, its neighbours active and none coarser than it.
+  /// Whether refine(id) may begin: id active, not a leaf and not anchored, its neighbours active and none coarser.
   OpCheck can_refine(TreeId id) const;
-  /// Whether coarse(parent) may begin: all its children active, it may be simulated (at most one pinned leaf), and
-  /// its neighbours active and none finer than its children.
+  /// Whether coarse(parent) may begin: all its children active and none anchored, it may be simulated (at most one
+  /// pinned leaf), and its neighbours active and none finer than its children.
   OpCheck can_coarsen(TreeId parent) const;
+  /// Whether a btSoftBody anchor (appendAnchor: a node attached to a rigid body) holds the simulated node `id`. An
+  /// operation would remove such a node, and Bullet's anchor, which holds a Node*, would silently move to whichever
+  /// node takes its place: anchored nodes stay in the cut. O(anchors).
+  bool anchored(TreeId id) const;
   /// Begins replacing `id` by its children. Requires can_refine(id).ok. O(1).
   void begin_refine(TreeId id);
   /// Begins replacing the children of `parent` by `parent`. Requires can_coarsen(parent).ok. O(1).

@@ -143,6 +143,18 @@ Validation TcSoftBody::validate() const {
     if (op.step < 0 || op.step >= settings_.blend_steps) fail("operation step out of range");
   }
   if (link_reallocations_ != 0) fail("the link array was reallocated during an operation");
+
+  // Anchors hold Node*: each must point at a simulated node that no operation is about to remove.
+  for (int a = 0; a < m_anchors.size(); ++a) {
+    const std::ptrdiff_t i = m_nodes.size() > 0 ? m_anchors[a].m_node - &m_nodes[0] : -1;
+    if (i < 0 || i >= m_nodes.size()) {
+      fail("anchor " + std::to_string(a) + ": points at no simulated node");
+      continue;
+    }
+    const TreeId id = tree_of_[static_cast<std::size_t>(i)];
+    if (state(id) != CutState::kActive || record(id).op >= 0)
+      fail("anchor " + std::to_string(a) + ": its node (tree " + std::to_string(id) + ") is part of an operation");
+  }
   return out;
 }
 

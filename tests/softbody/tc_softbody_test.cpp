@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <BulletCollision/CollisionShapes/btSphereShape.h>
+#include <BulletDynamics/Dynamics/btRigidBody.h>
+
 #include <random>
 
 #include "feedback/random_policy.h"
@@ -75,6 +78,36 @@ TEST(TcSoftBody, RefineAndCoarseOfOneBlockRoundTrip) {
   EXPECT_EQ(tc.node_count(), 17 * 17);
   EXPECT_EQ(tc.link_count(), 2 * 17 * 16);
   EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
+}
+
+TEST(TcSoftBody, AnAnchoredNodeStaysInTheCutAndValidateWatchesItsAnchor) {
+  // Bullet's anchors (a node attached to a rigid body) hold a Node*: an operation that removed the node would move
+  // the anchor to whichever node takes its slot, silently.
+  const auto net = testing::square_net(17);
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
+  btSphereShape shape(0.1f);
+  btRigidBody rigid(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &shape));
+  const TreeId leaf = net->index(6, 6);
+  tc.appendAnchor(tc.bullet_index(leaf), &rigid);
+  EXPECT_TRUE(tc.anchored(leaf));
+  const TreeId parent = net->lod().node(leaf).parent;
+  EXPECT_FALSE(tc.can_coarsen(parent).ok);                 // its block cannot merge
+  EXPECT_TRUE(tc.can_coarsen(net->lod().at(1, 1, 1)).ok);  // others can
+  RandomPolicy policy(11);
+  for (int step = 0; step < 200; ++step) {
+    tc.advance_blends();
+    policy.apply(tc, 120, 8);
+    tc.simulate_step(kDt);
+    ASSERT_TRUE(tc.validate().ok()) << "step " << step << ": " << tc.validate().summary();
+  }
+  ASSERT_GE(tc.bullet_index(leaf), 0);
+  EXPECT_EQ(tc.m_anchors[0].m_node, &tc.m_nodes[tc.bullet_index(leaf)]);  // still the node it was made for
+  EXPECT_LT(tc.node_count(), 17 * 17);                                    // while the rest of the cut changed
+  tc.m_anchors[0].m_node = tc.m_nodes.size() > 0 ? &tc.m_nodes[0] + tc.m_nodes.size() : nullptr;  // past the nodes
+  const Validation broken = tc.validate();
+  ASSERT_FALSE(broken.ok());
+  EXPECT_NE(broken.summary().find("anchor 0: points at no simulated node"), std::string::npos) << broken.summary();
 }
 
 TEST(TcSoftBody, BalanceForbidsNeighboursTwoLevelsApart) {
