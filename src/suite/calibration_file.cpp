@@ -77,6 +77,20 @@ std::string calibration_key(const Suite& suite) {
   text << "solver " << suite.solver.piterations << ' ' << suite.solver.viterations << ' ' << suite.solver.diterations
        << ' ' << fmt_number(suite.solver.damping) << ' ' << fmt_number(suite.solver.linear_stiffness) << '\n';
   text << "blend " << suite.tcsb.blend_steps << '\n';
+  // A fit holds only in the scene it was made in. Only with colliders, so the keys of suites without a scene (and
+  // the calibrations written for them) stay as they were.
+  const SceneSettings& scene = suite.scene;
+  if (scene.has_colliders()) {
+    const auto triple = [](const std::array<double, 3>& v) {
+      return fmt_number(v[0]) + ' ' + fmt_number(v[1]) + ' ' + fmt_number(v[2]);
+    };
+    text << "scene " << fmt_number(scene.margin) << ' ' << fmt_number(scene.friction) << ' '
+         << fmt_number(scene.sdf_voxel) << '\n';
+    for (const Collider& c : scene.colliders)
+      text << "collider " << static_cast<int>(c.shape) << ' ' << static_cast<int>(c.motion) << ' ' << triple(c.position)
+           << ' ' << fmt_number(c.radius) << ' ' << triple(c.half_extents) << ' ' << triple(c.normal) << ' '
+           << triple(c.velocity) << ' ' << fmt_number(c.mass) << ' ' << fmt_number(c.friction) << '\n';
+  }
   return sha256_hex(text.str());
 }
 

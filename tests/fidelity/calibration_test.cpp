@@ -95,6 +95,13 @@ TEST(CalibrationFile, FitsOnlyTheRegimeItWasFittedIn) {
   other.compression = {1.0, 0.75};
   EXPECT_NE(calibration_mismatch(c, other).find("uniform-grid fit"), std::string::npos);
   other = suite;
+  Collider sphere;
+  other.scene.colliders.push_back(sphere);  // a fit made without colliders does not hold with one
+  EXPECT_NE(calibration_mismatch(c, other).find("tcsb calibrate"), std::string::npos);
+  Suite moved = other;
+  moved.scene.colliders[0].position[1] += 0.5;  // nor with the collider elsewhere
+  EXPECT_NE(calibration_key(moved), calibration_key(other));
+  other = suite;
   other.name = "renamed";  // name, description, repetitions and fidelity settings do not matter
   other.repetitions = 9;
   EXPECT_EQ(calibration_mismatch(c, other), "");
