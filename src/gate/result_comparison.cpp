@@ -120,6 +120,18 @@ std::vector<std::string> machine_differences(const ResultView& base, const Resul
   return out;
 }
 
+std::string build_difference(const ResultView& a, const ResultView& b) {
+  static const char* const kBuildKeys[] = {"git_commit", "tcsb_version",   "compiler",
+                                           "cxx_flags",  "build_type",     "optimized",
+                                           "sanitized",  "bullet_version", "bullet_precision"};
+  for (const char* key : kBuildKeys) {
+    const ojson va = a.context.contains(key) ? a.context[key] : ojson();
+    const ojson vb = b.context.contains(key) ? b.context[key] : ojson();
+    if (va != vb) return std::string("context.") + key + ": " + brief(va) + " vs " + brief(vb);
+  }
+  return "";
+}
+
 std::string suite_difference(const ResultView& a, const ResultView& b, bool ignore_repetitions) {
   // The path is where the file happened to live on each machine; everything else describes what was run.
   ojson sa = a.suite, sb = b.suite;

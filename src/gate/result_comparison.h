@@ -70,6 +70,11 @@ std::string first_json_difference(const nlohmann::ordered_json& a, const nlohman
 /// file lived), nor, with `ignore_repetitions`, their repetitions (runs of one suite pooled across processes).
 std::string suite_difference(const ResultView& a, const ResultView& b, bool ignore_repetitions);
 
+/// The first context field that makes two runs different builds (commit, version, compiler, flags, build type,
+/// sanitizers, Bullet's version and precision), as "context.FIELD: A vs B"; "" when there is none. Their
+/// measurements are of different programs: they may be compared (that is what the gate is for), never pooled.
+std::string build_difference(const ResultView& a, const ResultView& b);
+
 /// The context fields that make two runs' absolute times incomparable (machine, compiler, build, Bullet, huge
 /// pages) and differ, each as "field: A vs B". Same-run ratios stay comparable whatever these say.
 std::vector<std::string> machine_differences(const ResultView& base, const ResultView& next);
