@@ -9,9 +9,11 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/run_support.h"
 #include "fidelity/calibration.h"
 #include "report/report_writer.h"
 #include "report/terminal_text.h"
+#include "suite/calibration_path.h"
 
 namespace tcsb::cli {
 
@@ -65,6 +67,8 @@ int check_calibration(const CalibrateArgs& args, const Suite& suite,
 
 int calibrate_command(const CalibrateArgs& args) {
   const std::filesystem::path suite_file = resolve_suite(args.suite);
+  check_out_is_not_input(args.out, suite_file);
+  check_out_is_not_input(args.out, args.check);
   std::string named;  // the suite's own calibration path, before it is cleared
   const Suite suite = parse_suite(suite_file, [&](Suite& s) {
     named = s.fidelity.calibration_path;
@@ -77,8 +81,9 @@ int calibrate_command(const CalibrateArgs& args) {
   std::filesystem::path out = args.out;
   if (out.empty())
     out = named.empty() ? suite_file.parent_path() / (suite_file.stem().string() + ".calibration.json")
-                        : suite_file.parent_path() / named;
+                        : calibration_file_path(suite_file, named);  // never outside the suite's tree
   if (const std::string why = output_problem(out); !why.empty()) throw UsageError("--out: " + why);
+  check_out_is_not_input(out.string(), suite_file);
   const Calibration c = calibrate_suite(suite, nets, {}, [&](const std::string& line) {
     if (!args.quiet) std::cout << terminal_safe(line) << std::endl;
   });

@@ -71,6 +71,7 @@ int frames_command(const FramesArgs& args) {
   const std::filesystem::path suite_file = resolve_suite(args.suite);
   check_out_is_not_input(args.out, suite_file);
   const Suite suite = parse_suite(suite_file);
+  check_out_is_not_suite_input(args.out, suite);
   refuse_axes(suite, "frames");
   const std::size_t net = net_index(suite, args.net);
   const double compression = compression_of(suite, args.compression);

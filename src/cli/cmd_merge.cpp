@@ -35,6 +35,8 @@ int merge_command(const MergeArgs& args) {
   } catch (const ResultFileError& e) {
     throw UsageError(e.what());
   }
+  // The suite and its calibration were read too (from where the shards' suite lived).
+  check_out_is_not_suite_input(args.out, merged.result.suite);
   for (const std::string& warning : merged.warnings) print_warning(warning);
   if (!args.quiet) print_console_report(merged.result, std::cerr);
   return write_report(json_text(merged_json(merged)), args.out);

@@ -10,6 +10,7 @@
 
 #include "base/json_file.h"
 #include "base/sha256.h"
+#include "suite/calibration_path.h"
 #include "suite/case_plan.h"
 #include "suite/suite_axes.h"
 #include "suite/suite_fields.h"
@@ -261,8 +262,8 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   if (adjust) adjust(s);  // before the memory check: it must see the suite that will run
   if (!s.fidelity.calibration_path.empty()) {
     if (!has_tcsb) r.fail("fidelity.calibration", "requires methods to contain \"tcsb\"");
-    // Relative to the suite file, so a suite and its calibration travel together.
-    const std::filesystem::path path = std::filesystem::path(file).parent_path() / s.fidelity.calibration_path;
+    // Relative to the suite file, so a suite and its calibration travel together (and never outside its tree).
+    const std::filesystem::path path = calibration_file_path(file, s.fidelity.calibration_path);
     Calibration c = parse_calibration_file(path);
     if (const std::string why = calibration_mismatch(c, s); !why.empty())
       r.fail("fidelity.calibration", path.string() + " does not fit this suite: " + why);
