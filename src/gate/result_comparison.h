@@ -81,7 +81,8 @@ std::vector<std::string> machine_differences(const ResultView& base, const Resul
 
 /// Compares `base` with `next`. Cases are matched by label and their repetitions by number, one to one and in any
 /// order (gate/one_to_one_match.h); whatever does not match is a kPresenceMetric change, even when the run is
-/// not deterministic, and only matched cases contribute timings. Throws SuiteMismatch when the suite blocks differ
+/// not deterministic, and only matched cases contribute timings. Throws SuiteMismatch when two cases of one label
+/// differ in net, method, compression or configuration (naming `next`'s field), or when the suite blocks differ
 /// in anything but their path (the name, the SHA-256 of the file, and every effective setting: steps, repetitions,
 /// solver, feedback, nets, methods, compression — a run may be narrowed from its file) or when the seeds differ.
 ResultComparison compare_results(const ResultView& base, const ResultView& next);
