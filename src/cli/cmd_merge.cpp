@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/result_file.h"
 #include "cli/run_support.h"
+#include "gate/run_consistency.h"
 #include "report/console_report.h"
 #include "report/json_report.h"
 #include "report/shard_merge.h"
@@ -28,7 +29,15 @@ int merge_command(const MergeArgs& args) {
   check_out_path(args.out);
   for (const std::string& shard : args.shards) check_out_is_not_input(args.out, shard);
   std::vector<ShardDocument> shards;
-  for (const std::string& file : args.shards) shards.push_back({file, load_result_file(file).document});
+  for (const std::string& file : args.shards) {
+    LoadedResult shard = load_result_file(file);
+    try {
+      check_run_is_possible(shard.view);  // as strictly as a result is checked before it is judged
+    } catch (const ResultFileError& e) {
+      throw UsageError(e.what());
+    }
+    shards.push_back({file, std::move(shard.document)});
+  }
   MergedShards merged;
   try {
     merged = merge_shards(shards);

@@ -1,6 +1,6 @@
 // Calibration files on the command line: a suite cannot steer where `tcsb calibrate` writes (nor where a run reads)
-// outside its own directory tree, and no command's --out may replace a file it reads (the suite's calibration
-// included).
+// outside its own directory tree, no command's --out may replace a file it reads (the suite's calibration
+// included), and shards of a calibrated suite merge wherever they lie.
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -75,6 +75,20 @@ TEST_F(Calibration, NoCommandsOutMayReplaceTheSuiteOrItsCalibration) {
     EXPECT_EQ(read_file(dir_ / "with.json"), suite);
     EXPECT_EQ(read_file(dir_ / "s.calibration.json"), calibration);
   }
+}
+
+TEST_F(Calibration, ShardsOfACalibratedSuiteMergeWhereverTheyLie) {
+  make_calibration();
+  fs::create_directories(dir_ / "shards");
+  for (const char* k : {"1", "2"}) {
+    const Outcome o = tcsb(std::string("run with.json --quiet --shard ") + k + "/2 --out shards/" + k + ".json");
+    ASSERT_EQ(o.exit_code, 0) << o.err;
+  }
+  // Looked up beside the suite, not the shards: a stale file of that name beside them is not read.
+  write_file(dir_ / "shards" / "s.calibration.json", "stale");
+  const Outcome merged = tcsb("merge shards/1.json shards/2.json --quiet --out merged.json");
+  EXPECT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_NE(read_file(dir_ / "merged.json").find("\"tcsb_calibrated\""), std::string::npos);
 }
 
 }  // namespace
