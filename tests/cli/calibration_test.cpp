@@ -1,6 +1,6 @@
 // Calibration files on the command line: a suite cannot steer where `tcsb calibrate` writes (nor where a run reads)
 // outside its own directory tree, no command's --out may replace a file it reads (the suite's calibration
-// included), and shards of a calibrated suite merge wherever they lie.
+// included), a calibration that fits no level is refused, and shards of a calibrated suite merge wherever they lie.
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -75,6 +75,17 @@ TEST_F(Calibration, NoCommandsOutMayReplaceTheSuiteOrItsCalibration) {
     EXPECT_EQ(read_file(dir_ / "with.json"), suite);
     EXPECT_EQ(read_file(dir_ / "s.calibration.json"), calibration);
   }
+}
+
+TEST_F(Calibration, ACalibrationWithoutTheLevelsTheNetsNeedIsRefused) {
+  make_calibration();
+  ojson calibration = ojson::parse(read_file(dir_ / "s.calibration.json"));
+  ASSERT_GE(calibration["levels"].size(), 1u);
+  calibration["levels"] = ojson::array();
+  write_file(dir_ / "s.calibration.json", calibration.dump(2));
+  expect_bad_input(tcsb("validate with.json"), "with.json: fidelity.calibration");
+  expect_bad_input(tcsb("run with.json --quiet --out r.json"), "\"levels\": []");
+  EXPECT_FALSE(fs::exists(dir_ / "r.json"));
 }
 
 TEST_F(Calibration, ShardsOfACalibratedSuiteMergeWhereverTheyLie) {
