@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "base/input_error.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/run_support.h"
@@ -75,6 +76,10 @@ int calibrate_command(const CalibrateArgs& args) {
     s.fidelity.calibration_path.clear();  // not read: it is what this command makes (and may be stale or missing)
   });
   refuse_axes(suite, "calibrate");
+  // A calibration without level fits is refused where it is used: do not fit and write one.
+  if (calibration_levels_needed(suite) == 0)
+    throw InputError(suite_file.string(), "nets",
+                     "a net's first LOD level is under 5 x 5 nodes (a net under 9 x 9): no level to calibrate");
   std::vector<std::shared_ptr<const Net>> nets;
   for (const NetSpec& spec : suite.nets) nets.push_back(std::make_shared<const Net>(spec));
   if (!args.check.empty()) return check_calibration(args, suite, nets);

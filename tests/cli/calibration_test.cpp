@@ -86,6 +86,12 @@ TEST_F(Calibration, ACalibrationWithoutTheLevelsTheNetsNeedIsRefused) {
   expect_bad_input(tcsb("validate with.json"), "with.json: fidelity.calibration");
   expect_bad_input(tcsb("run with.json --quiet --out r.json"), "\"levels\": []");
   EXPECT_FALSE(fs::exists(dir_ / "r.json"));
+  // Nor does calibrate write one: a net under 9 x 9 has no level to fit.
+  std::string tiny = nine_by_nine_suite("tiny", 1);
+  tiny.replace(tiny.find("\"width\": 9, \"height\": 9"), 23, "\"width\": 8, \"height\": 8");
+  write_file(dir_ / "tiny.json", tiny);
+  expect_bad_input(tcsb("calibrate tiny.json --quiet"), "tiny.json: nets");
+  EXPECT_FALSE(fs::exists(dir_ / "tiny.calibration.json"));
 }
 
 TEST_F(Calibration, ShardsOfACalibratedSuiteMergeWhereverTheyLie) {
