@@ -418,7 +418,7 @@ TEST_F(Fuzz, MergeJoinsMutatedShardsOrRefusesThemAndWritesNothing) {
   Mutator mutator(38001, /*extremes=*/true);
   const std::set<std::string> allowed{"suite.json", "s1.json",    "s2.json",   "bad.json",
                                       "out.json",   "stdout.txt", "stderr.txt"};
-  const int cases = TCSB_FUZZ_CASES / 8;
+  const int cases = TCSB_FUZZ_CASES / 12;
   for (int i = 0; i < cases; ++i) {
     std::string log;
     const std::size_t mutated = static_cast<std::size_t>(i % 2);
@@ -447,7 +447,7 @@ TEST_F(Fuzz, TaxJudgesMutatedRunsAndShardSetsOrRefusesThem) {
   Mutator mutator(38002, /*extremes=*/true);
   const std::set<std::string> allowed{"suite.json", "a.json",   "b.json",     "s1.json",   "s2.json",
                                       "bad.json",   "out.json", "stdout.txt", "stderr.txt"};
-  const int cases = TCSB_FUZZ_CASES / 8;
+  const int cases = TCSB_FUZZ_CASES / 12;
   for (int i = 0; i < cases; ++i) {
     std::string log;
     // Two runs, or a shard set; one of the pair mutated.
@@ -474,7 +474,7 @@ TEST_F(Fuzz, MutatedCalibrationFilesAreUsedOrRefusedByValidateAndRun) {
   Mutator mutator(38003, /*extremes=*/true);
   const std::set<std::string> allowed{
       "plain.json", "good.calibration.json", "suite.json", "c.json", "out.json", "stdout.txt", "stderr.txt"};
-  const int cases = TCSB_FUZZ_CASES / 8;
+  const int cases = TCSB_FUZZ_CASES / 12;
   for (int i = 0; i < cases; ++i) {
     std::string log;
     write_file(dir_ / "c.json", mutator.mutate(calibration, log));
