@@ -7,11 +7,14 @@
 #include <iostream>
 #include <sstream>
 
+#include "base/input_error.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/run_support.h"
 #include "fidelity/calibration.h"
 #include "report/report_writer.h"
 #include "report/terminal_text.h"
+#include "suite/calibration_path.h"
 
 namespace tcsb::cli {
 
@@ -65,20 +68,27 @@ int check_calibration(const CalibrateArgs& args, const Suite& suite,
 
 int calibrate_command(const CalibrateArgs& args) {
   const std::filesystem::path suite_file = resolve_suite(args.suite);
+  check_out_is_not_input(args.out, suite_file);
+  check_out_is_not_input(args.out, args.check);
   std::string named;  // the suite's own calibration path, before it is cleared
   const Suite suite = parse_suite(suite_file, [&](Suite& s) {
     named = s.fidelity.calibration_path;
     s.fidelity.calibration_path.clear();  // not read: it is what this command makes (and may be stale or missing)
   });
   refuse_axes(suite, "calibrate");
+  // A calibration without level fits is refused where it is used: do not fit and write one.
+  if (calibration_levels_needed(suite) == 0)
+    throw InputError(suite_file.string(), "nets",
+                     "a net's first LOD level is under 5 x 5 nodes (a net under 9 x 9): no level to calibrate");
   std::vector<std::shared_ptr<const Net>> nets;
   for (const NetSpec& spec : suite.nets) nets.push_back(std::make_shared<const Net>(spec));
   if (!args.check.empty()) return check_calibration(args, suite, nets);
   std::filesystem::path out = args.out;
   if (out.empty())
     out = named.empty() ? suite_file.parent_path() / (suite_file.stem().string() + ".calibration.json")
-                        : suite_file.parent_path() / named;
+                        : calibration_file_path(suite_file, named);  // never outside the suite's tree
   if (const std::string why = output_problem(out); !why.empty()) throw UsageError("--out: " + why);
+  check_out_is_not_input(out.string(), suite_file);
   const Calibration c = calibrate_suite(suite, nets, {}, [&](const std::string& line) {
     if (!args.quiet) std::cout << terminal_safe(line) << std::endl;
   });

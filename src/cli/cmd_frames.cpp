@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 
+#include "base/memory_limits.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/flag_values.h"
@@ -13,6 +14,7 @@
 #include "report/json_report.h"
 #include "run/context.h"
 #include "run/out_of_memory.h"
+#include "suite/suite_memory.h"
 
 namespace tcsb::cli {
 
@@ -46,6 +48,25 @@ void check_steps(const std::vector<int>& steps) {
   }
 }
 
+/// What one frame costs per grid node, from the recording to the written text: both bodies' points and TC-SB's
+/// nodes and links (about 100 bytes), their JSON tree (about 700) and text (about 250), with room to spare.
+constexpr double kFrameBytesPerNode = 1200.0;
+
+/// Refuses --steps before anything runs when the frames would not fit this process's memory (80 % of the smallest
+/// headroom, as the suites' guard): the recording and its JSON grow with the number of frames, unbounded otherwise.
+void check_frames_fit(const Suite& suite, std::size_t net, std::size_t frames) {
+  const std::optional<MemoryHeadroom> headroom = smallest_headroom(memory_headrooms());
+  if (!headroom) return;
+  const NetSpec& spec = suite.nets[net];
+  const double needed = kFrameBytesPerNode * static_cast<double>(frames) * static_cast<double>(spec.node_count());
+  const double usable = 0.8 * static_cast<double>(headroom->bytes);
+  if (needed <= usable) return;
+  throw UsageError("suite " + suite.name + ", frames of net " + spec.name + ": --steps asks for " +
+                   std::to_string(frames) + " frames of " + std::to_string(spec.node_count()) + " nodes, about " +
+                   format_bytes(needed) + ", but only " + format_bytes(usable) + " may be used (80% of the headroom " +
+                   "under " + headroom->source + "): it would run out of memory; record fewer steps");
+}
+
 }  // namespace
 
 CLI::App* add_frames_command(CLI::App& app, FramesArgs& args) {
@@ -71,8 +92,10 @@ int frames_command(const FramesArgs& args) {
   const std::filesystem::path suite_file = resolve_suite(args.suite);
   check_out_is_not_input(args.out, suite_file);
   const Suite suite = parse_suite(suite_file);
+  check_out_is_not_suite_input(args.out, suite);
   refuse_axes(suite, "frames");
   const std::size_t net = net_index(suite, args.net);
+  check_frames_fit(suite, net, args.steps.size());
   const double compression = compression_of(suite, args.compression);
   if (args.calibrated && !suite.calibration)
     throw UsageError("--calibrated: suite " + suite.name + " names no calibration (fidelity.calibration)");

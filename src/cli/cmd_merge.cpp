@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/result_file.h"
 #include "cli/run_support.h"
+#include "gate/run_consistency.h"
 #include "report/console_report.h"
 #include "report/json_report.h"
 #include "report/shard_merge.h"
@@ -28,13 +29,23 @@ int merge_command(const MergeArgs& args) {
   check_out_path(args.out);
   for (const std::string& shard : args.shards) check_out_is_not_input(args.out, shard);
   std::vector<ShardDocument> shards;
-  for (const std::string& file : args.shards) shards.push_back({file, load_result_file(file).document});
+  for (const std::string& file : args.shards) {
+    LoadedResult shard = load_result_file(file);
+    try {
+      check_run_is_possible(shard.view);  // as strictly as a result is checked before it is judged
+    } catch (const ResultFileError& e) {
+      throw UsageError(e.what());
+    }
+    shards.push_back({file, std::move(shard.document)});
+  }
   MergedShards merged;
   try {
     merged = merge_shards(shards);
   } catch (const ResultFileError& e) {
     throw UsageError(e.what());
   }
+  // The suite and its calibration were read too (from where the shards' suite lived).
+  check_out_is_not_suite_input(args.out, merged.result.suite);
   for (const std::string& warning : merged.warnings) print_warning(warning);
   if (!args.quiet) print_console_report(merged.result, std::cerr);
   return write_report(json_text(merged_json(merged)), args.out);

@@ -60,6 +60,7 @@ int reproduce_command(const ReproduceArgs& args) {
   const PaperReference paper = load_paper_reference(paper_file);
   // --repetitions is applied before parse_suite's memory check (see run_command).
   const Suite suite = parse_suite(suite_file, [&args](Suite& s) { apply_repetitions(args.repetitions, s); });
+  check_out_is_not_suite_input(args.out, suite);
   refuse_axes(suite, "reproduce");  // its claims and extra repetitions are of one configuration
   RunResult result = run_on_console(suite, args.quiet);
 

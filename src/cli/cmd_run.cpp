@@ -94,6 +94,7 @@ int run_and_report(const Suite& suite, const RunArgs& args) {
   const std::unique_ptr<ReportFormat> format = checked_format(args.format);
   const std::optional<ShardIndex> shard = checked_shard(args);
   check_out_path(args.out);
+  check_out_is_not_suite_input(args.out, suite);
   const RunResult result = run_on_console(suite, args.quiet, shard);
   return write_report(format->render(result), args.out);
 }

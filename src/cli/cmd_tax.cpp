@@ -12,6 +12,8 @@
 #include "cli/result_file.h"
 #include "cli/run_support.h"
 #include "gate/result_comparison.h"
+#include "gate/run_consistency.h"
+#include "gate/same_process.h"
 #include "report/json_report.h"
 #include "report/tax_report.h"
 #include "report/text_table.h"
@@ -28,13 +30,29 @@ void check_target(const TaxArgs& args) {
     throw UsageError("--min-nodes: expected a node count >= 1, got " + std::to_string(args.min_nodes));
 }
 
-/// The same file twice (by path or by content) would count its repetitions twice and narrow the interval.
+/// Each process counts once: the same file twice (by path), or two files holding one process's measurements (a
+/// copy with its date edited, a merged result beside one of its shards) would count its repetitions twice and
+/// narrow the interval.
 void check_distinct(const std::vector<std::string>& files, const std::vector<LoadedResult>& runs) {
   for (std::size_t i = 0; i < runs.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
       std::error_code ec;
-      if (std::filesystem::equivalent(files[i], files[j], ec) || runs[i].document == runs[j].document)
-        throw UsageError(files[i] + ": the same run as " + files[j] + " (each run may be pooled once)");
+      std::string why = std::filesystem::equivalent(files[i], files[j], ec) ? "the same file" : "";
+      if (why.empty()) why = shared_measurement(runs[j].view, runs[i].view);
+      if (!why.empty())
+        throw UsageError(files[i] + ": the same run as " + files[j] + " (" + why +
+                         "; each process may be pooled once)");
+    }
+  }
+}
+
+/// A run no `tcsb run` could have written is not judged (gate/run_consistency.h).
+void check_possible(const std::vector<LoadedResult>& runs) {
+  for (const LoadedResult& r : runs) {
+    try {
+      check_run_is_possible(r.view);
+    } catch (const ResultFileError& e) {
+      throw UsageError(e.what());
     }
   }
 }
@@ -67,6 +85,7 @@ int tax_command(const TaxArgs& args) {
   for (const std::string& run : args.runs) check_out_is_not_input(args.out, run);
   std::vector<LoadedResult> loaded;
   for (const std::string& run : args.runs) loaded.push_back(load_result_file(run));
+  check_possible(loaded);
   check_distinct(args.runs, loaded);
   std::vector<ResultView> views;
   for (const LoadedResult& r : loaded) views.push_back(r.view);

@@ -14,6 +14,7 @@
 #include "run/context.h"
 #include "run/runner.h"
 #include "run/stall.h"
+#include "suite/calibration_path.h"
 #include "suite/shard_plan.h"
 
 namespace tcsb::cli {
@@ -43,6 +44,12 @@ void check_out_is_not_input(const std::string& out, const std::filesystem::path&
     throw UsageError(option + " " + out + ": is the input file " + input.string() +
                      " (writing it would replace what is being read); choose another file");
   }
+}
+
+void check_out_is_not_suite_input(const std::string& out, const Suite& suite, const std::string& option) {
+  check_out_is_not_input(out, suite.path, option);
+  if (!suite.fidelity.calibration_path.empty())
+    check_out_is_not_input(out, calibration_file_path(suite.path, suite.fidelity.calibration_path), option);
 }
 
 double checked_budget(double compression) {

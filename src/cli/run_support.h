@@ -27,6 +27,9 @@ void check_out_path(const std::string& out, const std::string& option = "--out")
 void check_out_is_not_input(const std::string& out, const std::filesystem::path& input,
                             const std::string& option = "--out");
 
+/// check_out_is_not_input for every file a parsed suite was read from: the suite file and its calibration.
+void check_out_is_not_suite_input(const std::string& out, const Suite& suite, const std::string& option = "--out");
+
 /// The names of the output formats, comma-separated ("json, gbench, ..."), for --format's help and errors.
 std::string known_formats();
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cli/cli_common.h"
+#include "report/report_writer.h"
 
 namespace tcsb::cli {
 namespace {
@@ -66,6 +67,7 @@ RecordingFdBuffer* stdout_buffer = nullptr;
 
 void prepare_standard_streams() {
   std::signal(SIGPIPE, SIG_IGN);
+  remove_temporary_files_on_signals();  // SIGXFSZ a write failure; SIGINT/SIGTERM leave no temporary file
   for (int fd = 0; fd <= 2; ++fd) {
     if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
     // open returns the lowest free descriptor: `fd` itself, since the lower ones are open by now.

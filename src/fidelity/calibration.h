@@ -22,11 +22,11 @@ using CalibrationProgress = std::function<void(const std::string& line)>;
 
 /// The search's settings.
 struct CalibrationSearch {
-  double lo = 0.02;         ///< smallest kLST tried
-  double hi = 1.0;          ///< largest (the solver's usual material)
-  int scan_points = 7;      ///< uniform scan before the golden section
-  double tolerance = 0.01;  ///< final bracket width in kLST
-  int max_levels = 3;       ///< fit levels 1 .. this (fewer when a net's level grid gets under 5 x 5)
+  double lo = 0.02;                       ///< smallest kLST tried
+  double hi = 1.0;                        ///< largest (the solver's usual material)
+  int scan_points = 7;                    ///< uniform scan before the golden section
+  double tolerance = 0.01;                ///< final bracket width in kLST
+  int max_levels = kMaxCalibratedLevels;  ///< fit levels 1 .. this (fewer when a net's level grid gets under 5 x 5)
 };
 
 /// Fits `suite` (its nets, built as `nets`, same order): the levels, then the uniform grid at each compression target

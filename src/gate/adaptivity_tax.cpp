@@ -17,13 +17,12 @@ namespace {
 using ojson = nlohmann::ordered_json;
 
 /// Runs pooled into one verdict must have measured the same thing with the same code: the same suite and settings
-/// (each may have run its own number of repetitions) and seed, and the same build.
+/// (each may have run its own number of repetitions) and seed, and the same build (commit, compiler, flags, build
+/// type, sanitizers, Bullet's precision: a Debug or double-precision run is another population, not more noise).
 void check_poolable(const std::vector<ResultView>& runs) {
-  const auto commit = [](const ResultView& r) { return r.context.value("git_commit", ojson()); };
   for (std::size_t i = 1; i < runs.size(); ++i) {
     std::string difference = suite_difference(runs.front(), runs[i], true);
-    if (difference.empty() && commit(runs.front()) != commit(runs[i]))
-      difference = "context.git_commit: " + commit(runs.front()).dump() + " vs " + commit(runs[i]).dump();
+    if (difference.empty()) difference = build_difference(runs.front(), runs[i]);
     if (!difference.empty())
       throw SuiteMismatch(runs.front().file + " and " + runs[i].file +
                           " cannot be pooled: they are runs of different suites, settings or builds (" + difference +
@@ -100,11 +99,13 @@ void finish_claim(NetTax& t, const std::string& failure, std::size_t fewest, con
 void judge(NetSamples& s, const TaxTarget& target) {
   NetTax& t = s.tax;
   std::vector<double> pooled;
+  // Only the runs that have this net are resampled: a run without it (a shard of other nets) has no ratio to give,
+  // and drawing it would add an empty group, whose median reads as a ratio of 0.
   std::vector<std::vector<double>> per_run;
   for (const Pairs& pairs : s.per_run) {
     const std::vector<double> run = step_ratios(pairs);
-    per_run.push_back(run);
     if (run.empty()) continue;
+    per_run.push_back(run);
     ++t.runs;
     t.run_medians.push_back(median(run));
     pooled.insert(pooled.end(), run.begin(), run.end());

@@ -102,6 +102,22 @@ bool has_time_budget(const ResultView& r) {
   return budget != feedback->end() && budget->is_number() && budget->get<double>() > 0.0;
 }
 
+/// Cases pair by label, but the gate reads their other placing fields (a TC-SB case's plain partner is found by
+/// net and configuration): a case whose net, method, compression or configuration differs from its baseline's under
+/// the same label is not the case the baseline measured, and would leave a metric silently ungated.
+void check_same_placement(const ResultView& base, std::size_t i, const ResultView& next, std::size_t j) {
+  const CaseView &a = base.cases[i], &b = next.cases[j];
+  const auto refuse = [&](const char* field, const std::string& va, const std::string& vb) {
+    throw SuiteMismatch(next.file + ": cases[" + std::to_string(j) + "]." + field + ": " + vb + ", but " + base.file +
+                        "'s case " + a.label + " has " + va +
+                        " (a case's label, net, method, compression and configuration must agree)");
+  };
+  if (a.net != b.net) refuse("net", brief(a.net), brief(b.net));
+  if (a.method != b.method) refuse("method", brief(a.method), brief(b.method));
+  if (a.compression != b.compression) refuse("compression", text(a.compression), text(b.compression));
+  if (a.configuration != b.configuration) refuse("configuration.label", brief(a.configuration), brief(b.configuration));
+}
+
 }  // namespace
 
 std::vector<std::string> machine_differences(const ResultView& base, const ResultView& next) {
@@ -118,6 +134,18 @@ std::vector<std::string> machine_differences(const ResultView& base, const Resul
     if (a != b) out.push_back(std::string(key) + ": " + brief(a) + " vs " + brief(b));
   }
   return out;
+}
+
+std::string build_difference(const ResultView& a, const ResultView& b) {
+  static const char* const kBuildKeys[] = {"git_commit", "tcsb_version",   "compiler",
+                                           "cxx_flags",  "build_type",     "optimized",
+                                           "sanitized",  "bullet_version", "bullet_precision"};
+  for (const char* key : kBuildKeys) {
+    const ojson va = a.context.contains(key) ? a.context[key] : ojson();
+    const ojson vb = b.context.contains(key) ? b.context[key] : ojson();
+    if (va != vb) return std::string("context.") + key + ": " + brief(va) + " vs " + brief(vb);
+  }
+  return "";
 }
 
 std::string suite_difference(const ResultView& a, const ResultView& b, bool ignore_repetitions) {
@@ -178,6 +206,7 @@ ResultComparison compare_results(const ResultView& base, const ResultView& next)
     changes.add(u.key, kPresenceMetric, std::nullopt, occurrence(u.base), occurrence(u.next));
   }
 
+  for (const auto& [i, j] : match.pairs) check_same_placement(base, i, next, j);
   for (const auto& [i, j] : match.pairs) {
     const CaseView& a = base.cases[i];
     const CaseView& b = next.cases[j];

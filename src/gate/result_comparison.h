@@ -70,13 +70,19 @@ std::string first_json_difference(const nlohmann::ordered_json& a, const nlohman
 /// file lived), nor, with `ignore_repetitions`, their repetitions (runs of one suite pooled across processes).
 std::string suite_difference(const ResultView& a, const ResultView& b, bool ignore_repetitions);
 
+/// The first context field that makes two runs different builds (commit, version, compiler, flags, build type,
+/// sanitizers, Bullet's version and precision), as "context.FIELD: A vs B"; "" when there is none. Their
+/// measurements are of different programs: they may be compared (that is what the gate is for), never pooled.
+std::string build_difference(const ResultView& a, const ResultView& b);
+
 /// The context fields that make two runs' absolute times incomparable (machine, compiler, build, Bullet, huge
 /// pages) and differ, each as "field: A vs B". Same-run ratios stay comparable whatever these say.
 std::vector<std::string> machine_differences(const ResultView& base, const ResultView& next);
 
 /// Compares `base` with `next`. Cases are matched by label and their repetitions by number, one to one and in any
 /// order (gate/one_to_one_match.h); whatever does not match is a kPresenceMetric change, even when the run is
-/// not deterministic, and only matched cases contribute timings. Throws SuiteMismatch when the suite blocks differ
+/// not deterministic, and only matched cases contribute timings. Throws SuiteMismatch when two cases of one label
+/// differ in net, method, compression or configuration (naming `next`'s field), or when the suite blocks differ
 /// in anything but their path (the name, the SHA-256 of the file, and every effective setting: steps, repetitions,
 /// solver, feedback, nets, methods, compression — a run may be narrowed from its file) or when the seeds differ.
 ResultComparison compare_results(const ResultView& base, const ResultView& next);

@@ -1,5 +1,6 @@
 #include "report/github_action_export.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "analysis/statistics.h"
@@ -46,7 +47,10 @@ ojson github_action_speedups(const ResultView& result) {
     // plain / TC-SB per repetition: the reciprocal of the paired ratio, so that bigger is better.
     std::vector<double> speedups;
     for (const double ratio : paired_step_ratios(result, i, *plain)) {
-      if (ratio > 0.0) speedups.push_back(1.0 / ratio);
+      // A ratio can be finite and its reciprocal not (1e308 ms against 0.5 ms): such a pair has no speed-up to
+      // show, and summarising an infinity would be an internal error instead of a page.
+      const double speedup = 1.0 / ratio;
+      if (ratio > 0.0 && std::isfinite(speedup)) speedups.push_back(speedup);
     }
     if (speedups.empty()) continue;
     const Summary s = summarize(speedups);

@@ -112,14 +112,20 @@ ojson summary_json(const Summary& s) {
           {"max", value(s.max)}, {"unstable", s.unstable}};
 }
 
+/// A repetition's step time: null when it diverged before timing a step (at step 0, say), as every reader expects
+/// of a repetition without one; its status and diverged_step say why. A step takes time: 0 would read as a value.
+ojson step_time_json(const RepetitionResult& r, double ms) {
+  return r.status != "ok" && !(ms > 0) ? ojson(nullptr) : json_number(ms);
+}
+
 ojson repetition_json(const RepetitionResult& r) {
   ojson j = {
       {"repetition", r.repetition},
       {"status", r.status},
       {"diverged_step", json_integer(r.diverged_step)},
       {"diverged_reason", r.diverged_reason},
-      {"mean_step_ms", json_number(r.mean_step_ms)},
-      {"median_step_ms", json_number(r.median_step_ms)},
+      {"mean_step_ms", step_time_json(r, r.mean_step_ms)},
+      {"median_step_ms", step_time_json(r, r.median_step_ms)},
       {"mean_nodes", json_number(r.mean_nodes)},
       {"mean_links", json_number(r.mean_links)},
       {"mean_interpolations", json_number(r.mean_interpolations)},

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <climits>
+#include <csignal>
 #include <cstring>
 
 namespace tcsb {
@@ -42,18 +43,36 @@ mode_t new_file_mode() {
   return 0666 & ~mask;
 }
 
-/// A temporary file made by mkstemp in `dir`: removed again unless it was renamed into place.
+/// The temporary file being written, for the signal handler: a fixed buffer (a handler may not allocate), valid
+/// while `g_temporary_set` is 1.
+char g_temporary[PATH_MAX + 1];
+volatile std::sig_atomic_t g_temporary_set = 0;
+
+/// Removes the temporary file, then ends the process by the same signal (its exit status stays the signal's).
+extern "C" void remove_temporary_and_end(int signal) {
+  if (g_temporary_set) ::unlink(g_temporary);
+  ::signal(signal, SIG_DFL);
+  ::raise(signal);
+}
+
+/// A temporary file made by mkstemp in `dir`: removed again unless it was renamed into place, also when a signal
+/// ends the process meanwhile (remove_temporary_files_on_signals).
 class TempFile {
  public:
   explicit TempFile(const fs::path& dir) : name_((dir / ".tcsb-out-XXXXXX").string()) {
     fd_ = ::mkostemp(name_.data(), O_CLOEXEC);
     error_ = fd_ < 0 ? errno : 0;
+    if (created() && name_.size() < sizeof g_temporary) {
+      std::memcpy(g_temporary, name_.c_str(), name_.size() + 1);
+      g_temporary_set = 1;
+    }
   }
   TempFile(const TempFile&) = delete;
   TempFile& operator=(const TempFile&) = delete;
   ~TempFile() {
     if (fd_ >= 0) ::close(fd_);
     if (created() && !renamed_) ::unlink(name_.c_str());
+    g_temporary_set = 0;  // after: a signal in between removes what is gone already, harmlessly
   }
   bool created() const { return error_ == 0; }
   int error() const { return error_; }
@@ -133,6 +152,18 @@ void write_file_atomically(const fs::path& given, const std::string& text) {
   if (!write_all(tmp.fd(), text)) fail(path, "", errno);
   if (!tmp.close()) fail(path, "", errno);
   if (!tmp.rename_to(path)) fail(path, "cannot rename the temporary file into place: ", errno);
+}
+
+void remove_temporary_files_on_signals() {
+  std::signal(SIGXFSZ, SIG_IGN);
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction previous {};
+    if (::sigaction(signal, nullptr, &previous) != 0 || previous.sa_handler == SIG_IGN) continue;
+    struct sigaction action {};
+    action.sa_handler = remove_temporary_and_end;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(signal, &action, nullptr);
+  }
 }
 
 std::string output_problem(const fs::path& given) {

@@ -23,6 +23,12 @@ class WriteError : public std::runtime_error {
 /// replaced. The new file gets the permissions an ordinary new file would (0666 less the umask).
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 
+/// Makes the signals that end the process mid-write leave no temporary file behind: SIGXFSZ (a write beyond
+/// `ulimit -f`) is ignored, so the write fails with EFBIG and is a WriteError (exit 3) like a full disk; SIGINT,
+/// SIGTERM and SIGHUP remove the temporary file being written, if any, and then end the process as they would
+/// have (a signal the parent set to be ignored stays ignored). Call once, first thing in main.
+void remove_temporary_files_on_signals();
+
 /// Why write_file_atomically(path, ...) would fail now, or "" if it should succeed: the directory is missing, the
 /// path is a directory, the file name is longer than the file system allows, or no file can be created beside it
 /// (tried for real, with a temporary file that is removed at once: root passes access() on read-only mounts).

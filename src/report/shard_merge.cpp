@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <set>
@@ -50,6 +51,12 @@ class Reader {
     if (!j.is_number()) fail(path + "." + key, "must be a number or null");
     return j.get<double>();
   }
+  /// number() that no run writes below 0: a time, a mean count (null, NaN, passes: nothing was measured).
+  double non_negative(const ojson& parent, const std::string& path, const std::string& key) const {
+    const double v = number(parent, path, key);
+    if (v < 0) fail(path + "." + key, "must be >= 0, got " + at(parent, path, key).dump());
+    return v;
+  }
   std::int64_t integer(const ojson& parent, const std::string& path, const std::string& key) const {
     const ojson& j = at(parent, path, key);
     if (!j.is_number_integer()) fail(path + "." + key, "must be an integer");
@@ -91,9 +98,12 @@ Suite rebuild_suite(const ShardDocument& shard) {
   const ojson& doc = shard.document;
   const std::string text = r.string(r.at(doc, "", "merge_data"), "merge_data", "suite_file");
   const ojson& block = r.at(doc, "", "suite");
+  // Parsed as the file it was, where it was: its calibration (fidelity.calibration, relative to the suite) lies
+  // beside the suite, not beside the shard, where a stale file of that name would be taken for it.
+  const std::string suite_path = r.string(block, "suite", "path");
   Suite suite;
   try {
-    suite = parse_suite_text(text, shard.file + ": merge_data.suite_file", [&](Suite& s) {
+    suite = parse_suite_text(text, suite_path, [&](Suite& s) {
       s.methods.clear();
       for (const ojson& m : r.at(block, "suite", "methods")) {
         const std::string name = m.is_string() ? m.get<std::string>() : "";
@@ -114,7 +124,7 @@ Suite rebuild_suite(const ShardDocument& shard) {
     throw ResultFileError(shard.file, "merge_data.suite_file", e.what());
   }
   suite.run_units.clear();
-  suite.path = r.string(block, "suite", "path");
+  suite.path = suite_path;
   if (const std::string d = first_json_difference(suite_json(suite), block, "suite"); !d.empty()) {
     r.fail("suite", "does not match the suite file in merge_data.suite_file (" + d + ")");
   }
@@ -128,16 +138,16 @@ RepetitionResult read_repetition(const Reader& r, const ojson& j, const std::str
   rep.status = r.string(j, path, "status");
   rep.diverged_step = r.integer_or_null(j, path, "diverged_step");
   rep.diverged_reason = r.string(j, path, "diverged_reason");
-  rep.mean_step_ms = r.number(j, path, "mean_step_ms");
-  rep.median_step_ms = r.number(j, path, "median_step_ms");
-  rep.mean_nodes = r.number(j, path, "mean_nodes");
-  rep.mean_links = r.number(j, path, "mean_links");
-  rep.mean_interpolations = r.number(j, path, "mean_interpolations");
-  rep.mean_feedback_ms = r.number(j, path, "mean_feedback_ms");
-  rep.mean_feedback_total_ms = r.number(j, path, "mean_feedback_total_ms");
+  rep.mean_step_ms = r.non_negative(j, path, "mean_step_ms");
+  rep.median_step_ms = r.non_negative(j, path, "median_step_ms");
+  rep.mean_nodes = r.non_negative(j, path, "mean_nodes");
+  rep.mean_links = r.non_negative(j, path, "mean_links");
+  rep.mean_interpolations = r.non_negative(j, path, "mean_interpolations");
+  rep.mean_feedback_ms = r.non_negative(j, path, "mean_feedback_ms");
+  rep.mean_feedback_total_ms = r.non_negative(j, path, "mean_feedback_total_ms");
   rep.operations = r.integer(j, path, "operations");
   rep.final_state_hash = r.string(j, path, "final_state_hash");
-  rep.build_ms = r.number(j, path, "build_ms");
+  rep.build_ms = r.non_negative(j, path, "build_ms");
   return rep;
 }
 
@@ -153,8 +163,10 @@ std::vector<OpSample> read_op_samples(const Reader& r, const ojson& data, const 
   const std::size_t size = all.front()->is_array() ? all.front()->size() : 0;
   for (const ojson* column : all) {
     if (!column->is_array() || column->size() != size) r.fail(path, "columns must be arrays of one length");
+    // Times and counts: a sample of -1 ns would become a negative operation time in Table 1.
     for (const ojson& v : *column)
-      if (!v.is_number_integer()) r.fail(path, "columns must hold integers");
+      if (!v.is_number_integer() || v.get<std::int64_t>() < 0 || v.get<std::int64_t>() > INT32_MAX)
+        r.fail(path, "columns must hold integers in [0, 2^31)");
   }
   const auto value = [&](std::size_t column, std::size_t i) { return (*all[column])[i].get<std::int32_t>(); };
   std::vector<OpSample> samples(size);

@@ -65,6 +65,22 @@ std::optional<double> Calibration::uniform_stiffness(double compression) const {
   return std::nullopt;
 }
 
+int calibration_levels_needed(const Suite& suite) {
+  int levels = kMaxCalibratedLevels;
+  for (const NetSpec& n : suite.nets) {
+    // Level l of the LOD tree is ceil(size / 2^l) wide and high (net/lod_tree.cpp); fitted while both are >= 5.
+    int usable = 0;
+    for (long long w = n.width, h = n.height; usable < levels;) {
+      w = (w + 1) / 2;
+      h = (h + 1) / 2;
+      if (w < 5 || h < 5) break;
+      ++usable;
+    }
+    levels = usable;
+  }
+  return levels;
+}
+
 std::string calibration_key(const Suite& suite) {
   // Shortest round-trip text for every number, in a fixed order: equal settings give equal keys on every platform.
   std::ostringstream text;
@@ -155,6 +171,10 @@ std::string calibration_mismatch(const Calibration& c, const Suite& suite) {
   if (c.key != calibration_key(suite))
     return "fitted for other nets, dt, gravity, steps or solver settings (key " + c.key.substr(0, 12) +
            "..., the suite's " + calibration_key(suite).substr(0, 12) + "...); run `tcsb calibrate` again";
+  if (c.levels.empty()) return "it fits no LOD level (\"levels\": []): run `tcsb calibrate` again";
+  if (const int needed = calibration_levels_needed(suite); static_cast<int>(c.levels.size()) < needed)
+    return "it fits " + std::to_string(c.levels.size()) + " LOD level(s), the suite's nets need " +
+           std::to_string(needed) + "; run `tcsb calibrate` again";
   for (const double t : suite.compression)
     if (t < 1.0 && !c.uniform_stiffness(t))
       return "it has no uniform-grid fit for the compression target " + fmt_number(t);

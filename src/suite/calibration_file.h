@@ -39,6 +39,14 @@ struct Calibration {
   std::optional<double> uniform_stiffness(double compression) const;
 };
 
+/// The most LOD levels `tcsb calibrate` fits (CalibrationSearch::max_levels, fidelity/calibration.h): the levels
+/// above take the last fitted value.
+inline constexpr int kMaxCalibratedLevels = 3;
+
+/// The levels a calibration of `suite` must fit: 1 .. kMaxCalibratedLevels, stopping before a level whose grid is
+/// under 5 x 5 on any of its nets (fidelity/calibration.h's calibrated_level_count, from the nets' sizes alone).
+int calibration_levels_needed(const Suite& suite);
+
 /// SHA-256 over what the fit depends on: every net's geometry, mass and pins, dt, gravity, steps, warm-up and the
 /// solver settings. Not the suite's name, description, methods, repetitions, feedback or fidelity block: a suite
 /// that differs only there can share the calibration.
@@ -50,7 +58,9 @@ std::string calibration_json_text(const Calibration& calibration);
 /// Reads a calibration file. Throws InputError("FILE: FIELD: problem") on a bad file.
 Calibration parse_calibration_file(const std::filesystem::path& path);
 
-/// Empty when `calibration` was fitted for `suite`'s regime; else why not (one phrase naming what differs).
+/// Empty when `calibration` was fitted for `suite`'s regime and fits every level its nets need
+/// (calibration_levels_needed; none at all, "levels": [], never: the calibrated TC-SB would run uncalibrated under
+/// that name); else why not (one phrase naming what differs).
 std::string calibration_mismatch(const Calibration& calibration, const Suite& suite);
 
 }  // namespace tcsb

@@ -25,6 +25,21 @@ std::vector<CaseKey> expand_cases(const Suite& suite) {
   return cases;
 }
 
+std::uint64_t case_count(const Suite& suite) {
+  std::uint64_t per_net = 0;
+  for (const Method method : suite.methods) {
+    if (method == Method::kTcsb) {
+      per_net += suite.compression.size();
+    } else if (method == Method::kPlainEqual) {
+      for (const double target : suite.compression) per_net += target < 1.0;
+    } else {
+      ++per_net;
+    }
+  }
+  // Each factor is bounded by what a 16 MiB file can list: the product of three fits 64 bits.
+  return static_cast<std::uint64_t>(configuration_count(suite)) * suite.nets.size() * per_net;
+}
+
 std::size_t cases_per_configuration(const Suite& suite) {
   Suite one = suite;  // the cases of one configuration: the same for each
   one.configurations.clear();

@@ -31,6 +31,13 @@ struct CaseKey {
 /// below 1 (in suite order); plain and bullet_patch have no compression. Every configuration has the same cases.
 std::vector<CaseKey> expand_cases(const Suite& suite);
 
+/// The most cases a suite may expand to (configurations x nets x each net's cases): far more than any run can time,
+/// few enough that expanding them takes milliseconds and tens of MB, not the machine's memory.
+inline constexpr std::uint64_t kMaxCases = 1000000;
+
+/// expand_cases(suite).size(), counted without expanding them (so a typing error of 10^8 cases costs nothing).
+std::uint64_t case_count(const Suite& suite);
+
 /// The position of case `case_index` (of expand_cases) among its configuration's cases: its index in the suite the
 /// configuration makes alone (configuration_suite, suite/suite_axes.h), and so its seed there.
 std::size_t index_in_configuration(const Suite& suite, std::size_t case_index);

@@ -7,10 +7,13 @@
 #include <climits>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "base/json_file.h"
 #include "base/sha256.h"
+#include "suite/calibration_path.h"
 #include "suite/case_plan.h"
 #include "suite/suite_axes.h"
 #include "suite/suite_fields.h"
@@ -242,13 +245,12 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   if (const json* d = root.find("description")) s.description = r.string(*d, "description");
 
   const json& nets = r.array(root.need("nets"), "nets");
+  std::map<std::string, std::size_t> net_names;  // not a scan per net: a file may list 10^5 of them
   for (std::size_t i = 0; i < nets.size(); ++i) {
     s.nets.push_back(parse_net(r, nets[i], index_path("nets", i)));
-    for (std::size_t k = 0; k < i; ++k) {
-      if (s.nets[k].name != s.nets[i].name) continue;
+    if (const auto [it, fresh] = net_names.emplace(s.nets[i].name, i); !fresh)
       r.fail(index_path("nets", i) + ".name",
-             "duplicate net name \"" + s.nets[i].name + "\" (also nets[" + std::to_string(k) + "])");
-    }
+             "duplicate net name \"" + s.nets[i].name + "\" (also nets[" + std::to_string(it->second) + "])");
   }
 
   const json& methods = r.array(root.need("methods"), "methods");
@@ -269,11 +271,11 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
     if (!has_tcsb && !has_equal)
       r.fail("compression", "only allowed when methods contains \"tcsb\" or \"plain_equal\"");
     r.array(*compression, "compression");
+    std::set<double> targets;  // not a scan per target: a file may list 10^6 of them
     for (std::size_t i = 0; i < compression->size(); ++i) {
       const double c = r.number((*compression)[i], index_path("compression", i), kFraction);
-      if (std::find(s.compression.begin(), s.compression.end(), c) != s.compression.end()) {
+      if (!targets.insert(c).second)
         r.fail(index_path("compression", i), "duplicate compression target " + fmt_number(c));
-      }
       s.compression.push_back(c);
     }
   }
@@ -327,10 +329,16 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   // not built (yet), and running it with the base settings beside cases of other settings would mislead.
   if (s.fidelity.enabled && !s.axes.empty()) r.fail("fidelity.enabled", "cannot be combined with axes");
   if (adjust) adjust(s);  // before the memory check: it must see the suite that will run
+  // Counted before anything expands them (the memory check does): 10^8 cases would exhaust memory on the way.
+  if (const std::uint64_t cases = case_count(s); cases > kMaxCases)
+    r.fail(s.axes.empty() ? "nets" : "axes",
+           std::to_string(configuration_count(s)) + " configuration(s) x " + std::to_string(s.nets.size()) +
+               " net(s) x their methods and compression targets = " + std::to_string(cases) + " cases, more than the " +
+               std::to_string(kMaxCases) + " a suite may have");
   if (!s.fidelity.calibration_path.empty()) {
     if (!has_tcsb) r.fail("fidelity.calibration", "requires methods to contain \"tcsb\"");
-    // Relative to the suite file, so a suite and its calibration travel together.
-    const std::filesystem::path path = std::filesystem::path(file).parent_path() / s.fidelity.calibration_path;
+    // Relative to the suite file, so a suite and its calibration travel together (and never outside its tree).
+    const std::filesystem::path path = calibration_file_path(file, s.fidelity.calibration_path);
     Calibration c = parse_calibration_file(path);
     if (const std::string why = calibration_mismatch(c, s); !why.empty())
       r.fail("fidelity.calibration", path.string() + " does not fit this suite: " + why);

@@ -165,31 +165,38 @@ void parse_axes(const Reader& r, const json& axes, Suite& suite) {
     }
     r.fail(at, "unknown setting (an axis is one of: " + axis_list() + ")");
   }
-  std::vector<Axis> parsed;
+  // Counted from the lists' lengths before any value is read: an axis of 10^5 values is refused at once, not after
+  // checking each (and, once, comparing each with every other).
   double count = 1;  // a double: a typing error may make more configurations than a size_t holds
   std::string product;
   for (const AxisSetting& setting : kAxisSettings) {  // label order, whatever the file's
     const auto it = axes.find(std::string(setting.path));
     if (it == axes.end()) continue;
+    const json& values = r.array(*it, key_path("axes", setting.path));
+    count *= static_cast<double>(values.size());
+    product += (product.empty() ? "" : " x ") + std::to_string(values.size());
+  }
+  if (count > static_cast<double>(kMaxConfigurations)) {
+    r.fail("axes", product + " = " + fmt_number(count) + " configurations, more than the " +
+                       std::to_string(kMaxConfigurations) + " a suite may have");
+  }
+  std::vector<Axis> parsed;
+  for (const AxisSetting& setting : kAxisSettings) {
+    const auto it = axes.find(std::string(setting.path));
+    if (it == axes.end()) continue;
     const std::string at = key_path("axes", setting.path);
-    const json& values = r.array(*it, at);
+    const json& values = *it;
     Axis axis{std::string(setting.path), {}};
     for (std::size_t i = 0; i < values.size(); ++i) {
       Suite scratch;  // the value is only checked here; configuration_suite() applies it
       setting.read(r, values[i], index_path(at, i), scratch);
-      for (std::size_t k = 0; k < i; ++k) {
+      for (std::size_t k = 0; k < i; ++k) {  // at most kMaxConfigurations values: quadratic is cheap here
         if (values[k] == values[i])
           r.fail(index_path(at, i), "duplicate value " + describe(values[i]) + " (also " + index_path(at, k) + ")");
       }
       axis.values.push_back(values[i]);
     }
-    count *= static_cast<double>(axis.values.size());
-    product += (product.empty() ? "" : " x ") + std::to_string(axis.values.size());
     parsed.push_back(std::move(axis));
-  }
-  if (count > static_cast<double>(kMaxConfigurations)) {
-    r.fail("axes", product + " = " + fmt_number(count) + " configurations, more than the " +
-                       std::to_string(kMaxConfigurations) + " a suite may have");
   }
   suite.axes = std::move(parsed);
   suite.configurations.clear();

@@ -120,6 +120,24 @@ TEST_F(Compare, ASlowerTcsbRegresses) {
   EXPECT_EQ(compare_with(next, "--threshold 5").exit_code, 0);
 }
 
+TEST_F(Compare, ARegressedCaseCannotHideByChangingAFieldThatPlacesIt) {
+  // With its net edited, the regressed TC-SB case once lost its plain partner, so its ratio went ungated and the
+  // gate passed on the other metrics. Every field that places a case must agree with the baseline's.
+  for (const auto& [field, value] :
+       std::vector<std::pair<std::string, ojson>>{{"net", "n17"},
+                                                  {"method", "plain_equal"},
+                                                  {"compression", 0.25},
+                                                  {"configuration", {{"label", "x=1"}, {"axes", ojson::object()}}}}) {
+    SCOPED_TRACE(field);
+    ojson next = base_;
+    scale(next, 2, 3.0);
+    next["cases"][2][field] = value;
+    const Outcome o = compare_with(next);
+    expect_bad_input(o, "tcsb: error: new.json: cases[2]." + field);
+    EXPECT_NE(o.err.find("but base.json's case n9/tcsb@0.5 has"), std::string::npos) << o.err;
+  }
+}
+
 TEST_F(Compare, AFasterTcsbPasses) {
   ojson next = base_;
   scale(next, 2, 0.25);

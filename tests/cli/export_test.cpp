@@ -116,4 +116,51 @@ TEST_F(Export, BadInputIsOneLineAndWritesNothing) {
   }
 }
 
+// One repetition of 1e308 ms: a speed-up of infinity once made export exit 3 ("internal error"). Every format
+// ends 0 or 2, never 3.
+TEST_F(Export, AnExtremeButFiniteTimeIsNeverAnInternalError) {
+  for (const std::size_t which : {std::size_t{0}, std::size_t{2}}) {  // plain's, then TC-SB's
+    ojson doc = ojson::parse(read_file(dir_ / "result.json"));
+    doc["cases"][which]["repetitions"][1]["mean_step_ms"] = 1e308;
+    write_file(dir_ / "extreme.json", doc.dump());
+    for (const char* format : {"gbench", "github-action-smaller", "github-action-bigger", "markdown"}) {
+      SCOPED_TRACE(std::string(format) + " case " + std::to_string(which));
+      const Outcome o = tcsb(std::string("export extreme.json --format ") + format);
+      EXPECT_TRUE(o.exit_code == 0 || o.exit_code == 2) << o.exit_code << " " << o.err;
+      EXPECT_EQ(o.err.find("internal error"), std::string::npos) << o.err;
+    }
+  }
+}
+
+// dt 1.0 diverges at step 0: `run` wrote mean_step_ms 0.0 for it, which export, merge and compare then refused.
+// What run writes, every reader accepts: no step time is null, its status says why.
+TEST_F(Export, ARunDivergedAtStepZeroIsReadByEveryReader) {
+  std::string suite = nine_by_nine_suite("wild", 9);
+  suite.replace(suite.find("\"dt\": 0.016666666666666666"), 26, "\"dt\": 1.0");
+  write_file(dir_ / "wild.json", suite);
+  Outcome o = tcsb("run wild.json --quiet --out wild-result.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const ojson doc = ojson::parse(read_file(dir_ / "wild-result.json"));
+  bool diverged = false;
+  for (const ojson& c : doc["cases"])
+    for (const ojson& r : c["repetitions"]) {
+      diverged |= r["status"] == "diverged";
+      if (r["status"] != "ok") EXPECT_TRUE(r["mean_step_ms"].is_null() || r["mean_step_ms"].get<double>() > 0) << r;
+    }
+  ASSERT_TRUE(diverged) << "dt 1.0 should diverge";
+  for (const char* format : {"gbench", "github-action-smaller", "github-action-bigger", "markdown"}) {
+    o = tcsb(std::string("export wild-result.json --format ") + format);
+    EXPECT_EQ(o.exit_code, 0) << format << ": " << o.err;
+  }
+  o = tcsb("compare wild-result.json wild-result.json --absolute");
+  EXPECT_NE(o.exit_code, 3) << o.err;
+  EXPECT_EQ(o.err.find("wild-result.json: cases"), std::string::npos) << "the file itself refused: " << o.err;
+  for (const char* k : {"1", "2"}) {
+    o = tcsb(std::string("run wild.json --quiet --shard ") + k + "/2 --out shard" + k + ".json");
+    ASSERT_EQ(o.exit_code, 0) << o.err;
+  }
+  o = tcsb("merge shard1.json shard2.json --quiet --out merged.json");
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+}
+
 }  // namespace

@@ -1,14 +1,17 @@
-// Structure-aware fuzzing of everything tcsb reads from a file: suites (`validate`, `run`) and result files
-// (`compare`, `export`). Each case takes a valid document, applies one to three seeded mutations — to its parsed
-// structure (a value deleted, retyped, replaced by an extreme, a key renamed, an array shuffled) or to its text (cut
-// short, NUL and garbage appended, a number overflowing to infinity, nesting thousands deep, a byte flipped) — and
-// runs the real executable on it. Whatever the input, tcsb must end in one of two ways:
+// Structure-aware fuzzing of everything tcsb reads from a file: suites (`validate`, `run`), result files
+// (`compare`, `export`), shards (`merge`), runs and shard sets (`tax`), calibration files (`validate`, `run`) and
+// suites with huge lists (`validate` under an address-space limit). Each case takes a valid document, applies one to
+// three seeded mutations — to its parsed structure (a value deleted, retyped, replaced by an extreme, a key renamed, an
+// array shuffled) or to its text (cut short, NUL and garbage appended, a number overflowing to infinity, nesting
+// thousands deep, a byte flipped) — and runs the real executable on it. Whatever the input, tcsb must end in one of two
+// ways:
 //   - exit 0 (or 1 where the command judges: compare), with well-formed output, or
 //   - exit 2 with exactly one line on stderr, and no output file left behind (nor any stray temporary file);
 // never a signal, a hang, exit 3 ("internal error") or another code. The generator is seeded, so a failure names
 // the case that reproduces it; the case count is TCSB_FUZZ_CASES (fewer under the sanitizers, where each process
 // start costs more).
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -45,11 +48,15 @@ struct Ended {
 };
 
 /// Runs TCSB_BINARY with `args` in `dir` (no shell, so no quoting can go wrong), stdout and stderr to files there,
-/// killed by SIGALRM after kCaseTimeoutS.
-Ended run_tcsb(const fs::path& dir, const std::vector<std::string>& args) {
+/// killed by SIGALRM after kCaseTimeoutS; with `address_space` (bytes), under that RLIMIT_AS.
+Ended run_tcsb(const fs::path& dir, const std::vector<std::string>& args, std::uint64_t address_space = 0) {
   const pid_t pid = ::fork();
   if (pid == 0) {
     if (::chdir(dir.c_str()) != 0) ::_exit(126);
+    if (address_space > 0) {  // `ulimit -v`: a guard that expands before it counts dies here, not in CI's memory
+      const struct rlimit limit { address_space, address_space };
+      if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(126);
+    }
     const int out = ::open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int err = ::open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (out < 0 || err < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
@@ -366,6 +373,148 @@ TEST_F(Fuzz, CompareAndExportReadMutatedResultsOrRefuseThemInOneLine) {
     if (why.empty() && e.exit_code != 0 && fs::exists(dir_ / "out.json")) why = "refused, but wrote out.json";
     if (why.empty() && !only_expected_files(dir_, allowed, stray)) why = "left a stray file: " + stray;
     if (!why.empty()) record("export", i, log, why);
+  }
+}
+
+// ---- issue 38: the surfaces added since the first round -----------------------------------------------------------
+
+/// The 9x9 suite with two nets and plain_equal, so it shards, merges and has a tax to judge.
+std::string two_net_suite(int repetitions) {
+  std::string suite = nine_by_nine_suite("fuzz", repetitions);
+  const std::string methods = R"("methods": ["plain", "tcsb"])";
+  suite.replace(suite.find(methods), methods.size(), R"("methods": ["plain", "tcsb", "plain_equal"])");
+  const std::size_t at = suite.find(R"({"name": "n9")");
+  const std::size_t end = suite.find("}]", at) + 1;
+  std::string second = suite.substr(at, end - at);
+  second.replace(second.find("n9"), 2, "m9");
+  suite.insert(end, ", " + second);
+  return suite;
+}
+
+/// Checks a command that writes `out` (in `dir`): refusals leave no out (nor anything else), successes a tcsb
+/// document. `verdicts`: exit 1 and 4 are judgements of this command, with their output written.
+std::string written_problem(const Ended& e, const fs::path& dir, const std::string& out,
+                            const std::set<std::string>& allowed, bool verdicts) {
+  if (e.signal != 0) return "killed by signal " + std::to_string(e.signal) + (e.signal == SIGALRM ? " (hang)" : "");
+  const bool wrote = e.exit_code == 0 || (verdicts && (e.exit_code == 1 || e.exit_code == 4));
+  if (!wrote && e.exit_code != 2) return "exit " + std::to_string(e.exit_code) + ": " + e.err.substr(0, 300);
+  if (!wrote && (count_lines(e.err) != 1 || e.err.rfind("tcsb: error: ", 0) != 0))
+    return "exit 2 without exactly one error line: " + e.err.substr(0, 300);
+  if (wrote && !is_tcsb_document(dir / out)) return "exit " + std::to_string(e.exit_code) + " without " + out;
+  if (!wrote && fs::exists(dir / out)) return "refused, but wrote " + out;
+  std::string stray;
+  if (!only_expected_files(dir, allowed, stray)) return "left a stray file: " + stray;
+  return "";
+}
+
+TEST_F(Fuzz, MergeJoinsMutatedShardsOrRefusesThemAndWritesNothing) {
+  write_file(dir_ / "suite.json", two_net_suite(2));
+  for (const char* k : {"1", "2"}) {
+    const Ended made = run_tcsb(dir_, {"run", "suite.json", "--quiet", "--shard", std::string(k) + "/2", "--out",
+                                       std::string("s") + k + ".json"});
+    ASSERT_EQ(made.exit_code, 0) << made.err;
+  }
+  const std::vector<ojson> shards{ojson::parse(read_file(dir_ / "s1.json")), ojson::parse(read_file(dir_ / "s2.json"))};
+  Mutator mutator(38001, /*extremes=*/true);
+  const std::set<std::string> allowed{"suite.json", "s1.json",    "s2.json",   "bad.json",
+                                      "out.json",   "stdout.txt", "stderr.txt"};
+  const int cases = TCSB_FUZZ_CASES / 12;
+  for (int i = 0; i < cases; ++i) {
+    std::string log;
+    const std::size_t mutated = static_cast<std::size_t>(i % 2);
+    write_file(dir_ / "bad.json", mutator.mutate(shards[mutated], log));
+    fs::remove(dir_ / "out.json");
+    const Ended e = run_tcsb(dir_, {"merge", mutated == 0 ? "bad.json" : "s1.json",
+                                    mutated == 1 ? "bad.json" : "s2.json", "--quiet", "--out", "out.json"});
+    if (const std::string why = written_problem(e, dir_, "out.json", allowed, false); !why.empty())
+      record("merge", i, log, why);
+  }
+}
+
+TEST_F(Fuzz, TaxJudgesMutatedRunsAndShardSetsOrRefusesThem) {
+  write_file(dir_ / "suite.json", two_net_suite(5));
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"run", "suite.json", "--quiet", "--out", "a.json"},
+        std::vector<std::string>{"run", "suite.json", "--quiet", "--out", "b.json"},
+        std::vector<std::string>{"run", "suite.json", "--quiet", "--shard", "1/2", "--out", "s1.json"},
+        std::vector<std::string>{"run", "suite.json", "--quiet", "--shard", "2/2", "--out", "s2.json"}}) {
+    const Ended made = run_tcsb(dir_, args);
+    ASSERT_EQ(made.exit_code, 0) << made.err;
+  }
+  const std::vector<std::string> files{"a.json", "b.json", "s1.json", "s2.json"};
+  std::vector<ojson> docs;
+  for (const std::string& f : files) docs.push_back(ojson::parse(read_file(dir_ / f)));
+  Mutator mutator(38002, /*extremes=*/true);
+  const std::set<std::string> allowed{"suite.json", "a.json",   "b.json",     "s1.json",   "s2.json",
+                                      "bad.json",   "out.json", "stdout.txt", "stderr.txt"};
+  const int cases = TCSB_FUZZ_CASES / 12;
+  for (int i = 0; i < cases; ++i) {
+    std::string log;
+    // Two runs, or a shard set; one of the pair mutated.
+    const std::size_t first = i % 2 == 0 ? 0 : 2, mutated = first + static_cast<std::size_t>((i / 2) % 2);
+    write_file(dir_ / "bad.json", mutator.mutate(docs[mutated], log));
+    fs::remove(dir_ / "out.json");
+    std::vector<std::string> args{"tax"};
+    for (std::size_t k = first; k < first + 2; ++k) args.push_back(k == mutated ? "bad.json" : files[k]);
+    for (const char* flag : {"--min-nodes", "1", "--compression", "0.5", "--out", "out.json"}) args.push_back(flag);
+    if (i % 3 == 0) args.push_back("--over-nets");
+    if (const std::string why = written_problem(run_tcsb(dir_, args), dir_, "out.json", allowed, true); !why.empty())
+      record("tax", i, log, why);
+  }
+}
+
+TEST_F(Fuzz, MutatedCalibrationFilesAreUsedOrRefusedByValidateAndRun) {
+  write_file(dir_ / "plain.json", nine_by_nine_suite("fuzz", 1));
+  const Ended made = run_tcsb(dir_, {"calibrate", "plain.json", "--quiet", "--out", "good.calibration.json"});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  std::string suite = nine_by_nine_suite("fuzz", 1);
+  suite.replace(suite.rfind('}'), 1, R"(, "fidelity": {"enabled": true, "calibration": "c.json"}})");
+  write_file(dir_ / "suite.json", suite);
+  const ojson calibration = ojson::parse(read_file(dir_ / "good.calibration.json"));
+  Mutator mutator(38003, /*extremes=*/true);
+  const std::set<std::string> allowed{
+      "plain.json", "good.calibration.json", "suite.json", "c.json", "out.json", "stdout.txt", "stderr.txt"};
+  const int cases = TCSB_FUZZ_CASES / 12;
+  for (int i = 0; i < cases; ++i) {
+    std::string log;
+    write_file(dir_ / "c.json", mutator.mutate(calibration, log));
+    if (const std::string why = problem(run_tcsb(dir_, {"validate", "suite.json"}), false); !why.empty())
+      record("validate", i, log, why);
+    if (i % 4 != 0) continue;  // a run simulates: every fourth
+    fs::remove(dir_ / "out.json");
+    const Ended e = run_tcsb(dir_, {"run", "suite.json", "--quiet", "--out", "out.json"});
+    if (const std::string why = written_problem(e, dir_, "out.json", allowed, false); !why.empty())
+      record("run", i, log, why);
+  }
+}
+
+TEST_F(Fuzz, SuitesWithHugeListsAreCountedBeforeTheyAreExpanded) {
+  // Nets (up to 2 x 10^4), compression targets and axes (up to 10^5 entries each): validated or refused in one line
+  // under a 1 GiB address space (no sanitized process starts under one: there, without), never killed.
+  const std::uint64_t limit = kAddressSanitized ? 0 : (1ull << 30);
+  std::mt19937_64 rng(38004);
+  const auto size = [&] { return std::vector<int>{1, 3, 100, 1000, 20000, 100000}[rng() % 6]; };
+  const int cases = std::max(6, TCSB_FUZZ_CASES / 100);
+  for (int i = 0; i < cases; ++i) {
+    ojson suite = ojson::parse(nine_by_nine_suite("huge", 1));
+    // Nets at most 20 000 (2 MB of suite): parsing more is slow, and their count is refused like the others'.
+    const int nets = std::min(size(), 20000), targets = size(), seeds = size(), iterations = rng() % 2 ? size() : 0;
+    const std::string log = " " + std::to_string(nets) + " nets, " + std::to_string(targets) + " targets, " +
+                            std::to_string(seeds) + " seeds, " + std::to_string(iterations) + " iterations";
+    ojson net = suite["nets"][0];
+    suite["nets"] = ojson::array();
+    for (int n = 0; n < nets; ++n) {
+      net["name"] = "n" + std::to_string(n);
+      suite["nets"].push_back(net);
+    }
+    suite["compression"] = ojson::array();
+    for (int t = 0; t < targets; ++t) suite["compression"].push_back(1.0 - static_cast<double>(t) / (targets + 1));
+    suite["axes"] = ojson::object();
+    for (int k = 0; k < seeds; ++k) suite["axes"]["seed"].push_back(k);
+    for (int k = 0; k < iterations; ++k) suite["axes"]["solver.piterations"].push_back(k + 1);
+    write_file(dir_ / "suite.json", suite.dump());
+    if (const std::string why = problem(run_tcsb(dir_, {"validate", "suite.json"}, limit), false); !why.empty())
+      record("validate", i, log, why);
   }
 }
 

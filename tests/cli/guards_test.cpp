@@ -3,6 +3,8 @@
 // empty flag values. Every failure here is exit 2 with one line on stderr and no signal.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -175,6 +177,64 @@ TEST_F(Cli, EmptyFlagValuesAreUsageErrors) {
     expect_one_line_exit_2(o, c.flag, c.command);
     EXPECT_FALSE(fs::exists(dir_ / "out.json")) << c.command;
   }
+}
+
+// ---- issue 38, class 5: guards that must not fall over themselves ------------------------------------------------
+
+/// `text`, a JSON array of `n` values made by `value(i)`.
+std::string json_list(int n, const std::function<std::string(int)>& value) {
+  std::string list = "[";
+  for (int i = 0; i < n; ++i) {
+    if (i > 0) list += ',';
+    list += value(i);
+  }
+  return list + "]";
+}
+
+// A 28 KB suite of 10^8 cases was expanded before it was counted: OOM-killed in a 1 GiB cgroup, 2.7 GB under
+// `ulimit -v 4G`. It is counted first now and refused at once, whatever the memory.
+TEST_F(Cli, ASuiteOfAHundredMillionCasesIsRefusedBeforeItIsExpanded) {
+  const std::string nets =
+      json_list(100, [](int i) { return R"({"name": "n)" + std::to_string(i) + R"(", "width": 9, "height": 9})"; });
+  const std::string targets = json_list(1000, [](int i) { return std::to_string(0.0005 + 0.00099 * i); });
+  const std::string seeds = json_list(1000, [](int i) { return std::to_string(i); });
+  std::string suite = replaced(kTinySuite, "\"compression\": [1.0, 0.5]", "\"compression\": " + targets);
+  suite.replace(suite.find("\"nets\": ["), suite.find("\"methods\"") - suite.find("\"nets\": ["),
+                "\"nets\": " + nets + ", ");
+  suite.replace(suite.rfind('}'), 1, ", \"axes\": {\"seed\": " + seeds + "}}");
+  write_file(dir_ / "huge.json", suite);
+  const std::string limit = kAddressSanitized ? "" : "ulimit -v 400000; ";
+  const auto start = std::chrono::steady_clock::now();
+  const Outcome o = shell("sh -c '" + limit + "exec \"" + std::string(TCSB_BINARY) + "\" validate huge.json'");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  expect_one_line_exit_2(o, "huge.json: axes: 1000 configuration(s) x 100 net(s)", "validate of 10^8 cases");
+  EXPECT_NE(o.err.find("100100000 cases"), std::string::npos) << o.err;
+  EXPECT_LT(seconds, 10.0);
+}
+
+// An axis of 100 000 seeds took 33 s to be refused: each value was compared with every other before the
+// configurations were counted.
+TEST_F(Cli, AnAxisOfAHundredThousandValuesIsRefusedAtOnce) {
+  const std::string seeds = json_list(100000, [](int i) { return std::to_string(i); });
+  std::string suite = kTinySuite;
+  suite.replace(suite.rfind('}'), 1, ", \"axes\": {\"seed\": " + seeds + "}}");
+  write_file(dir_ / "seeds.json", suite);
+  const auto start = std::chrono::steady_clock::now();
+  const Outcome o = tcsb("validate seeds.json");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  expect_one_line_exit_2(o, "seeds.json: axes: 100000 = ", "an axis of 10^5 seeds");
+  EXPECT_LT(seconds, 5.0);
+}
+
+// `frames --steps` with a thousand entries under a 600 MB address space aborted with std::bad_alloc (exit 134):
+// what the frames need is counted before anything runs.
+TEST_F(Cli, FramesStepsBeyondTheMemoryAreRefusedBeforeTheRun) {
+  if (kAddressSanitized) GTEST_SKIP() << "no sanitized process starts under ulimit -v (cli_fixture.h)";
+  const std::string steps = json_list(1000, [](int i) { return std::to_string(i); });
+  const Outcome o = shell("sh -c 'ulimit -v 600000; exec \"" + std::string(TCSB_BINARY) + "\" frames --steps " +
+                          steps.substr(1, steps.size() - 2) + " --out out.json'");
+  expect_one_line_exit_2(o, "--steps asks for 1000 frames of 6561 nodes", "frames --steps under ulimit -v");
+  EXPECT_FALSE(fs::exists(dir_ / "out.json"));
 }
 
 }  // namespace

@@ -185,4 +185,27 @@ TEST_F(Output, AnOutNameTheFileSystemCannotHoldIsRefusedBeforeTheRun) {
   EXPECT_TRUE(fs::is_regular_file(dir_ / longest));
 }
 
+// Under `ulimit -f` a merge --out was killed by SIGXFSZ (exit 153) and left its .tcsb-out-* temporary. A write
+// beyond the limit is a write failure like a full disk: exit 3, one line, no temporary, the old file intact.
+TEST_F(Output, AWriteBeyondUlimitFIsExit3AndLeavesNoTemporary) {
+  for (const char* k : {"1", "2"}) {
+    const Outcome o = tcsb(std::string("run small.json --quiet --shard ") + k + "/2 --out shard" + k + ".json");
+    ASSERT_EQ(o.exit_code, 0) << o.err;
+  }
+  write_file(dir_ / "merged.json", "old");
+  std::set<std::string> before = listing(dir_);
+  const Outcome o =
+      shell("sh -c 'ulimit -f 4; exec \"" + kBinary + "\" merge shard1.json shard2.json --quiet --out merged.json'");
+  EXPECT_EQ(o.exit_code, 3) << o.err;
+  EXPECT_EQ(count_lines(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find("tcsb: error: cannot write merged.json"), std::string::npos) << o.err;
+  EXPECT_EQ(read_file(dir_ / "merged.json"), "old");
+  std::set<std::string> after = listing(dir_);
+  for (std::set<std::string>* names : {&before, &after}) {
+    names->erase("stdout.txt");
+    names->erase("stderr.txt");
+  }
+  EXPECT_EQ(after, before) << "a temporary was left behind";
+}
+
 }  // namespace

@@ -300,6 +300,33 @@ TEST_F(BadShardSets, AShardWithEditedCasesIsRefused) {
   expect_refused("edited1.json s2.json s3.json", "edited1.json");
 }
 
+TEST_F(BadShardSets, AShardNoRunCouldWriteIsRefusedAsStrictlyAsCompareRefusesAResult) {
+  // A repetition deleted, a negative operation time, a node count that is not the net's: each once merged and
+  // rendered (Table 1 with a negative complete_ms).
+  json shard = load("s1.json");
+  shard["cases"][0]["repetitions"].erase(0);
+  write_file(dir_ / "fewer1.json", shard.dump());
+  expect_refused("fewer1.json s2.json s3.json", "fewer1.json: cases[0].repetitions");
+  shard = load("s1.json");
+  shard["cases"][0]["net_nodes"] = 66049;
+  write_file(dir_ / "nodes1.json", shard.dump());
+  expect_refused("nodes1.json s2.json s3.json", "nodes1.json: cases[0].net_nodes: 66049, but net");
+  for (const std::string file : {"s1.json", "s2.json", "s3.json"}) {
+    shard = load(file);
+    for (auto& [label, columns] : shard["merge_data"]["op_samples"].items()) {
+      if (columns["node_ns"].empty()) continue;
+      columns["node_ns"][0] = -1000000;
+      write_file(dir_ / "negative.json", shard.dump());
+      const std::string others = file == "s1.json"   ? "s2.json s3.json"
+                                 : file == "s2.json" ? "s1.json s3.json"
+                                                     : "s1.json s2.json";
+      expect_refused("negative.json " + others, "negative.json: merge_data.op_samples." + label);
+      return;
+    }
+  }
+  ADD_FAILURE() << "no shard recorded an operation";
+}
+
 TEST_F(BadShardSets, ShardsOfTwoBuildsAreRefused) {
   json shard = json::parse(read_file(dir_ / "s3.json"));
   shard["context"]["git_commit"] = "0000000000000000000000000000000000000000";

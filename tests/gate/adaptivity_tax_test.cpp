@@ -181,6 +181,35 @@ TEST(AdaptivityTax, OverTheNetsTheRunsDisagreementWidensTheInterval) {
   EXPECT_NE(few[0].note.find("fewer than 5"), std::string::npos);
 }
 
+TEST(AdaptivityTax, ARunWithoutTheNetIsIgnoredForItNotCountedAsARatioOfZero) {
+  // Two shards of one suite: each holds one net. A net failing clearly (2.5x against 1.15) must fail: the shard
+  // without it has no ratio to give, and resampling it as an empty run once pulled the interval down to 0.
+  const std::vector<NetTax> nets = judge({run_doc({{"n257", 66049}}, 2.5), run_doc({{"n513", 263169}}, 2.5)});
+  ASSERT_EQ(nets.size(), 2u);
+  for (const NetTax& n : nets) {
+    SCOPED_TRACE(n.net);
+    EXPECT_EQ(n.runs, 1u);
+    ASSERT_TRUE(n.claim.interval);
+    EXPECT_GT(n.claim.interval->low, 2.0);
+    EXPECT_EQ(verdict(n.claim), Verdict::kFail);
+  }
+}
+
+TEST(AdaptivityTax, RunsOfOtherCompilersFlagsBuildTypesOrPrecisionsAreNotPooled) {
+  const ojson base = run_doc({{"n257", 66049}}, 1.02);
+  for (const char* key : {"build_type", "compiler", "cxx_flags", "sanitized", "bullet_precision"}) {
+    SCOPED_TRACE(key);
+    ojson other = run_doc({{"n257", 66049}}, 1.03);
+    other["context"][key] = "something else";
+    try {
+      judge({base, other});
+      FAIL() << "runs of two builds were pooled";
+    } catch (const SuiteMismatch& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("context.") + key), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(AdaptivityTax, AJudgedCaseWithoutItsNetSizeIsRefusedNamingTheField) {
   ojson doc = run_doc({{"n257", 66049}}, 1.02);
   doc["cases"][0].erase("net_nodes");

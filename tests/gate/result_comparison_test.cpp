@@ -66,6 +66,23 @@ TEST(ResultComparison, DifferentSuitesAreRefusedNamingTheField) {
   EXPECT_NE(mismatch(result_doc(), other).find("context.seed"), std::string::npos);
 }
 
+TEST(ResultComparison, ACaseOfOneLabelMustAgreeOnEveryFieldThatPlacesIt) {
+  for (const char* field : {"net", "method", "compression"}) {
+    SCOPED_TRACE(field);
+    ojson next = result_doc();
+    next["cases"][3][field] = std::string(field) == "compression" ? ojson(0.25) : ojson("other");
+    EXPECT_NE(mismatch(result_doc(), next).find(std::string("new.json: cases[3].") + field), std::string::npos)
+        << mismatch(result_doc(), next);
+  }
+  ojson next = result_doc();
+  next["cases"][3]["configuration"] = {{"label", "x=1"}};
+  EXPECT_NE(mismatch(result_doc(), next)
+                .find("cases[3].configuration.label: \"x=1\", but base.json's case "
+                      "n17/tcsb@0.5 has \"\""),
+            std::string::npos)
+      << mismatch(result_doc(), next);
+}
+
 TEST(ResultComparison, ThePathOfTheSuiteFileDoesNotMatter) {
   ojson other = result_doc();
   other["suite"]["path"] = "/elsewhere/tiny.json";

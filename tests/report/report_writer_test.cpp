@@ -4,8 +4,14 @@
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <thread>
 
 #include <filesystem>
 #include <fstream>
@@ -122,6 +128,61 @@ TEST_F(ReportWriter, OutputProblemsAreFoundBeforeWritingAndTheCheckLeavesNoFile)
     fs::permissions(dir_ / "ro", fs::perms::owner_read | fs::perms::owner_exec);
     EXPECT_NE(output_problem(dir_ / "ro" / "out.json").find("cannot create files"), std::string::npos);
     fs::permissions(dir_ / "ro", fs::perms::owner_all);
+  }
+}
+
+/// Temporary files the writer left in `dir`.
+int temporaries(const fs::path& dir) {
+  int n = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) n += entry.path().filename().string().starts_with(".tcsb-out-");
+  return n;
+}
+
+TEST_F(ReportWriter, AWriteBeyondTheFileSizeLimitIsAWriteErrorAndLeavesNoTemporary) {
+  // In a child: the limit and the signal disposition are the process's.
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    remove_temporary_files_on_signals();
+    const struct rlimit limit { 4096, 4096 };
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      write_file_atomically(dir_ / "out.json", std::string(1 << 20, 'x'));
+    } catch (const WriteError&) {
+      ::_exit(3);
+    }
+    ::_exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 3);
+  EXPECT_EQ(temporaries(dir_), 0);
+  EXPECT_FALSE(fs::exists(dir_ / "out.json"));
+}
+
+TEST_F(ReportWriter, SigtermOrSigintDuringAWriteRemovesTheTemporary) {
+  for (const int signal : {SIGTERM, SIGINT}) {
+    SCOPED_TRACE(signal);
+    // The child writes 64 MB again and again; the signal arrives once a temporary is seen, mid-write.
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      remove_temporary_files_on_signals();
+      const std::string text(64 << 20, 'x');
+      for (;;) write_file_atomically(dir_ / "out.json", text);
+    }
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (temporaries(dir_) == 0 && std::chrono::steady_clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    const bool seen = temporaries(dir_) > 0;
+    ::kill(child, signal);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(seen) << "no temporary file appeared within a minute";
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << "the signal still ends the process";
+    EXPECT_EQ(temporaries(dir_), 0);
+    fs::remove(dir_ / "out.json");
   }
 }
 
