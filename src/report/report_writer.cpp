@@ -60,11 +60,21 @@ extern "C" void remove_temporary_and_end(int signal) {
 class TempFile {
  public:
   explicit TempFile(const fs::path& dir) : name_((dir / ".tcsb-out-XXXXXX").string()) {
-    fd_ = ::mkostemp(name_.data(), O_CLOEXEC);
+    if (name_.size() >= sizeof g_temporary) {  // too long for the handler's buffer: not removed on a signal
+      fd_ = ::mkostemp(name_.data(), O_CLOEXEC);
+      error_ = fd_ < 0 ? errno : 0;
+      return;
+    }
+    // mkostemp fills the name in inside the buffer the signal handler reads, before it creates the file: a signal
+    // at any moment after the file exists finds its name there (before, it unlinks a name that is no file: harmless).
+    std::memcpy(g_temporary, name_.c_str(), name_.size() + 1);
+    g_temporary_set = 1;
+    fd_ = ::mkostemp(g_temporary, O_CLOEXEC);
     error_ = fd_ < 0 ? errno : 0;
-    if (created() && name_.size() < sizeof g_temporary) {
-      std::memcpy(g_temporary, name_.c_str(), name_.size() + 1);
-      g_temporary_set = 1;
+    if (created()) {
+      name_ = g_temporary;
+    } else {
+      g_temporary_set = 0;
     }
   }
   TempFile(const TempFile&) = delete;

@@ -69,7 +69,9 @@ TEST_F(Calibration, NoCommandsOutMayReplaceTheSuiteOrItsCalibration) {
         std::string("reproduce --suite with.json --quiet --out ./s.calibration.json"),
         std::string("merge shard.json --quiet --out s.calibration.json")}) {
     SCOPED_TRACE(line);
-    if (line.starts_with("merge")) ASSERT_EQ(tcsb("run with.json --quiet --shard 1/1 --out shard.json").exit_code, 0);
+    if (line.starts_with("merge")) {
+      ASSERT_EQ(tcsb("run with.json --quiet --shard 1/1 --out shard.json").exit_code, 0);
+    }
     const Outcome o = tcsb(line);
     expect_bad_input(o, "is the input file");
     EXPECT_EQ(read_file(dir_ / "with.json"), suite);
