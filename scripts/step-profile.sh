@@ -129,7 +129,7 @@ print(f"{'ratio':12s} {tc['nodes'] / pe['nodes']:8.3f} {tc['Ir'] / pe['Ir']:12.3
 parts = ["TcSoftBody::advance_blends", "SaliencyController::before_step", "SaliencyController::evaluate",
          "take_snapshot", "apply_evaluation", "SaliencyController::after_step",
          "TcSoftBody::begin_refine", "TcSoftBody::begin_coarse", "TcSoftBody::end_refine", "TcSoftBody::end_coarse",
-         "TcSoftBody::simulate_step", "btSoftBody::predictMotion", "btDbvt::update", "btSoftBody::solveConstraints",
+         "SceneWorld::step", "btSoftBody::predictMotion", "btDbvt::update", "btSoftBody::solveConstraints",
          "btSoftBody::PSolve_Links", "btSoftBody::integrateMotion", "btSoftBody::applyClusters"]
 print("inclusive per step        tcsb Ir   plain_equal Ir     tcsb D1  plain_equal D1     tcsb LL  plain_equal LL")
 dumps = {m: functions(m) for m in ("tcsb", "plain_equal")}

@@ -183,16 +183,9 @@ int coarsen_to_level(TcSoftBody& body, int level) {
 }
 
 int calibrated_level_count(const std::vector<std::shared_ptr<const Net>>& nets, int max_levels) {
-  int levels = max_levels;
-  for (const auto& net : nets) {
-    const LodTree& tree = net->lod();
-    int usable = 0;
-    while (usable < levels && usable + 1 < tree.level_count() && tree.level_width(usable + 1) >= 5 &&
-           tree.level_height(usable + 1) >= 5)
-      ++usable;
-    levels = usable;
-  }
-  return levels;
+  std::vector<NetSpec> specs;
+  for (const auto& net : nets) specs.push_back(net->spec());
+  return calibrated_level_count(specs, max_levels);
 }
 
 Calibration calibrate_suite(const Suite& suite, const std::vector<std::shared_ptr<const Net>>& nets,

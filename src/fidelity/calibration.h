@@ -49,8 +49,7 @@ std::vector<StiffnessFit> evaluate_calibration(const Calibration& calibration, c
 /// committed node count.
 int coarsen_to_level(TcSoftBody& body, int level);
 
-/// The levels the calibration fits on these nets: 1 .. max_levels, stopping before a level whose grid is under
-/// 5 x 5 on any net.
+/// calibrated_level_count (suite/calibration_file.h) of the built nets' specs.
 int calibrated_level_count(const std::vector<std::shared_ptr<const Net>>& nets, int max_levels);
 
 }  // namespace tcsb

@@ -37,7 +37,6 @@ struct StepBreakdown {
   double blending_ms = 0;    ///< advancing the blends (link weights, mass hand-over), the end operations excluded
 };
 
-/// One repetition of one case: a fresh body, warm-up, then timed steps.
 /// Contact correctness of one repetition in a scene with colliders: nodes found inside a collider, deeper than the
 /// contact margin, after a step (warm-up and timed steps alike). Bullet holds a node in contact at the margin; a node
 /// deeper than that is one no contact held, and a body that falls through a collider is a defect.
@@ -46,6 +45,7 @@ struct Penetrations {
   double deepest_pct = 0;       ///< the deepest any node got, % of the net's extent (0 when none penetrated)
 };
 
+/// One repetition of one case: a fresh body, warm-up, then timed steps.
 struct RepetitionResult {
   int repetition = 0;
   std::string status = "ok";         ///< "ok" or "diverged"

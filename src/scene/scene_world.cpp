@@ -94,12 +94,12 @@ SceneWorld::SceneWorld(const WorldSettings& world, const SceneSettings& scene) :
   dynamics_ = std::make_unique<btSoftRigidDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                          configuration_.get());
   dynamics_->setGravity(gravity);
+  // The world's own info, whose broadphase, dispatcher and sparse SDF the world's constructor set up: a body built
+  // with an info of its own would find neither (a null broadphase, and an SDF that divides by zero at first contact).
   info_ = &dynamics_->getWorldInfo();
   info_->m_gravity = gravity;
   info_->m_sparsesdf.setDefaultVoxelsz(static_cast<btScalar>(scene_.sdf_voxel));
   info_->m_sparsesdf.Reset();  // takes the voxel size
-  // The world's own info, whose broadphase, dispatcher and sparse SDF the world's constructor set up: a body built
-  // with an info of its own would find neither (a null broadphase, and an SDF that divides by zero at first contact).
 
   for (const Collider& c : scene_.colliders) {
     auto rigid = std::make_unique<Rigid>();

@@ -65,10 +65,9 @@ std::optional<double> Calibration::uniform_stiffness(double compression) const {
   return std::nullopt;
 }
 
-int calibration_levels_needed(const Suite& suite) {
-  int levels = kMaxCalibratedLevels;
-  for (const NetSpec& n : suite.nets) {
-    // Level l of the LOD tree is ceil(size / 2^l) wide and high (net/lod_tree.cpp); fitted while both are >= 5.
+int calibrated_level_count(const std::vector<NetSpec>& nets, int max_levels) {
+  int levels = max_levels;
+  for (const NetSpec& n : nets) {
     int usable = 0;
     for (long long w = n.width, h = n.height; usable < levels;) {
       w = (w + 1) / 2;
@@ -80,6 +79,8 @@ int calibration_levels_needed(const Suite& suite) {
   }
   return levels;
 }
+
+int calibration_levels_needed(const Suite& suite) { return calibrated_level_count(suite.nets, kMaxCalibratedLevels); }
 
 std::string calibration_key(const Suite& suite) {
   // Shortest round-trip text for every number, in a fixed order: equal settings give equal keys on every platform.
@@ -169,7 +170,7 @@ std::string calibration_mismatch(const Calibration& c, const Suite& suite) {
     return "fitted for material stiffness " + fmt_number(c.linear_stiffness) + ", the suite's is " +
            fmt_number(suite.solver.linear_stiffness);
   if (c.key != calibration_key(suite))
-    return "fitted for other nets, dt, gravity, steps or solver settings (key " + c.key.substr(0, 12) +
+    return "fitted for other nets, dt, gravity, steps, solver settings or scene (key " + c.key.substr(0, 12) +
            "..., the suite's " + calibration_key(suite).substr(0, 12) + "...); run `tcsb calibrate` again";
   if (c.levels.empty()) return "it fits no LOD level (\"levels\": []): run `tcsb calibrate` again";
   if (const int needed = calibration_levels_needed(suite); static_cast<int>(c.levels.size()) < needed)

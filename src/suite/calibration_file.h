@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "net/net_spec.h"
+
 namespace tcsb {
 
 struct Suite;
@@ -43,13 +45,18 @@ struct Calibration {
 /// above take the last fitted value.
 inline constexpr int kMaxCalibratedLevels = 3;
 
-/// The levels a calibration of `suite` must fit: 1 .. kMaxCalibratedLevels, stopping before a level whose grid is
-/// under 5 x 5 on any of its nets (fidelity/calibration.h's calibrated_level_count, from the nets' sizes alone).
+/// The LOD levels a calibration fits on these nets: 1 .. max_levels, stopping before a level whose grid is under
+/// 5 x 5 on any net. From the nets' sizes alone (level l of the LOD tree is ceil(size / 2^l) wide and high,
+/// net/lod_tree.cpp), so the suite can be checked before any net is built.
+int calibrated_level_count(const std::vector<NetSpec>& nets, int max_levels);
+
+/// The levels a calibration of `suite` must fit: calibrated_level_count of its nets, up to kMaxCalibratedLevels.
 int calibration_levels_needed(const Suite& suite);
 
-/// SHA-256 over what the fit depends on: every net's geometry, mass and pins, dt, gravity, steps, warm-up and the
-/// solver settings. Not the suite's name, description, methods, repetitions, feedback or fidelity block: a suite
-/// that differs only there can share the calibration.
+/// SHA-256 over what the fit depends on: every net's geometry, mass and pins, dt, gravity, steps, warm-up, the
+/// solver settings and, in a scene with colliders, the colliders and contact settings. Not the suite's name,
+/// description, methods, repetitions, feedback or fidelity block: a suite that differs only there can share the
+/// calibration.
 std::string calibration_key(const Suite& suite);
 
 /// The calibration as the file's JSON text (pretty, one trailing newline).

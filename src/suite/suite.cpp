@@ -105,7 +105,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     read_axis_setting(r, fb, "interface_charge", s);
     read_axis_setting(r, fb, "interface_tension", s);
     read_axis_setting(r, fb, "pin_level_pull", s);
-    fb.read("contact_saliency", f.contact_saliency, Interval{0.0, false, 1.0, false});
+    fb.read("contact_saliency", f.contact_saliency, kUnit);
   }
 
   if (const json* j = root.find("fidelity")) {
@@ -166,7 +166,7 @@ Collider parse_collider(const Reader& r, const json& j, const std::string& path)
   c.velocity = read_vector(r, o, "velocity", kAnyFinite, c.velocity);
   if (o.find("mass") && c.motion != ColliderMotion::kDynamic) r.fail(o.at("mass"), "only for a dynamic collider");
   o.read("mass", c.mass, kPositive);
-  o.read("friction", c.friction, Interval{0.0, false, 1.0, false});
+  o.read("friction", c.friction, kUnit);
   return c;
 }
 
@@ -184,7 +184,7 @@ SceneSettings parse_scene(const Reader& r, const json& j) {
       scene.colliders.push_back(parse_collider(r, (*colliders)[i], index_path(o.at("colliders"), i)));
   }
   o.read("margin", scene.margin, kPositive);
-  o.read("friction", scene.friction, Interval{0.0, false, 1.0, false});
+  o.read("friction", scene.friction, kUnit);
   // A voxel below a millimetre would make the SDF's cells (and their memory, clamped by Bullet) explode for nothing.
   o.read("sdf_voxel", scene.sdf_voxel, Interval{0.001, false, 10.0, false});
   return scene;

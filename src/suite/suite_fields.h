@@ -55,6 +55,7 @@ struct Interval {
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 inline constexpr Interval kPositive{0.0, true}, kNonNegative{0.0, false}, kAnyFinite{-kInfinity, true};
 inline constexpr Interval kFraction{0.0, true, 1.0, false};  // (0, 1]
+inline constexpr Interval kUnit{0.0, false, 1.0, false};     // [0, 1]
 
 /// Typed access to a JSON document that throws InputError naming the file and the field.
 class Reader {
