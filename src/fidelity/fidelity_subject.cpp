@@ -237,13 +237,15 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
     case FidelityMethod::kTcsbRandom:
     case FidelityMethod::kTcsbRigid:
     case FidelityMethod::kTcsbNoGeomorph:
-    case FidelityMethod::kTcsbCalibrated: {
+    case FidelityMethod::kTcsbCalibrated:
+    case FidelityMethod::kTcsbCalibratedFans: {
       TcSettings tc = suite.tcsb;
       if (spec.method == FidelityMethod::kTcsbRigid) tc.placement = Placement::kRigid;
-      if (spec.method == FidelityMethod::kTcsbCalibrated) {
+      if (spec.method == FidelityMethod::kTcsbCalibrated || spec.method == FidelityMethod::kTcsbCalibratedFans) {
         if (!suite.calibration) throw std::invalid_argument("tcsb_calibrated: the suite has no calibration");
         tc.level_stiffness = suite.calibration->level_stiffness();
       }
+      if (spec.method == FidelityMethod::kTcsbCalibratedFans) tc.interfaces = Interfaces::kLinks;
       FeedbackSettings feedback = suite.feedback;
       if (spec.method == FidelityMethod::kTcsbRandom) feedback.policy = PolicyKind::kRandom;
       const bool compressed = budget < static_cast<int>(net->node_count());

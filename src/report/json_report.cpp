@@ -79,6 +79,7 @@ ojson suite_json(const Suite& s) {
   // Only when set: a suite that does not charge popping writes what it wrote before the setting existed, so its
   // results still compare with older baselines (the gate refuses runs whose suite blocks differ).
   if (!s.tcsb.rebuild_dbvt) out["tcsb"]["rebuild_dbvt"] = false;
+  if (s.tcsb.interfaces == Interfaces::kHanging) out["tcsb"]["interfaces"] = "hanging";
   if (f.popping_charge > 0) out["feedback"]["popping_charge"] = json_number(f.popping_charge);
   if (f.interface_charge > 0) out["feedback"]["interface_charge"] = json_number(f.interface_charge);
   if (f.interface_tension > 0) out["feedback"]["interface_tension"] = json_number(f.interface_tension);

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "softbody/bullet_setup.h"
+#include "softbody/tc_softbody_solver.h"
 
 namespace tcsb {
 
@@ -91,8 +91,9 @@ SceneWorld::SceneWorld(const WorldSettings& world, const SceneSettings& scene) :
   dispatcher_ = std::make_unique<btCollisionDispatcher>(configuration_.get());
   broadphase_ = std::make_unique<btDbvtBroadphase>();
   solver_ = std::make_unique<btSequentialImpulseConstraintSolver>();
+  soft_body_solver_ = std::make_unique<TcSoftBodySolver>();  // a TC-SB body's own solve (tc_softbody_solver.h)
   dynamics_ = std::make_unique<btSoftRigidDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
-                                                         configuration_.get());
+                                                         configuration_.get(), soft_body_solver_.get());
   dynamics_->setGravity(gravity);
   // The world's own info, whose broadphase, dispatcher and sparse SDF the world's constructor set up: a body built
   // with an info of its own would find neither (a null broadphase, and an SDF that divides by zero at first contact).
@@ -183,7 +184,7 @@ void SceneWorld::move_kinematic_colliders(double time) {
 void SceneWorld::step(btScalar dt) {
   ++steps_;
   if (!dynamics_) {
-    for (btSoftBody* body : bodies_) step_soft_body(*body, dt);
+    for (btSoftBody* body : bodies_) step_body(*body, dt);
     return;
   }
   move_kinematic_colliders(static_cast<double>(steps_) * settings_.dt);

@@ -22,6 +22,7 @@ class btBroadphaseInterface;
 class btCollisionConfiguration;
 class btCollisionDispatcher;
 class btConstraintSolver;
+class btSoftBodySolver;
 class btSoftRigidDynamicsWorld;
 
 namespace tcsb {
@@ -90,6 +91,7 @@ class SceneWorld {
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
   std::unique_ptr<btBroadphaseInterface> broadphase_;
   std::unique_ptr<btConstraintSolver> solver_;
+  std::unique_ptr<btSoftBodySolver> soft_body_solver_;
   std::unique_ptr<btSoftRigidDynamicsWorld> dynamics_;
   std::vector<std::unique_ptr<Rigid>> rigids_;  // one per collider, in the scene's order
   std::vector<btSoftBody*> bodies_;             // attached, in attachment order

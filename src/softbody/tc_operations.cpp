@@ -366,7 +366,10 @@ void TcSoftBody::make_faded_in_links_steady(TreeId id) {
   for (std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
     CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
     ++work_.links;
-    if (meta.role == LinkRole::kFadeIn) meta = {meta.a, meta.b, LinkRole::kSteady, -1};
+    if (meta.role == LinkRole::kFadeIn) {  // (its interface constraint, if any, stays)
+      meta.role = LinkRole::kSteady;
+      meta.op = -1;
+    }
   }
 }
 

@@ -95,6 +95,8 @@ void TcSoftBody::restore_order() {
   }
   invert(order_, position_);
   permute_in_place(order_, m_links, link_meta_);
+  for (InterfaceConstraint& c : interfaces_)
+    for (std::int32_t& handle : c.links) handle = position_[static_cast<std::size_t>(handle)];
   // Incidence lists name links by index: each entry follows its link.
   for (const TreeId id : tree_of_) incidence_[static_cast<std::size_t>(id)].renumber(position_);
   displaced_ = 0;

@@ -11,10 +11,20 @@ enum class Placement {
   kRigid,   ///< parent position + rest offset (the paper's placement)
 };
 
+/// How the cloth is joined where a coarse block meets finer cloth (docs/design.md, "Interfaces between levels").
+enum class Interfaces {
+  kLinks,    ///< the paper's: the coarse node is linked to each finer node facing it, a fan of two links per side
+  kHanging,  ///< one constraint per fan: the coarse node to the midpoint of the two finer nodes (hanging-node style)
+};
+
 /// Settings of the TreeCut soft body's operations.
 struct TcSettings {
   int blend_steps = 5;  ///< K: steps over which leaving links fade out and arriving links fade in
   Placement placement = Placement::kAffine;
+  /// kLinks keeps Bullet's own solve, bit for bit the paper's method; kHanging solves the body's constraints in
+  /// TcSoftBody::solve_constraints (Bullet's solvers in Bullet's sequence, then the interface constraints, every
+  /// position iteration).
+  Interfaces interfaces = Interfaces::kLinks;
   /// Resolution-consistent material: the link stiffness kLST per LOD level, from level 1 on (entry i is level i + 1;
   /// levels past the end use the last entry). A link belongs to the level of its coarser endpoint; level-0 links
   /// (and every link, when this is empty: uncalibrated) use the solver's material. Values from a calibration

@@ -74,6 +74,11 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
     total_mass_ += lod.nodes()[leaf].mass;
   }
   link_meta_.reserve(static_cast<std::size_t>(m_links.capacity()));
+  // Each interface constraint holds two links: room for as many as the link array can pair up.
+  if (settings_.interfaces == Interfaces::kHanging) {
+    interfaces_.reserve(static_cast<std::size_t>(m_links.capacity() / 2));
+    prepared_interfaces_.reserve(interfaces_.capacity());
+  }
   for (const NetLink& l : net_->links()) {
     const auto index = static_cast<std::int32_t>(link_meta_.size());
     link_meta_.push_back({l.a, l.b, LinkRole::kSteady, -1});
@@ -90,7 +95,11 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
   touch_reserved(link_meta_, CutLink{});
 }
 
-void TcSoftBody::simulate_step(btScalar dt) { step_soft_body(*this, dt); }
+void TcSoftBody::simulate_step(btScalar dt) {
+  predictMotion(dt);
+  solve_constraints();
+  integrateMotion();
+}
 
 int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, TreeId beside) {
   const bool pinned = tree().node(id).pinned();
@@ -176,6 +185,7 @@ int TcSoftBody::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
   incidence_[static_cast<std::size_t>(a)].add(index);
   incidence_[static_cast<std::size_t>(b)].add(index);
   write_link_constant(index);
+  if (settings_.interfaces == Interfaces::kHanging) pair_into_interface(index);
   ++displaced_;
   ++work_.links;
   work_.tree_records += 2;  // both endpoints: records read, incidence lists written
@@ -183,6 +193,7 @@ int TcSoftBody::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
 }
 
 void TcSoftBody::remove_link(int link) {
+  if (link_meta_[static_cast<std::size_t>(link)].interface >= 0) dissolve_interface(link);
   const CutLink meta = link_meta_[static_cast<std::size_t>(link)];
   incidence_[static_cast<std::size_t>(meta.a)].remove(link);
   incidence_[static_cast<std::size_t>(meta.b)].remove(link);
@@ -198,6 +209,9 @@ void TcSoftBody::remove_link(int link) {
     const CutLink& moved = link_meta_[static_cast<std::size_t>(link)];
     incidence_[static_cast<std::size_t>(moved.a)].replace(last, link);
     incidence_[static_cast<std::size_t>(moved.b)].replace(last, link);
+    if (moved.interface >= 0)
+      for (std::int32_t& handle : interfaces_[static_cast<std::size_t>(moved.interface)].links)
+        if (handle == last) handle = link;
   }
   m_links.pop_back();
   link_meta_.pop_back();
@@ -252,6 +266,10 @@ void TcSoftBody::write_link_constant(int link) {
   // blend divides it by alpha, which scales the solver's correction by alpha without touching the rest length
   // (docs/design.md, "Blending through m_c0").
   // Calibrated, each link's own material (its level's stiffness): a fading link fades from its level's constant.
+  if (meta.interface >= 0) {  // a handle of an interface constraint: Bullet's link solver skips it
+    l.m_c0 = 0;
+    return;
+  }
   const btScalar stiffness = calibrated() ? l.m_material->m_kLST : m_materials[0]->m_kLST;
   l.m_c0 = (record(meta.a).inv_mass + record(meta.b).inv_mass) / stiffness;
   const double alpha = blend_alpha(meta);

@@ -23,7 +23,9 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -60,10 +62,27 @@ struct CutLink {
   TreeId a = kNoTreeNode, b = kNoTreeNode;  ///< endpoints, as Bullet's m_n[0], m_n[1]
   LinkRole role = LinkRole::kSteady;
   std::int32_t op = -1;  ///< owning operation while not steady
+  /// With hanging interfaces, the interface constraint this link is one of the two handles of (its m_c0 is then 0,
+  /// so Bullet's link solver skips it), else -1.
+  std::int32_t interface = -1;
   /// Links that join two nodes of the committed cut as neighbours (not the old cut's, not tethers).
   bool joins_committed() const { return role == LinkRole::kSteady || role == LinkRole::kFadeIn; }
   /// The endpoint that is not `end` (one of the two).
   TreeId other(TreeId end) const { return a == end ? b : a; }
+};
+
+/// With TcSettings::interfaces = kHanging, what replaces a fan: where the block of `coarse` meets the two finer
+/// nodes `fine` across one of its sides (children of the block beside it), one distance constraint between the
+/// coarse node and the fine nodes' midpoint, weights 1/2 each, at the rest distance between them. The fan's two
+/// links stay in Bullet's link array as the constraint's handles — the operations fade, relabel and remove them as
+/// they do every link, so the constraint follows the cut in O(degree) — with m_c0 = 0, which Bullet's link solver
+/// skips (btSoftBody::PSolve_Links solves only m_c0 > 0); their blend weight is the constraint's.
+struct InterfaceConstraint {
+  TreeId coarse = kNoTreeNode;
+  std::array<TreeId, 2> fine{kNoTreeNode, kNoTreeNode};
+  std::array<std::int32_t, 2> links{-1, -1};  ///< the handles: links coarse-fine[0] and coarse-fine[1]
+  btScalar rest = 0;                          ///< rest distance from the coarse node to the fine nodes' midpoint
+  btScalar stiffness = 1;                     ///< kLST: the mean of the two levels' (TcSoftBody::interface_stiffness)
 };
 
 /// Why an operation may not begin now.
@@ -117,6 +136,8 @@ class TcSoftBody : public btSoftBody {
   int committed_count() const { return committed_count_; }
   /// Operations currently blending: the paper's I.
   int interpolations() const { return static_cast<int>(inflight_.size()); }
+  /// The interface constraints (hanging interfaces only; empty with the paper's fans).
+  std::span<const InterfaceConstraint> interface_constraints() const { return interfaces_; }
   /// Times an append found Bullet's link array full and it had to grow (expected: never).
   int link_reallocations() const { return link_reallocations_; }
 
@@ -141,9 +162,16 @@ class TcSoftBody : public btSoftBody {
   /// displacement: O(1) at any fixed compression, 4.4 N at 30 %). On bodies that shrank by
   /// TcSettings::kDbvtRebuildShrink since their node DBVT was built it rebuilds that tree too (rebuild_node_dbvt()).
   void advance_blends();
-  /// One solo Bullet step (predictMotion, solveConstraints, integrateMotion), exactly as a plain body outside any
-  /// collision world steps. A body in a btSoftRigidDynamicsWorld is stepped by the world's stepSimulation instead.
+  /// One solo step (predictMotion, solve_constraints(), integrateMotion), as a plain body outside any collision
+  /// world steps. A body in a btSoftRigidDynamicsWorld is stepped by the world's stepSimulation instead, through
+  /// TcSoftBodySolver (tc_softbody_solver.h), which calls solve_constraints() too.
   void simulate_step(btScalar dt);
+  /// The body's constraint solve. With the paper's fans, or while the cut has no interface, Bullet's own
+  /// btSoftBody::solveConstraints(). With hanging interfaces TC-SB's loop (tc_interfaces.cpp): Bullet's steps in
+  /// Bullet's order — links prepared, anchors prepared, velocity iterations, position iterations each running the
+  /// configured position solvers and then projecting every interface constraint, velocities from positions, drift —
+  /// so a body without interfaces steps exactly as Bullet steps it.
+  void solve_constraints();
   /// Receives every operation's timing (may be null).
   void set_op_sink(OpSink* sink) { sink_ = sink; }
 
@@ -230,11 +258,30 @@ class TcSoftBody : public btSoftBody {
     std::int32_t slot = -1;         ///< position in inflight_
   };
 
+  /// validate()'s checks of the interface constraints.
+  void validate_interfaces(const std::function<void(const std::string&)>& fail) const;
+
   // node and link primitives, all O(1) or O(degree)
   int add_node(TreeId id, const btVector3& x, const btVector3& v, TreeId beside);
   void remove_node(TreeId id);
   int add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op);
   void remove_link(int link);
+  /// With hanging interfaces, after add_link: when the new link and one already there from the same coarse node to
+  /// the sibling of its fine end, in the same role and operation, form a fan, makes them one interface constraint.
+  /// O(degree of the coarse node).
+  void pair_into_interface(int link);
+  /// Before remove_link: dissolves the link's interface constraint (swap-with-last), the partner becoming a plain
+  /// link again. O(1).
+  void dissolve_interface(int link);
+  /// The stiffness of an interface constraint between cloth of `fine_level` and the level above: the solver's when
+  /// uncalibrated, else the mean of the two levels' calibrated stiffnesses.
+  btScalar interface_stiffness(int fine_level) const;
+  /// Projects every interface constraint once (one position iteration's share), with the constants
+  /// prepare_interfaces() computed for this step.
+  void project_interfaces();
+  /// Per step: each interface constraint's nodes and constant (stiffness, blend weight and inverse masses as they
+  /// are now).
+  void prepare_interfaces();
   void set_simulated_mass(TreeId id, double mass);
   /// Writes a tree node's Bullet index (or -1) to its record and to the bullet_ mirror together.
   void set_bullet_index(TreeId id, std::int32_t index);
@@ -289,6 +336,14 @@ class TcSoftBody : public btSoftBody {
   std::vector<NodeRecord> record_;        // per tree node
   std::vector<TreeId> tree_of_;           // per Bullet node
   std::vector<CutLink> link_meta_;        // per Bullet link
+  std::vector<InterfaceConstraint> interfaces_;  // hanging interfaces only
+  /// An interface constraint as one step solves it: its nodes, rest distance squared and constant (0: skipped).
+  struct PreparedInterface {
+    Node* coarse = nullptr;
+    Node* fine[2] = {nullptr, nullptr};
+    btScalar c0 = 0, c1 = 0;
+  };
+  std::vector<PreparedInterface> prepared_interfaces_;  // per step, reused
   /// Per LOD level, the material its links use (level 0: the solver's); empty when uncalibrated. Owned by Bullet
   /// (appendMaterial; freed with the body), made once at construction: materials cannot be freed before the body.
   std::vector<Material*> level_materials_;

@@ -1,6 +1,10 @@
 // TcSoftBody::validate(): every invariant of the TreeCut soft body, checked in one place (tests and debug runs).
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "net/cut_adjacency.h"
 #include "softbody/dbvt_local.h"
@@ -88,10 +92,15 @@ Validation TcSoftBody::validate() const {
     const bool blended = meta.role == LinkRole::kFadeIn || meta.role == LinkRole::kFadeOut;
     if ((meta.role == LinkRole::kSteady) != (meta.op < 0)) fail(name + ": steady links own no operation");
     if (l.m_material != link_material(meta.a, meta.b)) fail(name + ": not the material of its level");
+    if (meta.interface >= 0) {
+      if (l.m_c0 != 0) fail(name + ": a handle of an interface constraint, but Bullet's link solver would solve it");
+      continue;
+    }
     btScalar c0 = (l.m_n[0]->m_im + l.m_n[1]->m_im) / l.m_material->m_kLST;
     if (blended) c0 = static_cast<btScalar>(c0 / blend_alpha(meta));
     if (std::abs(l.m_c0 - c0) > 1e-5f * std::abs(c0)) fail(name + ": m_c0 does not match masses and blend");
   }
+  validate_interfaces(fail);
   for (std::size_t id = 0; id < tree_size; ++id)
     for (std::int32_t li : incidence_[id])
       if (li < 0 || li >= static_cast<std::int32_t>(link_meta_.size()) ||
@@ -156,6 +165,69 @@ Validation TcSoftBody::validate() const {
       fail("anchor " + std::to_string(a) + ": its node (tree " + std::to_string(id) + ") is part of an operation");
   }
   return out;
+}
+
+void TcSoftBody::validate_interfaces(const std::function<void(const std::string&)>& fail) const {
+  const LodTree& lod = tree();
+  if (settings_.interfaces == Interfaces::kLinks && !interfaces_.empty()) fail("interface constraints with fans");
+  // Each constraint: its two handles name it, join its coarse node to its two fine nodes (siblings one level finer),
+  // share a role and an operation, and its rest distance is the rest midpoint's. Each (coarse node, neighbouring
+  // block) pair has at most one constraint, so every interface node is constrained once per coarse side it faces.
+  std::vector<std::pair<TreeId, TreeId>> sides;
+  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
+    const InterfaceConstraint& c = interfaces_[i];
+    const std::string name = "interface " + std::to_string(i);
+    bool handles_ok = true;
+    for (int k = 0; k < 2; ++k) {
+      const std::int32_t li = c.links[static_cast<std::size_t>(k)];
+      if (li < 0 || li >= static_cast<std::int32_t>(link_meta_.size())) {
+        handles_ok = false;
+        continue;
+      }
+      const CutLink& m = link_meta_[static_cast<std::size_t>(li)];
+      const TreeId fine = c.fine[static_cast<std::size_t>(k)];
+      handles_ok &= m.interface == static_cast<std::int32_t>(i) &&
+                    ((m.a == c.coarse && m.b == fine) || (m.b == c.coarse && m.a == fine));
+    }
+    if (!handles_ok) {
+      fail(name + ": its handles do not name it or do not join its nodes");
+      continue;
+    }
+    const CutLink& m0 = link_meta_[static_cast<std::size_t>(c.links[0])];
+    const CutLink& m1 = link_meta_[static_cast<std::size_t>(c.links[1])];
+    if (m0.role != m1.role || m0.op != m1.op) fail(name + ": its handles differ in role or operation");
+    if (m0.role == LinkRole::kTether) fail(name + ": made of tethers");
+    const LodNode& f0 = lod.node(c.fine[0]);
+    const LodNode& f1 = lod.node(c.fine[1]);
+    if (c.fine[0] == c.fine[1] || f0.parent != f1.parent || f0.level + 1 != lod.node(c.coarse).level)
+      fail(name + ": its fine nodes are not two siblings one level finer than its coarse node");
+    const btVector3 midpoint = (record(c.fine[0]).rest_position() + record(c.fine[1]).rest_position()) * btScalar(0.5);
+    if (c.rest != (midpoint - record(c.coarse).rest_position()).length()) fail(name + ": rest distance changed");
+    if (c.stiffness != interface_stiffness(f0.level)) fail(name + ": not the stiffness of its two levels");
+    sides.emplace_back(c.coarse, f0.parent);
+  }
+  std::sort(sides.begin(), sides.end());
+  if (std::adjacent_find(sides.begin(), sides.end()) != sides.end())
+    fail("two interface constraints for one side of a coarse block");
+  if (settings_.interfaces != Interfaces::kHanging) return;
+  // No fan left: no two unpaired links from one coarse node to two siblings one level finer, in one role and
+  // operation (tethers aside).
+  for (std::size_t li = 0; li < link_meta_.size(); ++li) {
+    const CutLink& m = link_meta_[li];
+    if (m.interface >= 0 || m.role == LinkRole::kTether) continue;
+    const int la = lod.node(m.a).level, lb = lod.node(m.b).level;
+    if (la == lb) continue;
+    const TreeId coarse = la > lb ? m.a : m.b;
+    const TreeId fine = m.other(coarse);
+    for (const std::int32_t other : incidence_[static_cast<std::size_t>(coarse)]) {
+      const CutLink& o = link_meta_[static_cast<std::size_t>(other)];
+      const TreeId sibling = o.other(coarse);
+      if (static_cast<std::size_t>(other) != li && o.interface < 0 && o.role == m.role && o.op == m.op &&
+          sibling != fine && lod.node(sibling).parent == lod.node(fine).parent &&
+          lod.node(sibling).level == lod.node(fine).level)
+        fail("link " + std::to_string(li) + ": a fan left unpaired with link " + std::to_string(other));
+    }
+  }
 }
 
 }  // namespace tcsb

@@ -94,6 +94,7 @@ std::string calibration_key(const Suite& suite) {
   text << "solver " << suite.solver.piterations << ' ' << suite.solver.viterations << ' ' << suite.solver.diterations
        << ' ' << fmt_number(suite.solver.damping) << ' ' << fmt_number(suite.solver.linear_stiffness) << '\n';
   text << "blend " << suite.tcsb.blend_steps << '\n';
+  // Not tcsb.interfaces: a calibration fits whole-level cuts, which have no boundary between levels.
   // A fit holds only in the scene it was made in. Only with colliders, so the keys of suites without a scene (and
   // the calibrations written for them) stay as they were.
   const SceneSettings& scene = suite.scene;

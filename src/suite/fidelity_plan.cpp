@@ -15,6 +15,7 @@ const char* fidelity_method_name(FidelityMethod method) {
     case FidelityMethod::kTcsbNoGeomorph: return "tcsb_no_geomorph";
     case FidelityMethod::kTcsbCalibrated: return "tcsb_calibrated";
     case FidelityMethod::kUniformCalibrated: return "uniform_grid_calibrated";
+    case FidelityMethod::kTcsbCalibratedFans: return "tcsb_calibrated_fans";
   }
   return "unknown";
 }
@@ -42,6 +43,8 @@ std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
     for (const double c : targets)
       if (c < 1.0) plan.push_back({FidelityMethod::kTcsbCalibrated, c});
     add_at_targets(FidelityMethod::kUniformCalibrated);
+    if (suite.fidelity.ablations && suite.tcsb.interfaces == Interfaces::kHanging)
+      add_at_targets(FidelityMethod::kTcsbCalibratedFans);
   }
   return plan;
 }

@@ -22,11 +22,14 @@ enum class FidelityMethod {
   kTcsbNoGeomorph,  ///< TC-SB, the same body, its surface switched at once instead of geomorphed (ablation;
                     ///< fidelity/surface_morph.h)
   kTcsbCalibrated,  ///< TC-SB with the suite calibration's per-level link stiffness (TcSettings::level_stiffness)
-  kUniformCalibrated,  ///< the uniform coarse grid with the calibration's stiffness for its budget (the fair rival)
+  kUniformCalibrated,   ///< the uniform coarse grid with the calibration's stiffness for its budget (the fair rival)
+  kTcsbCalibratedFans,  ///< calibrated TC-SB with the paper's fans at interfaces, in a suite whose TC-SB uses
+                        ///< hanging interfaces (ablation)
 };
 
 /// Name used in reports: "tcsb", "uniform_grid", "switch_body", "tcsb_random", "tcsb_rigid", "tcsb_no_geomorph",
-/// "tcsb_calibrated", "uniform_grid_calibrated". ("tcsb" is the suite's TC-SB, uncalibrated: the timed one.)
+/// "tcsb_calibrated", "uniform_grid_calibrated", "tcsb_calibrated_fans". ("tcsb" is the suite's TC-SB,
+/// uncalibrated: the timed one.)
 const char* fidelity_method_name(FidelityMethod method);
 
 /// One body of the fidelity pass on every net.
@@ -38,8 +41,9 @@ struct FidelitySubjectSpec {
 /// The subjects, in report order: TC-SB at every target of compression and fidelity.pareto_targets (ascending,
 /// each once), then, with fidelity.ablations, the five ablations at every suite compression target below 1 (at 1
 /// they would all be the full-resolution body), then, with a calibration, calibrated TC-SB at every target of the
-/// sweep below 1 and the calibrated uniform grid at the suite's targets below 1. Empty unless fidelity.enabled and the
-/// suite runs TC-SB.
+/// sweep below 1 and the calibrated uniform grid at the suite's targets below 1, and, when the suite's TC-SB uses
+/// hanging interfaces and asks for ablations, calibrated TC-SB with the paper's fans at the suite's targets below 1.
+/// Empty unless fidelity.enabled and the suite runs TC-SB.
 std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite);
 
 /// Grid of the uniform coarse net holding about `nodes` nodes with the aspect of a width x height net:

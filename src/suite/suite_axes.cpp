@@ -42,6 +42,11 @@ const AxisSetting kAxisSettings[] = {
      [](const Reader& r, const json& v, const std::string& at, Suite& s) {
        s.tcsb.placement = r.choice<Placement>(v, at, {{"affine", Placement::kAffine}, {"rigid", Placement::kRigid}});
      }},
+    {"tcsb.interfaces",
+     [](const Reader& r, const json& v, const std::string& at, Suite& s) {
+       s.tcsb.interfaces =
+           r.choice<Interfaces>(v, at, {{"links", Interfaces::kLinks}, {"hanging", Interfaces::kHanging}});
+     }},
     {"tcsb.restore_order",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.tcsb.restore_order = r.boolean(v, at); }},
     {"tcsb.restore_order_min_nodes", [](const Reader& r, const json& v, const std::string& at,

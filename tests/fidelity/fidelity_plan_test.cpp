@@ -61,6 +61,23 @@ TEST(FidelityPlan, CalibratedTcsbAtEverySweepTargetBelowOneAndTheCalibratedGridA
   EXPECT_EQ(got, want);
 }
 
+TEST(FidelityPlan, WithHangingInterfacesTheFannedBodyIsAnAblationAtTheSuitesTargets) {
+  Suite s = suite_with_fidelity(true);
+  s.calibration = Calibration{};
+  const auto fans = [](const Suite& suite) {
+    std::vector<double> at;
+    for (const FidelitySubjectSpec& spec : fidelity_plan(suite))
+      if (spec.method == FidelityMethod::kTcsbCalibratedFans) at.push_back(spec.compression);
+    return at;
+  };
+  EXPECT_TRUE(fans(s).empty());  // the paper's fans are the suite's own TC-SB
+  s.tcsb.interfaces = Interfaces::kHanging;
+  EXPECT_EQ(fans(s), (std::vector<double>{0.75, 0.3}));
+  EXPECT_STREQ(fidelity_method_name(FidelityMethod::kTcsbCalibratedFans), "tcsb_calibrated_fans");
+  s.fidelity.ablations = false;
+  EXPECT_TRUE(fans(s).empty());
+}
+
 TEST(FidelityPlan, EmptyWhenDisabledOrWithoutTcsb) {
   Suite s = suite_with_fidelity(true);
   s.fidelity.enabled = false;

@@ -64,6 +64,17 @@ TEST(SuiteAxes, LabelsSpellValuesShortly) {
   EXPECT_EQ(s.configurations[1].label, "damping=0.25,placement=rigid,illumination=false,dt=0.01");
 }
 
+TEST(SuiteAxes, TheInterfacesAreASettingAndAnAxis) {
+  json j = base_suite();
+  j["tcsb"] = {{"blend_steps", 4}, {"interfaces", "hanging"}};
+  EXPECT_EQ(parse_suite_text(j.dump(), "axes.json").tcsb.interfaces, Interfaces::kHanging);
+  const Suite s = with_axes({{"tcsb.interfaces", {"links", "hanging"}}});
+  ASSERT_EQ(s.configurations.size(), 2u);
+  EXPECT_EQ(s.configurations[1].label, "interfaces=hanging");
+  EXPECT_EQ(configuration_suite(s, 0).tcsb.interfaces, Interfaces::kLinks);
+  EXPECT_EQ(configuration_suite(s, 1).tcsb.interfaces, Interfaces::kHanging);
+}
+
 TEST(SuiteAxes, AConfigurationIsTheBaseSuiteWithItsValuesApplied) {
   const Suite s = with_axes({{"solver.piterations", {4, 8}}, {"seed", {11, 12}}, {"steps", {30, 40}}});
   const Suite c = configuration_suite(s, 4);  // the first axis slowest: piterations=8, seed=11, steps=30
@@ -129,6 +140,8 @@ TEST(SuiteAxes, BadAxesAreRefusedNamingTheField) {
             "axes.json: axes.solver.damping[1]: must be a number in [0, 1), got 1.5");
   EXPECT_EQ(rejection({{"tcsb.placement", {"affine", "bent"}}}),
             "axes.json: axes.tcsb.placement[1]: must be one of \"affine\", \"rigid\", got string \"bent\"");
+  EXPECT_EQ(rejection({{"tcsb.interfaces", {"links", "fans"}}}),
+            "axes.json: axes.tcsb.interfaces[1]: must be one of \"links\", \"hanging\", got string \"fans\"");
   EXPECT_EQ(rejection({{"seed", {-1}}}), "axes.json: axes.seed[0]: must be a non-negative integer, got -1");
   EXPECT_EQ(rejection({{"solver.piterations", json::array()}}),
             "axes.json: axes.solver.piterations: must not be empty");
@@ -175,11 +188,13 @@ TEST(SuiteAxes, TheFidelityPassIsNotCombinedWithAxes) {
 TEST(SuiteAxes, EverySettingThatCanBeAnAxisIsReadThroughTheAxisTable) {
   // Each axis-able path is a real setting whose reader accepts a valid value.
   const std::vector<std::string> paths = axis_setting_paths();
-  EXPECT_EQ(paths.size(), 25u);
+  EXPECT_EQ(paths.size(), 26u);
   for (const std::string& path : paths) {
     json value;
     if (path == "tcsb.placement")
       value = "rigid";
+    else if (path == "tcsb.interfaces")
+      value = "hanging";
     else if (path == "feedback.policy")
       value = "random";
     else if (path == "feedback.illumination" || path == "tcsb.restore_order" || path == "tcsb.rebuild_dbvt")

@@ -96,6 +96,9 @@ TEST(ShippedSuites, ConvergedIsThePaperSuiteAtThirtyTwoIterationsWithTheWholeFid
   // Fidelity is measured with the feedback charged for level boundaries; the paper's own suite has no such term.
   EXPECT_GT(c.feedback.interface_charge, 0);
   EXPECT_EQ(p.feedback.interface_charge, 0);
+  // Levels meet through hanging interfaces; the paper's suite keeps its fans.
+  EXPECT_EQ(c.tcsb.interfaces, Interfaces::kHanging);
+  EXPECT_EQ(p.tcsb.interfaces, Interfaces::kLinks);
   EXPECT_TRUE(c.fidelity.enabled);
   EXPECT_TRUE(c.fidelity.ablations);
   EXPECT_FALSE(c.fidelity.pareto_targets.empty());
@@ -166,6 +169,7 @@ TEST(ShippedSuites, SceneSuitesRunEveryMethodAroundOneSphereWithContactAsAFeatur
     EXPECT_GT(s.feedback.contact_saliency, 0.0);
     EXPECT_TRUE(s.fidelity.enabled);
     EXPECT_TRUE(s.fidelity.ablations);  // the uniform grid, the comparison these scenes exist for
+    EXPECT_EQ(s.tcsb.interfaces, Interfaces::kHanging);
   }
   EXPECT_EQ(parse_suite(kSourceDir / "suites/drape.json").scene.colliders[0].motion, ColliderMotion::kStatic);
   EXPECT_EQ(parse_suite(kSourceDir / "suites/ball.json").scene.colliders[0].motion, ColliderMotion::kDynamic);

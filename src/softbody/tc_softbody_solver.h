@@ -1,0 +1,26 @@
+// TcSoftBodySolver: Bullet's default soft-body solver, except that a TcSoftBody solves its constraints with its own
+// loop (TcSoftBody::solve_constraints: hanging interfaces). Bullet's soft-body solver is pluggable:
+// btSoftRigidDynamicsWorld takes one in its constructor and calls its solveConstraints for every body each step.
+// step_body() is the same dispatch for a body stepped solo, so both paths share one implementation.
+#pragma once
+
+#include <BulletSoftBody/btDefaultSoftBodySolver.h>
+#include <BulletSoftBody/btSoftBody.h>
+
+namespace tcsb {
+
+/// A body's constraint solve: TcSoftBody::solve_constraints() for a TC-SB body, btSoftBody::solveConstraints()
+/// for any other (a plain body takes Bullet's code path untouched).
+void solve_body_constraints(btSoftBody& body);
+
+/// One solo step of a lone body with collisions off, as btSoftRigidDynamicsWorld would take it: predictMotion, the
+/// constraint solve above, integrateMotion.
+void step_body(btSoftBody& body, btScalar dt);
+
+/// The solver a scene's btSoftRigidDynamicsWorld is built with.
+class TcSoftBodySolver : public btDefaultSoftBodySolver {
+ public:
+  void solveConstraints(btScalar solverdt) override;
+};
+
+}  // namespace tcsb

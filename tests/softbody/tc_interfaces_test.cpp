@@ -1,0 +1,170 @@
+// Hanging interfaces (TcSettings::interfaces = kHanging): each fan becomes one constraint, the constraint solve
+// keeps Bullet's steps, and both ways a body is stepped (solo, and in a world through TcSoftBodySolver) project it.
+#include <gtest/gtest.h>
+
+#include <BulletCollision/CollisionShapes/btSphereShape.h>
+#include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
+
+#include "scene/scene_world.h"
+#include "softbody/bullet_setup.h"
+#include "softbody/plain_softbody.h"
+#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_solver.h"
+#include "test_bodies.h"
+
+namespace tcsb {
+namespace {
+
+constexpr btScalar kDt = 1.0f / 60;
+
+TcSettings hanging() {
+  TcSettings s;
+  s.interfaces = Interfaces::kHanging;
+  return s;
+}
+
+/// Coarsens one level-1 block in the middle of a 17^2 net and lets its blend end: a level-1 node among leaves, with
+/// two leaves facing each of its four sides.
+TreeId coarsen_one_block(TcSoftBody& tc) {
+  const TreeId parent = tc.tree().at(1, 3, 3);
+  EXPECT_TRUE(tc.can_coarsen(parent).ok);
+  tc.begin_coarse(parent);
+  for (int s = 0; s < tc.settings().blend_steps; ++s) {
+    tc.advance_blends();
+    tc.simulate_step(kDt);
+  }
+  EXPECT_EQ(tc.state(parent), CutState::kActive);
+  return parent;
+}
+
+/// Links of `id` to nodes of another level, and how many of them Bullet's link solver solves (m_c0 > 0).
+std::pair<int, int> cross_level_links(const TcSoftBody& tc, TreeId id) {
+  int links = 0, solved = 0;
+  for (const std::int32_t li : tc.incidence(id)) {
+    const CutLink& m = tc.cut_links()[static_cast<std::size_t>(li)];
+    if (tc.tree().node(m.other(id)).level == tc.tree().node(id).level) continue;
+    ++links;
+    solved += tc.m_links[li].m_c0 > 0;
+  }
+  return {links, solved};
+}
+
+TEST(TcInterfaces, EachFanBecomesOneConstraintAndTheFansAreLeftToTheSolverWithoutThem) {
+  const auto net = testing::square_net(17);
+  SceneWorld world({});
+  TcSoftBody fans(world.info(), net, testing::test_solver(), {});
+  TcSoftBody hung(world.info(), net, testing::test_solver(), hanging());
+  const TreeId p = coarsen_one_block(fans);
+  ASSERT_EQ(coarsen_one_block(hung), p);
+
+  EXPECT_TRUE(fans.interface_constraints().empty());
+  EXPECT_EQ(cross_level_links(fans, p), std::make_pair(8, 8));  // a fan of two links on each of four sides
+
+  ASSERT_EQ(hung.interface_constraints().size(), 4u);
+  EXPECT_EQ(cross_level_links(hung, p), std::make_pair(8, 0));  // the same links, now handles Bullet skips
+  for (const InterfaceConstraint& c : hung.interface_constraints()) {
+    EXPECT_EQ(c.coarse, p);
+    EXPECT_EQ(net->lod().node(c.fine[0]).parent, net->lod().node(c.fine[1]).parent);
+    // The leaves' midpoint lies one and a half leaf spacings from the block's centre, straight across its side.
+    EXPECT_NEAR(c.rest, 1.5 * net->extent() / 16, 1e-5);  // 17 leaves over the extent: 16 spacings
+    EXPECT_EQ(c.stiffness, 1.0f);  // uncalibrated: the solver's
+  }
+  EXPECT_TRUE(hung.validate().ok()) << hung.validate().summary();
+
+  // Refining the block back leaves no constraint and the plain body's links, all solved by Bullet.
+  hung.begin_refine(p);
+  for (int s = 0; s < hung.settings().blend_steps; ++s) hung.advance_blends();
+  EXPECT_TRUE(hung.interface_constraints().empty());
+  EXPECT_EQ(hung.link_count(), 2 * 17 * 16);
+  for (int li = 0; li < hung.link_count(); ++li) EXPECT_GT(hung.m_links[li].m_c0, 0) << "link " << li;
+  EXPECT_TRUE(hung.validate().ok()) << hung.validate().summary();
+}
+
+TEST(TcInterfaces, ValidateCatchesABrokenConstraint) {
+  const auto net = testing::square_net(17);
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), hanging());
+  coarsen_one_block(tc);
+  ASSERT_TRUE(tc.validate().ok()) << tc.validate().summary();
+  const int handle = tc.interface_constraints()[0].links[0];
+  tc.m_links[handle].m_c0 = 1;  // Bullet's link solver would now pull the fan again
+  const Validation broken = tc.validate();
+  ASSERT_FALSE(broken.ok());
+  EXPECT_NE(broken.summary().find("Bullet's link solver would solve it"), std::string::npos) << broken.summary();
+}
+
+TEST(TcInterfaces, WithoutInterfacesAHangingBodyStepsAsBulletBitForBit) {
+  // Until the cut holds an interface, solve_constraints() is Bullet's own: the finest cut is the plain body.
+  const auto net = testing::square_net(33);
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), hanging());
+  auto plain = make_plain_softbody(world.info(), *net, testing::test_solver());
+  for (int s = 0; s < 100; ++s) {
+    tc.advance_blends();
+    tc.simulate_step(kDt);
+    step_soft_body(*plain, kDt);
+  }
+  for (int i = 0; i < plain->m_nodes.size(); ++i) {
+    ASSERT_EQ(tc.m_nodes[i].m_x, plain->m_nodes[i].m_x) << "node " << i;
+    ASSERT_EQ(tc.m_nodes[i].m_v, plain->m_nodes[i].m_v) << "node " << i;
+  }
+}
+
+TEST(TcInterfaces, TheProjectionConservesLinearMomentum) {
+  const auto net = testing::square_net(17, 0);  // no pins: momentum is conserved only away from anchors
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), hanging());
+  coarsen_one_block(tc);
+  // Give the cloth a shear so the constraints have work to do, then step without gravity's impulse in the sum.
+  for (int i = 0; i < tc.m_nodes.size(); ++i) tc.m_nodes[i].m_v = btVector3(0, tc.m_nodes[i].m_x.x(), 0);
+  const Eigen::Vector3d before = tc.linear_momentum();
+  const double weight = tc.total_mass() * 9.81 * kDt;  // what gravity adds per step, along -y
+  for (int s = 0; s < 10; ++s) tc.simulate_step(kDt);
+  const Eigen::Vector3d after = tc.linear_momentum() + Eigen::Vector3d(0, 10 * weight, 0);
+  EXPECT_LT((after - before).norm(), 1e-4 * std::max(1.0, before.norm()));
+  EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
+}
+
+/// How far the coarse node of `tc`'s first interface constraint lies from its rest distance to the fine midpoint,
+/// as a fraction of that distance.
+double interface_strain(const TcSoftBody& tc) {
+  const InterfaceConstraint& c = tc.interface_constraints()[0];
+  const btVector3 mid =
+      (tc.m_nodes[tc.bullet_index(c.fine[0])].m_x + tc.m_nodes[tc.bullet_index(c.fine[1])].m_x) * btScalar(0.5);
+  return std::abs((mid - tc.m_nodes[tc.bullet_index(c.coarse)].m_x).length() - c.rest) / c.rest;
+}
+
+TEST(TcInterfaces, BothSteppingPathsProjectTheConstraints) {
+  // The coarse node's only links to the cloth are handles (m_c0 = 0): if a path skipped the projection, it would fall
+  // freely away from the cloth.
+  const auto net = testing::square_net(17);
+  SceneSettings scene;
+  Collider far_away;
+  far_away.shape = ColliderShape::kSphere;
+  far_away.position = {0, -100, 0};
+  far_away.radius = 0.5;
+  scene.colliders.push_back(far_away);
+  SceneWorld solo({});
+  SceneWorld with_world({}, scene);
+  ASSERT_NE(with_world.dynamics(), nullptr);
+  TcSoftBody a(solo.info(), net, testing::test_solver(), hanging());
+  TcSoftBody b(with_world.info(), net, testing::test_solver(), hanging());
+  const SceneWorld::Attachment in_solo = solo.attach(a);
+  const SceneWorld::Attachment in_world = with_world.attach(b);
+  for (TcSoftBody* tc : {&a, &b}) tc->begin_coarse(tc->tree().at(1, 3, 3));
+  for (int s = 0; s < 120; ++s) {
+    a.advance_blends();
+    b.advance_blends();
+    solo.step(kDt);
+    with_world.step(kDt);
+  }
+  ASSERT_EQ(a.interface_constraints().size(), 4u);
+  ASSERT_EQ(b.interface_constraints().size(), 4u);
+  EXPECT_LT(interface_strain(a), 0.1);
+  EXPECT_LT(interface_strain(b), 0.1);
+  EXPECT_TRUE(a.validate().ok()) << a.validate().summary();
+  EXPECT_TRUE(b.validate().ok()) << b.validate().summary();
+}
+
+}  // namespace
+}  // namespace tcsb
