@@ -25,7 +25,8 @@ struct RunArgs {
   std::vector<double> compression;    ///< overrides the suite's TC-SB node budgets (fractions), when given
   std::optional<double> max_step_ms;  ///< overrides the suite's time budget per step (ms; 0 disables), when given
   std::optional<int> repetitions;     ///< overrides the suite's repetitions per case, when given
-  std::string shard;                  ///< "K/N": run only shard K of N (suite/shard_plan.h); empty: everything
+  std::string shard;                  ///< "K/N": run only shard K of N (sweep/shard_plan.h); empty: everything
+  std::string split = "repetitions";  ///< what --shard splits: "repetitions" or "nets" (sweep/shard_plan.h)
 };
 
 /// Options of `tcsb merge`.

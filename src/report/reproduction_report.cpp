@@ -57,7 +57,8 @@ nlohmann::ordered_json claim_json(const TrackedClaim& t) {
           {"interval", interval},
           {"verdict", verdict_name(verdict(c))},
           {"look", t.look > 0 ? nlohmann::ordered_json(t.look) : nlohmann::ordered_json(nullptr)},
-          {"repetitions", t.look > 0 ? nlohmann::ordered_json(t.repetitions) : nlohmann::ordered_json(nullptr)}};
+          {"repetitions", t.look > 0 ? nlohmann::ordered_json(t.repetitions) : nlohmann::ordered_json(nullptr)},
+          {"processes", t.look > 0 ? nlohmann::ordered_json(t.processes) : nlohmann::ordered_json(nullptr)}};
 }
 
 nlohmann::ordered_json look_json(const Look& l) {
