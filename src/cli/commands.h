@@ -46,6 +46,9 @@ struct ReproduceArgs {
   /// Wall time (s) for judging the claims after the run — intervals, and extra repetitions of undecided claims
   /// while they fit; absent: what is left of kReproductionWallTargetS (paper/paper_claims.h); 0: no extra repetitions.
   std::optional<double> budget;
+  /// Processes the run's repetitions are measured in, one after another (cli/shard_processes.h): 1 runs them in this
+  /// one, as always; more gives intervals that include the spread between processes.
+  int processes = 1;
 };
 
 /// The largest --budget accepted (a day): a bound against typing errors.
