@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # Runs a tcsb suite on a Slurm cluster as a job array: array task K runs shard K of N (`tcsb run SUITE --shard K/N`),
 # and a merge job that depends on the whole array (afterok) joins the shards (`tcsb merge`) once every task has
-# succeeded. A net's cases stay in one task, so every same-run ratio is measured within one process.
+# succeeded. A net's cases of a repetition stay in one task, so every same-run ratio is measured within one process.
 #
-# Usage: scripts/slurm-sweep.sh [--wait] [--tcsb PATH] [--sbatch "FLAGS"] SUITE N OUTDIR [-- RUN FLAGS...]
+# Usage: scripts/slurm-sweep.sh [--wait] [--tcsb PATH] [--split repetitions|nets] [--sbatch "FLAGS"] SUITE N OUTDIR
+#                               [-- RUN FLAGS...]
 #   SUITE     a suite file or a bundled suite name (ci, paper, scaling, ...)
-#   N         the number of shards = array tasks (more than the suite's nets leaves some shards empty)
+#   N         the number of shards = array tasks (more than the units of the split leaves some shards empty)
 #   OUTDIR    a directory every node can write (created): shard-K.json and shard-K.log per task, merged.json and
 #             merge.log, and the two job scripts (shard.sbatch, merge.sbatch)
 #   --tcsb    the tcsb executable the nodes run (default: build/tcsb of this checkout, else `tcsb` on PATH)
+#   --split   what the shards split (`tcsb run --split`, docs/sweeps.md): repetitions (default: a net's repetitions
+#             spread over the tasks) or nets (each net with all its repetitions in one task)
 #   --sbatch  extra flags for both sbatch calls, e.g. "--partition=short --time=01:00:00 --account=me"
 #   --wait    block until the merge job ends and exit with its status (a failed shard cancels the merge: exit 1)
 #   RUN FLAGS are passed to every `tcsb run`, e.g. -- --repetitions 3
@@ -20,11 +23,13 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 wait_for_merge=0
 tcsb=""
+split=repetitions
 sbatch_flags=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --wait) wait_for_merge=1; shift ;;
     --tcsb) tcsb=${2:?--tcsb needs a path}; shift 2 ;;
+    --split) split=${2:?--split needs repetitions or nets}; shift 2 ;;
     --sbatch) sbatch_flags=${2?--sbatch needs flags}; shift 2 ;;
     -h|--help) usage ;;
     *) break ;;
@@ -42,6 +47,10 @@ if ! [[ "$shards" =~ ^[1-9][0-9]*$ ]]; then
   echo "slurm-sweep: N must be a whole number >= 1, got '$shards'" >&2
   exit 2
 fi
+case "$split" in
+  repetitions|nets) ;;
+  *) echo "slurm-sweep: --split must be repetitions or nets, got '$split'" >&2; exit 2 ;;
+esac
 if [ -z "$tcsb" ]; then
   if [ -x "$root/build/tcsb" ]; then tcsb="$root/build/tcsb"; else tcsb=$(command -v tcsb || true); fi
 fi
@@ -61,10 +70,10 @@ cat >"$outdir/shard.sbatch" <<JOB
 #SBATCH --job-name=tcsb-shard
 #SBATCH --output=$outdir/shard-%a.log
 #SBATCH --ntasks=1
-# One array task: shard \$SLURM_ARRAY_TASK_ID of $shards.
+# One array task: shard \$SLURM_ARRAY_TASK_ID of $shards, split by $split.
 set -euo pipefail
 k=\$SLURM_ARRAY_TASK_ID
-exec $(quoted "$tcsb") run $(quoted "$suite") --quiet --shard "\$k/$shards" --out $(printf %q "$outdir")/shard-\$k.json $(quoted "${run_flags[@]+"${run_flags[@]}"}")
+exec $(quoted "$tcsb") run $(quoted "$suite") --quiet --split $split --shard "\$k/$shards" --out $(printf %q "$outdir")/shard-\$k.json $(quoted "${run_flags[@]+"${run_flags[@]}"}")
 JOB
 merge_inputs=()
 for k in $(seq 1 "$shards"); do merge_inputs+=("$outdir/shard-$k.json"); done

@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
 # The Slurm launcher (scripts/slurm-sweep.sh) on a real, single-node Slurm cluster brought up here: munged, slurmctld
 # and slurmd as root in the background, every file of theirs in a temporary directory, their own ports and munge
-# socket (so a cluster already on the machine is not touched). A small suite runs as a 3-task job array plus the
-# dependent merge; the merged result must equal the unsharded run in every deterministic field (`tcsb compare`:
-# N, L, I, operations, statuses, final-state hashes, case by case and repetition by repetition) and conform to the
-# result schema (`tcsb export` checks its input against it). The daemons it started are stopped on exit.
+# socket (so a cluster already on the machine is not touched). The ci suite runs split by repetition as a 3-task job
+# array plus the dependent merge; the merged result must equal the unsharded run in every deterministic field
+# (`tcsb compare`: N, L, I, operations, statuses, final-state hashes, case by case and repetition by repetition), name
+# the shard that measured each repetition, and conform to the result schema (`tcsb export` checks its input against
+# it). The daemons it started are stopped on exit.
 # Installs slurm-wlm and munge when missing (as scripts/install-deps.sh does). Without root it cannot start the
 # daemons: it says so, prints SKIPPED and exits 0.
 # Usage: bash scripts/test-slurm.sh [TCSB]     (default build/tcsb)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 tcsb=${1:-$root/build/tcsb}
-timeout_s=${TCSB_SLURM_TIMEOUT:-150}
+timeout_s=${TCSB_SLURM_TIMEOUT:-600}
 
 if [ "$(id -u)" -ne 0 ]; then
   echo "test-slurm: SKIPPED: starting munged, slurmctld and slurmd needs root (this is uid $(id -u))"
@@ -99,22 +100,18 @@ done
 [ "$state" = "idle" ] || { echo "test-slurm: the node did not come up (state '$state')" >&2; exit 1; }
 echo "test-slurm: single-node cluster up ($host, slurm $(sinfo -V | awk '{print $2}'))" >&2
 
-# Three nets, so three shards each get one; nine repetitions, so `tcsb compare` can decide (it needs nine samples).
-cat >"$tmp/suite.json" <<'SUITE'
-{"name": "slurm-test", "description": "three small nets for scripts/test-slurm.sh",
- "nets": [
-  {"name": "n9", "width": 9, "height": 9, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0}, "pinned": "corners"},
-  {"name": "n13", "width": 13, "height": 13, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0}, "pinned": "corners"},
-  {"name": "n17", "width": 17, "height": 17, "size": [2.0, 2.0], "elevation": 2.0, "mass": {"total": 1.0}, "pinned": "corners"}],
- "methods": ["plain", "tcsb"], "compression": [1.0, 0.5], "dt": 0.016666666666666666, "gravity": 9.81,
- "steps": 40, "warmup_steps": 10, "repetitions": 9, "seed": 7, "solver": {"piterations": 2}}
-SUITE
-"$tcsb" run "$tmp/suite.json" --quiet --out "$tmp/whole.json" 2>"$tmp/whole.log"
+# The ci suite (four nets, nine repetitions, so `tcsb compare` can decide: it needs nine samples), split by
+# repetition: every shard holds repetitions of several nets, and each net's repetitions lie in several shards.
+"$tcsb" run ci --quiet --out "$tmp/whole.json" 2>"$tmp/whole.log"
 
-timeout "$timeout_s" bash "$root/scripts/slurm-sweep.sh" --wait --tcsb "$tcsb" "$tmp/suite.json" 3 "$tmp/out"
+timeout "$timeout_s" bash "$root/scripts/slurm-sweep.sh" --wait --tcsb "$tcsb" --split repetitions ci 3 "$tmp/out"
 for k in 1 2 3; do
-  grep -q '"shard"' "$tmp/out/shard-$k.json" || { echo "test-slurm: shard-$k.json is not a shard" >&2; exit 1; }
+  grep -q '"split": "repetitions"' "$tmp/out/shard-$k.json" ||
+    { echo "test-slurm: shard-$k.json is not a shard split by repetition" >&2; exit 1; }
 done
+# Every repetition of the merged result names its shard, and the nets' repetitions came from more than one.
+processes=$(grep -o '"process": [0-9]*' "$tmp/out/merged.json" | sort -u | wc -l)
+[ "$processes" -eq 3 ] || { echo "test-slurm: merged.json names $processes processes, not 3" >&2; exit 1; }
 
 # Same behaviour: no deterministic field differs (timings are not judged here: --threshold 100 = +10000 %).
 "$tcsb" compare --threshold 100 --summary "$tmp/summary.md" "$tmp/whole.json" "$tmp/out/merged.json" 2>"$tmp/compare.log" ||
@@ -123,5 +120,5 @@ grep -q ", 0 behaviour changes" "$tmp/summary.md" || { cat "$tmp/summary.md" >&2
 # The schema: export reads only results that conform to it.
 "$tcsb" export "$tmp/out/merged.json" --format markdown >/dev/null
 cases=$(grep -c '"label"' "$tmp/out/merged.json")
-echo "test-slurm: ok: 3 array tasks and the merge ran on Slurm; merged.json ($cases cases) equals the unsharded run" \
-  "in every deterministic field and conforms to the schema"
+echo "test-slurm: ok: 3 array tasks (the ci suite split by repetition) and the merge ran on Slurm; merged.json" \
+  "($cases cases) equals the unsharded run in every deterministic field and conforms to the schema"

@@ -1,5 +1,6 @@
 #include "analysis/bootstrap.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -16,14 +17,39 @@ std::vector<std::size_t> resample_indices(std::size_t n, std::mt19937_64& rng) {
   return picks;
 }
 
-std::vector<double> resample_groups(const std::vector<std::vector<double>>& groups, std::mt19937_64& rng) {
-  std::vector<double> pooled;
-  for (const std::size_t g : resample_indices(groups.size(), rng)) {
-    const std::vector<double>& units = groups[g];
-    for (const std::size_t u : resample_indices(units.size(), rng)) pooled.push_back(units[u]);
+namespace {
+
+/// The units of each process, processes in the order they first appear.
+std::vector<std::vector<std::size_t>> units_by_process(const std::vector<int>& process_of) {
+  std::vector<int> labels;
+  std::vector<std::vector<std::size_t>> units;
+  for (std::size_t u = 0; u < process_of.size(); ++u) {
+    const auto it = std::find(labels.begin(), labels.end(), process_of[u]);
+    if (it == labels.end()) {
+      labels.push_back(process_of[u]);
+      units.push_back({u});
+    } else {
+      units[static_cast<std::size_t>(it - labels.begin())].push_back(u);
+    }
   }
-  return pooled;
+  return units;
 }
+
+}  // namespace
+
+std::vector<std::size_t> resample_grouped(const std::vector<int>& process_of, std::mt19937_64& rng) {
+  const std::vector<std::vector<std::size_t>> units = units_by_process(process_of);
+  if (units.size() <= 1) return resample_indices(process_of.size(), rng);
+  std::vector<std::size_t> picks;
+  picks.reserve(process_of.size());
+  for (const std::size_t p : resample_indices(units.size(), rng)) {
+    const std::vector<std::size_t>& of_process = units[p];
+    for (const std::size_t u : resample_indices(of_process.size(), rng)) picks.push_back(of_process[u]);
+  }
+  return picks;
+}
+
+std::size_t process_count(const std::vector<int>& process_of) { return units_by_process(process_of).size(); }
 
 std::optional<Interval> percentile_interval(std::vector<double> replicates, double confidence) {
   if (!(confidence > 0.0 && confidence < 1.0))

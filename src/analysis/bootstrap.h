@@ -24,12 +24,17 @@ struct Interval {
 /// is not used).
 std::vector<std::size_t> resample_indices(std::size_t n, std::mt19937_64& rng);
 
-/// One two-stage resample of grouped units (e.g. runs, each with its repetitions): the groups are drawn again with
-/// replacement, then, in each drawn group, its units with replacement; returns the drawn values, pooled. Resampling
-/// the groups first carries the variation between groups into the interval, which pooling the units alone would
-/// hide when units of one group agree more than groups do (repetitions of one process, runs in different
-/// processes). With one group it is resample_indices over that group's units. Empty groups contribute nothing.
-std::vector<double> resample_groups(const std::vector<std::vector<double>>& groups, std::mt19937_64& rng);
+/// One two-stage resample of units grouped by the process that measured them (`process_of[u]`: unit u's process,
+/// any label): indices into the units. The processes are drawn again with replacement (in the order they first
+/// appear), then, in each drawn process, its units with replacement. Resampling the processes first carries the
+/// variation between processes into the interval, which drawing the units alone would hide when the units of one
+/// process agree more than processes do (a net's ratio moves between processes more than within one). With one
+/// process the process draw is skipped, so it is exactly resample_indices(process_of.size(), rng): an interval of a
+/// run of one process is what it always was.
+std::vector<std::size_t> resample_grouped(const std::vector<int>& process_of, std::mt19937_64& rng);
+
+/// How many distinct processes `process_of` names (0 for no units).
+std::size_t process_count(const std::vector<int>& process_of);
 
 /// The central `confidence` interval of bootstrap replicates by the percentile method: the (1 - confidence) / 2 and
 /// (1 + confidence) / 2 quantiles (linear interpolation). Non-finite replicates (a resample on which the statistic is

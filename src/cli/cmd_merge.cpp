@@ -1,7 +1,7 @@
 // `tcsb merge SHARD.json... --out ALL.json`: joins the results of `tcsb run SUITE --shard K/N` for K = 1..N (run on
 // Slurm array tasks, CI matrix jobs or GNU parallel slots) into the result one `tcsb run SUITE` would have written:
 // the same cases in the same order, with Table 1, Table 2, the fits and the fidelity tables computed from the merged
-// cases (report/shard_merge.h). Bad sets of shards are refused before anything is written.
+// cases (sweep/shard_merge.h). Bad sets of shards are refused before anything is written.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -12,7 +12,7 @@
 #include "gate/run_consistency.h"
 #include "report/console_report.h"
 #include "report/json_report.h"
-#include "report/shard_merge.h"
+#include "sweep/shard_merge.h"
 
 namespace tcsb::cli {
 

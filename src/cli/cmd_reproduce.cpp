@@ -9,7 +9,9 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/run_support.h"
+#include "cli/shard_processes.h"
 #include "paper/paper_claims.h"
+#include "report/console_report.h"
 #include "report/json_report.h"
 #include "report/report_writer.h"
 #include "report/reproduction_report.h"
@@ -46,6 +48,10 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceArgs& args) {
                   "Seconds for judging the claims after the run: intervals, and extra repetitions of undecided "
                   "claims while they fit (default: what is left of 150 s for the whole command; 0: no extra "
                   "repetitions)");
+  cmd->add_option("--processes", args.processes,
+                  "Measure the run's repetitions in P processes, one after another, and merge them: the claims' "
+                  "intervals then resample processes first, so they include the spread between processes")
+      ->capture_default_str();
   return cmd;
 }
 
@@ -62,7 +68,17 @@ int reproduce_command(const ReproduceArgs& args) {
   const Suite suite = parse_suite(suite_file, [&args](Suite& s) { apply_repetitions(args.repetitions, s); });
   check_out_is_not_suite_input(args.out, suite);
   refuse_axes(suite, "reproduce");  // its claims and extra repetitions are of one configuration
-  RunResult result = run_on_console(suite, args.quiet);
+  RunResult result;
+  std::optional<nlohmann::ordered_json> merged_context;  // with --processes: the merged shards' context block
+  if (args.processes == 1) {
+    result = run_on_console(suite, args.quiet);
+  } else {
+    MergedShards merged = run_in_processes(suite_file, args.repetitions, args.processes, suite.repetitions);
+    for (const std::string& warning : merged.warnings) print_warning(warning);
+    result = std::move(merged.result);
+    merged_context = std::move(merged.context);
+    if (!args.quiet) print_console_report(result, std::cerr);
+  }
 
   ReproductionOptions options;
   const double elapsed_s = ms_between(start, StepClock::now()) / 1000.0;
@@ -73,6 +89,7 @@ int reproduce_command(const ReproduceArgs& args) {
   print_reproduction(result, reproduction, std::cerr);
 
   nlohmann::ordered_json report = native_json(result);
+  if (merged_context) report["context"] = *merged_context;
   report["reproduction"] = reproduction_json(result, reproduction);
   const int written = write_report(json_text(report), args.out);
   if (written != kExitOk) return written;

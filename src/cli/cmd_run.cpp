@@ -8,8 +8,10 @@
 #include "cli/commands.h"
 #include "cli/flag_values.h"
 #include "cli/run_support.h"
+#include "report/json_report.h"
 #include "report/report_format.h"
-#include "suite/shard_plan.h"
+#include "report/shard_section.h"
+#include "sweep/shard_plan.h"
 
 namespace tcsb::cli {
 namespace {
@@ -44,8 +46,10 @@ void apply_budget_overrides(const RunArgs& args, Suite& suite) {
 /// --shard as a ShardIndex (nullopt without it). Only the native JSON carries what `tcsb merge` needs, so a shard
 /// in another format could never be merged: refused too.
 std::optional<ShardIndex> checked_shard(const RunArgs& args) {
+  const std::optional<ShardSplit> split = parse_split(args.split);
+  if (!split) throw UsageError("--split: expected repetitions or nets, got \"" + args.split + "\"");
   if (args.shard.empty()) return std::nullopt;
-  const std::optional<ShardIndex> shard = parse_shard_index(args.shard);
+  const std::optional<ShardIndex> shard = parse_shard_index(args.shard, *split);
   if (!shard) {
     throw UsageError("--shard: expected K/N with 1 <= K <= N <= " + std::to_string(kMaxShards) + ", got \"" +
                      args.shard + "\"");
@@ -68,8 +72,12 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
                   "TC-SB time budget per step in ms, 0 to disable (overrides the suite)");
   add_repetitions_option(*run, args.repetitions);
   run->add_option("--shard", args.shard,
-                  "Run only shard K of N (e.g. 2/4): a deterministic share of the nets (with axes, of each "
-                  "configuration's nets), each net's cases together; join the shards' JSON results with `tcsb merge`");
+                  "Run only shard K of N (e.g. 2/4): a deterministic share of the suite's repetitions or nets "
+                  "(--split), each net's cases together; join the shards' JSON results with `tcsb merge`");
+  run->add_option("--split", args.split,
+                  "What --shard splits: repetitions (a net's repetitions spread over the shards, each with all the "
+                  "net's cases) or nets (each net with all its repetitions in one shard)")
+      ->capture_default_str();
   return run;
 }
 
@@ -84,8 +92,8 @@ int run_command(const RunArgs& args) {
   const Suite suite = parse_suite(suite_file, [&args, &shard](Suite& s) {
     apply_budget_overrides(args, s);
     apply_repetitions(args.repetitions, s);
-    // A shard runs only its nets, and the memory check counts only them: it may fit where the whole suite would not.
-    if (shard) s.run_units = shard_units(s, *shard);
+    // A shard runs only its units, and the memory check counts only them: it may fit where the whole suite would not.
+    if (shard) restrict_to_shard(s, *shard);
   });
   return run_and_report(suite, args);
 }
@@ -96,7 +104,8 @@ int run_and_report(const Suite& suite, const RunArgs& args) {
   check_out_path(args.out);
   check_out_is_not_suite_input(args.out, suite);
   const RunResult result = run_on_console(suite, args.quiet, shard);
-  return write_report(format->render(result), args.out);
+  // A shard's result carries what `tcsb merge` needs (--shard takes the native JSON only).
+  return write_report(shard ? json_text(shard_json(result)) : format->render(result), args.out);
 }
 
 }  // namespace tcsb::cli

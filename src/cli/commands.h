@@ -25,7 +25,8 @@ struct RunArgs {
   std::vector<double> compression;    ///< overrides the suite's TC-SB node budgets (fractions), when given
   std::optional<double> max_step_ms;  ///< overrides the suite's time budget per step (ms; 0 disables), when given
   std::optional<int> repetitions;     ///< overrides the suite's repetitions per case, when given
-  std::string shard;                  ///< "K/N": run only shard K of N (suite/shard_plan.h); empty: everything
+  std::string shard;                  ///< "K/N": run only shard K of N (sweep/shard_plan.h); empty: everything
+  std::string split = "repetitions";  ///< what --shard splits: "repetitions" or "nets" (sweep/shard_plan.h)
 };
 
 /// Options of `tcsb merge`.
@@ -45,6 +46,9 @@ struct ReproduceArgs {
   /// Wall time (s) for judging the claims after the run — intervals, and extra repetitions of undecided claims
   /// while they fit; absent: what is left of kReproductionWallTargetS (paper/paper_claims.h); 0: no extra repetitions.
   std::optional<double> budget;
+  /// Processes the run's repetitions are measured in, one after another (cli/shard_processes.h): 1 runs them in this
+  /// one, as always; more gives intervals that include the spread between processes.
+  int processes = 1;
 };
 
 /// The largest --budget accepted (a day): a bound against typing errors.

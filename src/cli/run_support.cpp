@@ -15,7 +15,7 @@
 #include "run/runner.h"
 #include "run/stall.h"
 #include "suite/calibration_path.h"
-#include "suite/shard_plan.h"
+#include "sweep/shard_plan.h"
 
 namespace tcsb::cli {
 

@@ -48,7 +48,7 @@ void apply_repetitions(const std::optional<int>& repetitions, Suite& suite);
 /// single updating progress line when stderr is a terminal and not `quiet`, the console report unless `quiet`, then
 /// a warning per diverged repetition (case, step, reason) and per repetition during which the machine stalled
 /// (run/stall.h).
-/// With `shard`, the result says which shard it is; suite.run_units must hold that shard's units (shard_units()).
+/// With `shard`, the result says which shard it is; the suite must be restricted to it (restrict_to_shard()).
 RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard = std::nullopt);
 
 /// The warnings run_on_console gives after a run (diverged and stalled repetitions), for the repetitions numbered

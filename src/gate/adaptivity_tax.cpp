@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "analysis/bootstrap.h"
+#include "analysis/relative_change.h"
 #include "analysis/statistics.h"
 #include "gate/result_comparison.h"
 
@@ -96,16 +97,33 @@ void finish_claim(NetTax& t, const std::string& failure, std::size_t fewest, con
   t.claim.interval = percentile_interval(std::move(replicates), target.confidence);
 }
 
+/// The processes of a net's pairs in one run.
+std::vector<int> processes_of(const Pairs& pairs) {
+  std::vector<int> process_of;
+  for (const PairedStepTimes& p : pairs) process_of.push_back(p.process);
+  return process_of;
+}
+
 void judge(NetSamples& s, const TaxTarget& target) {
   NetTax& t = s.tax;
   std::vector<double> pooled;
   // Only the runs that have this net are resampled: a run without it (a shard of other nets) has no ratio to give,
   // and drawing it would add an empty group, whose median reads as a ratio of 0.
   std::vector<std::vector<double>> per_run;
+  std::vector<std::vector<int>> process_of;  // per run, each ratio's process
   for (const Pairs& pairs : s.per_run) {
-    const std::vector<double> run = step_ratios(pairs);
+    std::vector<double> run;
+    std::vector<int> processes;
+    for (const PairedStepTimes& p : pairs) {
+      if (const auto q = safe_ratio(p.case_ms, p.base_ms)) {
+        run.push_back(*q);
+        processes.push_back(p.process);
+      }
+    }
     if (run.empty()) continue;
     per_run.push_back(run);
+    t.processes += process_count(processes);
+    process_of.push_back(std::move(processes));
     ++t.runs;
     t.run_medians.push_back(median(run));
     pooled.insert(pooled.end(), run.begin(), run.end());
@@ -121,7 +139,13 @@ void judge(NetSamples& s, const TaxTarget& target) {
   // Seeded by the net, so its interval does not depend on which other nets were judged.
   finish_claim(t, s.failure, pooled.size(), "paired ratio(s)", target,
                target.seed * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(t.net_nodes),
-               [&](std::mt19937_64& rng) { return median(resample_groups(per_run, rng)); });
+               [&](std::mt19937_64& rng) {
+                 // Runs first, then in each drawn run its processes (a merged result's shards), then their ratios.
+                 std::vector<double> drawn;
+                 for (const std::size_t r : resample_indices(per_run.size(), rng))
+                   for (const std::size_t k : resample_grouped(process_of[r], rng)) drawn.push_back(per_run[r][k]);
+                 return median(drawn);
+               });
 }
 
 /// The nets of one configuration judged together (Table 2's ratio), pooled over the runs: the runs are drawn again
@@ -154,6 +178,12 @@ NetTax judge_over_nets(const std::vector<NetSamples>& nets, const TaxTarget& tar
     t.ratios += p.size();
     fewest = std::min(fewest, p.size());
   }
+  for (std::size_t r = 0; r < run_count; ++r) {
+    std::vector<int> processes;
+    for (const NetSamples& n : nets)
+      for (const int p : processes_of(n.per_run[r])) processes.push_back(p);
+    t.processes += process_count(processes);
+  }
   std::optional<double> measured;
   if (failure.empty() && fewest > 0) measured = ratio_of_means(pooled);
   t.claim =
@@ -168,7 +198,8 @@ NetTax judge_over_nets(const std::vector<NetSamples>& nets, const TaxTarget& tar
                  for (std::size_t n = 0; n < nets.size(); ++n) {
                    for (const std::size_t r : drawn_runs) {
                      const Pairs& pairs = nets[n].per_run[r];
-                     for (const std::size_t k : resample_indices(pairs.size(), rng)) drawn[n].push_back(pairs[k]);
+                     for (const std::size_t k : resample_grouped(processes_of(pairs), rng))
+                       drawn[n].push_back(pairs[k]);
                    }
                  }
                  return ratio_of_means(drawn);  // NaN (dropped) when the drawn runs miss a net

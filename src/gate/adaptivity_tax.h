@@ -1,7 +1,7 @@
 // The tax of adaptivity judged on finished runs (`tcsb tax`): per net, what a TC-SB step costs against a static
 // plain body of its node budget (plain_equal) in the same repetition, pooled over one or more runs of one suite and
-// build, with a two-stage bootstrap interval (runs, then their repetitions) and a verdict that says when the noise
-// leaves the bound open. Pure: ResultViews in, claims out; no Bullet.
+// build, with a staged bootstrap interval (runs, then the processes within a merged run, then their repetitions) and a
+// verdict that says when the noise leaves the bound open. Pure: ResultViews in, claims out; no Bullet.
 #pragma once
 
 #include <cstddef>
@@ -36,10 +36,12 @@ struct TaxTarget {
 /// One net's judgement.
 struct NetTax {
   std::string net;
-  std::string configuration;        ///< the case's configuration label in a run with axes, else ""
-  std::int64_t net_nodes = 0;       ///< grid nodes of the net
-  std::size_t runs = 0;             ///< runs with at least one paired ratio on this net
-  std::size_t ratios = 0;           ///< paired ratios pooled over those runs
+  std::string configuration;   ///< the case's configuration label in a run with axes, else ""
+  std::int64_t net_nodes = 0;  ///< grid nodes of the net
+  std::size_t runs = 0;        ///< runs with at least one paired ratio on this net
+  std::size_t ratios = 0;      ///< paired ratios pooled over those runs
+  /// Processes the interval pooled: a run's own one, or a merged result's shards (each resampled before its ratios).
+  std::size_t processes = 0;
   std::vector<double> run_medians;  ///< each run's median ratio, in the order the runs were given (one per run counted)
   /// id "tax_" + net (+ "_" + configuration), measured: the median of the pooled ratios (over one run, the case's
   /// ratio_vs_equal_plain); repeated, judged on its interval. Not measured (so failed) when a repetition of TC-SB

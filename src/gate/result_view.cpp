@@ -108,6 +108,8 @@ RepetitionView read_repetition(const Fields& f, const ojson& j, const std::strin
   r.mean_interpolations = f.non_negative_or_null(j, path, "mean_interpolations");
   r.operations = f.integer(j, path, "operations", 0, std::numeric_limits<std::int64_t>::max());
   r.final_state_hash = f.string(j, path, "final_state_hash");
+  if (j.contains("process"))
+    r.process = static_cast<int>(f.integer(j, path, "process", 1, std::numeric_limits<int>::max()));
   return r;
 }
 
@@ -190,7 +192,7 @@ std::vector<PairedStepTimes> paired_step_times(const ResultView& result, std::si
     if (r.status != "ok" || !r.mean_step_ms) continue;
     for (const RepetitionView& b : base.repetitions) {
       if (b.repetition != r.repetition) continue;
-      if (b.status == "ok" && b.mean_step_ms) pairs.push_back({*r.mean_step_ms, *b.mean_step_ms});
+      if (b.status == "ok" && b.mean_step_ms) pairs.push_back({*r.mean_step_ms, *b.mean_step_ms, r.process});
       break;
     }
   }

@@ -30,6 +30,7 @@ struct RepetitionView {
   std::optional<double> mean_nodes, mean_links, mean_interpolations;
   std::int64_t operations = 0;
   std::string final_state_hash;
+  int process = 0;  ///< the shard that measured it in a merged result (`process`); 0: the file's one process
 };
 
 /// One case as the file records it (the fields the comparison and the exports use).
@@ -76,6 +77,7 @@ std::optional<std::size_t> equal_plain_case_of(const ResultView& result, std::si
 struct PairedStepTimes {
   double case_ms = 0;
   double base_ms = 0;
+  int process = 0;  ///< the process that measured both (RepetitionView::process)
 };
 
 /// The mean step times of cases[index] and `base_index`, one pair per repetition number that is ok in both with a

@@ -1,5 +1,6 @@
 #include "gate/run_consistency.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -31,22 +32,35 @@ std::map<std::string, std::int64_t> net_sizes(const ResultView& result) {
   return sizes;
 }
 
-/// Repetitions numbered 0 .. k-1 once each, k >= the suite's repetitions.
+/// Whether `result` is a shard split by repetition: it holds some of the suite's repetitions of a case, keeping their
+/// numbers (which ones, `tcsb merge` checks against the shard's index).
+bool holds_some_repetitions(const ResultView& result) {
+  const ojson* shard =
+      result.context.is_object() && result.context.contains("shard") ? &result.context["shard"] : nullptr;
+  return shard && shard->is_object() && shard->value("split", "") == "repetitions";
+}
+
+/// Repetitions numbered 0 .. k-1 once each, k >= the suite's repetitions; in a shard split by repetition, some of the
+/// suite's repetitions 0 .. R-1, once each.
 void check_repetitions(const ResultView& result, const CaseView& c, const std::string& path) {
   const std::size_t count = c.repetitions.size();
-  std::vector<bool> seen(count, false);
+  const bool some = holds_some_repetitions(result);
+  const std::size_t numbers = some ? static_cast<std::size_t>(std::max(result.repetitions, 0)) : count;
+  std::vector<bool> seen(numbers, false);
   for (std::size_t k = 0; k < count; ++k) {
     const int number = c.repetitions[k].repetition;
     const std::string at = path + ".repetitions[" + std::to_string(k) + "].repetition";
-    if (number < 0 || static_cast<std::size_t>(number) >= count)
+    if (number < 0 || static_cast<std::size_t>(number) >= numbers)
       throw ResultFileError(result.file, at,
-                            std::to_string(number) + ", but the case has " + std::to_string(count) +
-                                " repetitions (a run numbers them from 0, once each)");
+                            some ? std::to_string(number) + ", but the suite ran repetitions 0 to " +
+                                       std::to_string(numbers) + " - 1"
+                                 : std::to_string(number) + ", but the case has " + std::to_string(count) +
+                                       " repetitions (a run numbers them from 0, once each)");
     if (seen[static_cast<std::size_t>(number)])
       throw ResultFileError(result.file, at, "repetition " + std::to_string(number) + " appears twice");
     seen[static_cast<std::size_t>(number)] = true;
   }
-  if (count < static_cast<std::size_t>(result.repetitions))
+  if (!some && count < static_cast<std::size_t>(result.repetitions))
     throw ResultFileError(result.file, path + ".repetitions",
                           std::to_string(count) + " repetitions, but the suite ran " +
                               std::to_string(result.repetitions) + " of every case (one is missing)");

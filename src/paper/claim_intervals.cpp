@@ -60,12 +60,16 @@ RunResult resample_repetitions(const RunResult& result, std::mt19937_64& rng) {
   out.context = result.context;
   out.wall_s = result.wall_s;
   out.cases.reserve(result.cases.size());
-  std::map<std::size_t, std::vector<std::size_t>> picks_of_net;  // drawn once per net
+  // Drawn once per net (processes first, then repetitions within them), with the net's repetitions by process.
+  std::map<std::size_t, std::pair<std::vector<int>, std::vector<std::size_t>>> picks_of_net;
   for (const CaseResult& c : result.cases) {
+    std::vector<int> process_of;
+    for (const RepetitionResult& r : c.repetitions) process_of.push_back(r.process);
     auto [it, first] = picks_of_net.try_emplace(c.key.net);
-    if (first) it->second = resample_indices(c.repetitions.size(), rng);
-    const std::vector<std::size_t>& picks = it->second;
-    if (picks.size() != c.repetitions.size())
+    if (first) it->second = {process_of, resample_grouped(process_of, rng)};
+    const std::vector<std::size_t>& picks = it->second.second;
+    // Side by side, every case of a net ran its repetition r in the same process.
+    if (process_of != it->second.first)
       throw std::logic_error("resample_repetitions: the cases of " + c.net_name + " differ in repetitions");
     const std::vector<std::size_t> offsets = sample_offsets(c);
 

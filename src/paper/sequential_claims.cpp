@@ -1,5 +1,7 @@
 #include "paper/sequential_claims.h"
 
+#include "analysis/bootstrap.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -42,6 +44,14 @@ std::pair<int, int> repetitions_of(const RunResult& result, const std::vector<st
   return {fewest, most};
 }
 
+/// How many processes measured the repetitions of `cases` (one in a run of one process; a merged result's shards).
+std::size_t processes_of(const RunResult& result, const std::vector<std::size_t>& cases) {
+  std::vector<int> process_of;
+  for (const std::size_t i : cases)
+    for (const RepetitionResult& r : result.cases[i].repetitions) process_of.push_back(r.process);
+  return process_count(process_of);
+}
+
 /// Judges `judged` (pointers into the outcome) at look `look`: fresh values on the whole run, intervals from a
 /// bootstrap of just the cases they read. Returns the look's record (without its extra repetitions and seconds).
 Look judge(RunResult& result, const std::vector<TrackedClaim*>& judged, int look, const SequentialSettings& settings,
@@ -70,7 +80,9 @@ Look judge(RunResult& result, const std::vector<TrackedClaim*>& judged, int look
     t->claim.interval = one.front().interval;
     t->look = look;
     t->confidence = record.confidence;
-    t->repetitions = repetitions_of(result, cases_in_scope(result, *t->scope)).first;
+    const std::vector<std::size_t> own = cases_in_scope(result, *t->scope);
+    t->repetitions = repetitions_of(result, own).first;
+    t->processes = processes_of(result, own);
   }
   return record;
 }

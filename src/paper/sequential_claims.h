@@ -26,6 +26,7 @@ struct TrackedClaim {
   std::optional<ClaimScope> scope;  ///< the cases it is measured from; nullopt: not judged on an interval
   int look = 0;                     ///< the look of its verdict (decided there, or the last it was judged at); 0: none
   int repetitions = 0;              ///< repetitions of each case in its scope at that look
+  std::size_t processes = 0;        ///< processes whose repetitions its interval pooled at that look (0: none)
   double confidence = 0;            ///< its interval's confidence (0: no look judged it)
 };
 

@@ -5,7 +5,6 @@
 #include "paper/paper_tables.h"
 #include "report/fidelity_json.h"
 #include "report/op_work_json.h"
-#include "report/shard_merge.h"
 #include "run/configuration_result.h"
 #include "suite/suite_axes.h"
 
@@ -136,6 +135,8 @@ ojson repetition_json(const RepetitionResult& r) {
       {"final_state_hash", r.final_state_hash},
       {"build_ms", json_number(r.build_ms)},
   };
+  // Merged results only: which shard (process) measured it. A run of one process writes what it always wrote.
+  if (r.process > 0) j["process"] = r.process;
   if (r.penetrations)  // scenes with colliders only: results of the paper's scene keep their bytes
     j["penetrations"] = {{"node_steps", r.penetrations->node_steps},
                          {"deepest_pct", json_number(r.penetrations->deepest_pct)}};
@@ -289,7 +290,6 @@ ojson native_json(const RunResult& result) {
   doc["schema_version"] = kNativeJsonSchemaVersion;
   doc["tool"] = "tcsb";
   doc["context"] = context_json(result.context, result.suite);
-  if (result.shard) doc["context"]["shard"] = {{"k", result.shard->k}, {"n", result.shard->n}};
   doc["suite"] = suite_json(result.suite);
   doc["cases"] = std::move(cases);
   if (result.suite.configurations.empty()) {
@@ -307,7 +307,6 @@ ojson native_json(const RunResult& result) {
   add_fidelity_json(result, doc);  // fidelity, pareto, max_compression (and calibrated): only with a fidelity pass
   doc["status"] = diverged ? "diverged" : "ok";
   doc["wall_s"] = json_number(result.wall_s);
-  if (result.shard) doc["merge_data"] = merge_data_json(result);  // what `tcsb merge` needs beyond the summaries
   return doc;
 }
 

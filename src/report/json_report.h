@@ -43,7 +43,7 @@ nlohmann::ordered_json suite_json(const Suite& suite);
 /// then empty], [fidelity, pareto, max_compression when the run has a fidelity pass; pareto_calibrated,
 /// max_compression_calibrated when it has calibrated TC-SB], status, wall_s — in that
 /// order); with axes every case has its `configuration` {label, axes} and the suite block its `axes`;
-/// a shard's run also has context.shard {k, n} and, last, merge_data (report/shard_merge.h).
+/// a shard's run is written by shard_json (report/shard_section.h), which adds what `tcsb merge` needs.
 nlohmann::ordered_json native_json(const RunResult& result);
 
 /// The native JSON format: native_json() indented by 2, newline-terminated.

@@ -57,7 +57,8 @@ nlohmann::ordered_json claim_json(const TrackedClaim& t) {
           {"interval", interval},
           {"verdict", verdict_name(verdict(c))},
           {"look", t.look > 0 ? nlohmann::ordered_json(t.look) : nlohmann::ordered_json(nullptr)},
-          {"repetitions", t.look > 0 ? nlohmann::ordered_json(t.repetitions) : nlohmann::ordered_json(nullptr)}};
+          {"repetitions", t.look > 0 ? nlohmann::ordered_json(t.repetitions) : nlohmann::ordered_json(nullptr)},
+          {"processes", t.look > 0 ? nlohmann::ordered_json(t.processes) : nlohmann::ordered_json(nullptr)}};
 }
 
 nlohmann::ordered_json look_json(const Look& l) {
@@ -176,6 +177,13 @@ Reproduction check_reproduction(RunResult& result, PaperReference paper, const R
     t.claim = std::move(c);
     r.claims.push_back(std::move(t));
   }
+  for (const TrackedClaim& t : r.claims) {
+    if (t.claim.id != kNoCompressionClaimId) continue;
+    TrackedClaim sanity = t;  // the claim's look, repetitions and confidence: it reads the same interval
+    sanity.claim = nocompression_sanity(t.claim);
+    sanity.gates = false;
+    r.sanity.push_back(std::move(sanity));
+  }
   r.targets = std::move(outcome.targets);
   r.looks = std::move(outcome.looks);
   r.ended = outcome.ended;
@@ -248,9 +256,10 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
                     {"count", row.count}}}});
   }
   nlohmann::ordered_json claims = nlohmann::ordered_json::array(), targets = nlohmann::ordered_json::array(),
-                         looks = nlohmann::ordered_json::array();
+                         sanity = nlohmann::ordered_json::array(), looks = nlohmann::ordered_json::array();
   for (const TrackedClaim& c : reproduction.claims) claims.push_back(claim_json(c));
   for (const TrackedClaim& c : reproduction.targets) targets.push_back(claim_json(c));
+  for (const TrackedClaim& c : reproduction.sanity) sanity.push_back(claim_json(c));
   for (const Look& l : reproduction.looks) looks.push_back(look_json(l));
   return {{"paper_source", reproduction.paper.source},
           {"paper_hardware", reproduction.paper.hardware},
@@ -263,6 +272,7 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
             {"tcsb", fit_json(step_fit_of_method(result, Method::kTcsb))}}},
           {"claims", claims},
           {"targets", targets},
+          {"sanity", sanity},
           {"verdict", verdict_name(reproduction.verdict())},
           {"sequential",
            {{"alpha", json_number(kSequentialAlpha)},
@@ -365,6 +375,8 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
         << (method == Method::kPlain ? " (reported, not claimed)" : "") << "\n";
   }
   print_claims("Claims of the paper (any FAIL: exit 1; else any undecided: exit 4):", reproduction.claims, out);
+  print_claims("Sanity of the measurement (reported, not gating; FAIL: a baseline to look at):", reproduction.sanity,
+               out);
   print_claims("Targets of this project (reported, not gating):", reproduction.targets, out);
   print_looks(reproduction, out);
   out << "Reproduction: " << verdict_text(reproduction.verdict()) << " (" << fixed(reproduction.wall_s, 1) << " s, "

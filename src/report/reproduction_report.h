@@ -31,8 +31,10 @@ struct ReproductionOptions {
 /// A run checked against the paper.
 struct Reproduction {
   PaperReference paper;
-  std::vector<TrackedClaim> claims;         ///< the paper's claims (decide the exit code)
-  std::vector<TrackedClaim> targets;        ///< this project's stricter targets (reported only)
+  std::vector<TrackedClaim> claims;   ///< the paper's claims (decide the exit code)
+  std::vector<TrackedClaim> targets;  ///< this project's stricter targets (reported only)
+  /// Sanity lines read off the claims (paper/paper_claims.h: nocompression_sanity); reported, never gating.
+  std::vector<TrackedClaim> sanity;
   std::vector<Look> looks;                  ///< the looks taken, the first being the run's own repetitions
   LooksEnded ended = LooksEnded::kDecided;  ///< why the looks ended
   double budget_s = 0;                      ///< the budget the looks had

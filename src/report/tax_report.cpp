@@ -12,7 +12,8 @@ void print_tax(const std::vector<NetTax>& nets, const TaxTarget& target, std::os
   std::vector<TextTable::Column> columns{{"net", Align::kLeft}};
   if (axes) columns.push_back({"configuration", Align::kLeft});
   // Over the nets the row stands for several: its node count is the smallest net's.
-  for (const char* header : {target.over_nets ? "smallest net" : "nodes", "runs", "ratios", "ratio", "interval"})
+  for (const char* header :
+       {target.over_nets ? "smallest net" : "nodes", "runs", "processes", "ratios", "ratio", "interval"})
     columns.push_back({header});
   columns.push_back({"verdict", Align::kLeft});
   columns.push_back({"note", Align::kLeft});
@@ -21,8 +22,9 @@ void print_tax(const std::vector<NetTax>& nets, const TaxTarget& target, std::os
     std::vector<std::string> row{n.net};
     if (axes) row.push_back(n.configuration);
     const std::optional<Interval>& i = n.claim.interval;
-    for (std::string cell : {std::to_string(n.net_nodes), std::to_string(n.runs), std::to_string(n.ratios),
-                             fixed(n.claim.measured, 3), i ? fixed(i->low, 3) + " - " + fixed(i->high, 3) : "-"})
+    for (std::string cell :
+         {std::to_string(n.net_nodes), std::to_string(n.runs), std::to_string(n.processes), std::to_string(n.ratios),
+          fixed(n.claim.measured, 3), i ? fixed(i->low, 3) + " - " + fixed(i->high, 3) : "-"})
       row.push_back(std::move(cell));
     row.push_back(verdict_text(verdict(n.claim)));
     row.push_back(n.note);
@@ -32,7 +34,7 @@ void print_tax(const std::vector<NetTax>& nets, const TaxTarget& target, std::os
       << (target.over_nets ? "over the nets" : "per net");
   if (target.min_net_nodes > 1) out << " of " << target.min_net_nodes << " nodes and more";
   out << " (bound " << general(target.bound, 4) << "; " << general(target.confidence * 100.0, 4)
-      << "% intervals, runs resampled, then their repetitions)\n";
+      << "% intervals, runs resampled, then the processes of a merged run, then their repetitions)\n";
   t.print(out);
   out << "tcsb tax: " << verdict_name(tax_verdict(nets)) << "\n";
 }
@@ -49,6 +51,7 @@ nlohmann::ordered_json tax_json(const std::vector<NetTax>& nets, const TaxTarget
                     {"configuration", n.configuration},
                     {"net_nodes", n.net_nodes},
                     {"runs", n.runs},
+                    {"processes", n.processes},
                     {"ratios", n.ratios},
                     {"run_medians", std::move(medians)},
                     {"ratio", json_number(n.claim.measured)},

@@ -12,7 +12,7 @@
 #include "run/context.h"
 #include "softbody/op_sample.h"
 #include "suite/case_plan.h"
-#include "suite/shard_plan.h"
+#include "suite/shard_index.h"
 #include "suite/suite.h"
 
 namespace tcsb {
@@ -60,6 +60,9 @@ struct RepetitionResult {
   std::string final_state_hash;              ///< FNV-1a of node count and final positions: deterministic, gateable
   double build_ms = 0;                       ///< building the body (not part of step times)
   std::optional<Penetrations> penetrations;  ///< in scenes with colliders only
+  /// The process that measured it: 0 in a run of one process; in a merged result, the shard (k, 1-based). Its
+  /// intervals resample processes first, then repetitions within them (analysis/bootstrap.h).
+  int process = 0;
 };
 
 /// Operation costs of one case (TC-SB only), from timed steps.
@@ -91,8 +94,9 @@ struct RunResult {
   std::vector<CaseResult> cases;
   std::optional<FidelityResult> fidelity;  ///< the fidelity pass, when the suite enables it and runs TC-SB
   double wall_s = 0;                       ///< wall time of the run (the fidelity pass included)
-  /// Set when this run is one shard of its suite (`tcsb run --shard K/N`): `cases` then holds only the shard's nets'
-  /// cases, and the JSON carries what `tcsb merge` needs (report/shard_merge.h).
+  /// Set when this run is one shard of its suite (`tcsb run --shard K/N`): `cases` then holds only the shard's
+  /// cases (with a repetition split, only its repetitions of them), and the JSON carries what `tcsb merge` needs
+  /// (sweep/shard_merge.h).
   std::optional<ShardIndex> shard;
 };
 

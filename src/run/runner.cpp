@@ -322,9 +322,10 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
   result.context = context;
   const std::vector<CaseKey> keys = expand_cases(suite);
   std::vector<PlannedRun> plan = interleaved_plan(suite, keys);
-  // A shard runs the whole suite's plan restricted to its nets: the order among its cases is the unsharded one.
+  // A shard runs the whole suite's plan restricted to its units and repetitions: the order among its runs is the
+  // unsharded one, a net's cases of a repetition still side by side.
   std::erase_if(plan, [&](const PlannedRun& run) {
-    return !runs_unit(suite, keys[run.case_index].configuration, keys[run.case_index].net);
+    return !runs_repetition(suite, keys[run.case_index].configuration, keys[run.case_index].net, run.repetition);
   });
 
   const std::vector<std::shared_ptr<const Net>> nets = build_nets(suite);
@@ -344,8 +345,14 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
 
   // The fidelity pass runs after every timed repetition, one pass per net, so it cannot disturb their timings.
   const bool fidelity = !fidelity_plan(suite).empty();
-  const auto built = static_cast<std::size_t>(std::count_if(nets.begin(), nets.end(), [](const auto& n) { return n; }));
-  const int total = static_cast<int>(plan.size() + (fidelity ? built : 0));
+  // One fidelity pass per net, in the process that runs the net's first repetition (with a split by repetition,
+  // other shards build the net too but leave its pass to that one).
+  std::vector<std::shared_ptr<const Net>> fidelity_nets = nets;
+  for (std::size_t i = 0; i < fidelity_nets.size(); ++i)
+    if (!runs_fidelity_of(suite, i)) fidelity_nets[i] = nullptr;
+  const auto passes = static_cast<std::size_t>(
+      std::count_if(fidelity_nets.begin(), fidelity_nets.end(), [](const auto& n) { return n; }));
+  const int total = static_cast<int>(plan.size() + (fidelity ? passes : 0));
   int done = 0;
   run_plan(result, plan, std::vector<int>(keys.size(), 0), nets, options, done, total);
   for (CaseResult& c : result.cases) summarize_case(c);
@@ -353,7 +360,7 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
   std::erase_if(result.cases, [&](const CaseResult& c) { return !runs_unit(suite, c.key.configuration, c.key.net); });
   if (fidelity) {
     result.fidelity = naming_out_of_memory("suite " + suite.name + ", fidelity pass", [&] {
-      return run_fidelity(suite, nets, [&](const std::string& net) {
+      return run_fidelity(suite, fidelity_nets, [&](const std::string& net) {
         ++done;
         if (options.progress) options.progress(done, total, net + "/fidelity");
       });

@@ -95,6 +95,9 @@ struct Suite {
   /// all. Not a setting of the suite (results never record it): the runner runs and the memory check counts only
   /// these units' cases. Without axes a unit is a net.
   std::vector<bool> run_units;
+  /// With a split by repetition (a shard's): which repetitions of each unit this process runs, indexed unit x
+  /// repetitions + repetition; empty: every repetition of the units in run_units. Not a setting either.
+  std::vector<bool> run_repetitions;
   /// The calibration fidelity.calibration_path names, read and checked against this suite (calibration_mismatch)
   /// when the suite was parsed; nullopt without one.
   std::optional<Calibration> calibration;
@@ -118,6 +121,20 @@ inline bool runs_unit(const Suite& suite, std::size_t configuration, std::size_t
   const std::size_t unit = configuration * suite.nets.size() + net;
   return suite.run_units.empty() || (unit < suite.run_units.size() && suite.run_units[unit]);
 }
+
+/// Whether `suite` runs repetition `repetition` of net `net` of configuration `configuration` in this process
+/// (Suite::run_units, Suite::run_repetitions).
+inline bool runs_repetition(const Suite& suite, std::size_t configuration, std::size_t net, int repetition) {
+  if (!runs_unit(suite, configuration, net)) return false;
+  if (suite.run_repetitions.empty()) return true;
+  const std::size_t index = (configuration * suite.nets.size() + net) * static_cast<std::size_t>(suite.repetitions) +
+                            static_cast<std::size_t>(repetition);
+  return index < suite.run_repetitions.size() && suite.run_repetitions[index];
+}
+
+/// Whether this process runs the fidelity pass of net `net` (one per net, never with axes): the process that runs
+/// the net's first repetition.
+inline bool runs_fidelity_of(const Suite& suite, std::size_t net) { return runs_repetition(suite, 0, net, 0); }
 
 /// Whether `suite` runs net `net` in any configuration in this process (then the net is built).
 inline bool runs_net(const Suite& suite, std::size_t net) {

@@ -231,6 +231,14 @@ Suite configuration_suite(const Suite& suite, std::size_t configuration) {
     out.run_units.resize(suite.nets.size());
     for (std::size_t net = 0; net < suite.nets.size(); ++net) out.run_units[net] = runs_unit(suite, configuration, net);
   }
+  out.run_repetitions.clear();
+  if (!suite.run_repetitions.empty()) {
+    const auto repetitions = static_cast<std::size_t>(suite.repetitions);
+    out.run_repetitions.resize(suite.nets.size() * repetitions);
+    for (std::size_t net = 0; net < suite.nets.size(); ++net)
+      for (std::size_t r = 0; r < repetitions; ++r)
+        out.run_repetitions[net * repetitions + r] = runs_repetition(suite, configuration, net, static_cast<int>(r));
+  }
   return out;
 }
 

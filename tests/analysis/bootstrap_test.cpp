@@ -32,38 +32,41 @@ TEST(Bootstrap, ResamplesDrawInRangeWithReplacementAndRepeatForOneSeed) {
   EXPECT_TRUE(resample_indices(0, a).empty());
 }
 
-TEST(Bootstrap, GroupResamplesDrawWholeGroupsThenTheirUnits) {
-  // Two runs of four repetitions, the runs apart and their repetitions alike. A resample draws a run for each of the
-  // two places, then four of that run's repetitions: half the resamples hold one run only (both places drew it),
-  // where pooling the eight repetitions would draw one run's values alone in 2 / 2^8 of them.
-  const std::vector<std::vector<double>> runs{{0.0, 0.0, 0.0, 0.0}, {1.0, 1.0, 1.0, 1.0}};
+TEST(Bootstrap, GroupedResamplesDrawWholeProcessesThenTheirUnits) {
+  // Two processes of four repetitions, the processes apart and their repetitions alike. A resample draws a process
+  // for each of the two places, then four of that process's repetitions: half the resamples hold one process only
+  // (both places drew it), where pooling the eight repetitions would draw one process's units alone in 2 / 2^8.
+  const std::vector<int> process_of{1, 1, 1, 1, 2, 2, 2, 2};
   std::mt19937_64 rng(11), again(11);
-  int one_run_only = 0;
+  int one_process_only = 0;
   for (int r = 0; r < 1000; ++r) {
-    const std::vector<double> drawn = resample_groups(runs, rng);
+    const std::vector<std::size_t> drawn = resample_grouped(process_of, rng);
     ASSERT_EQ(drawn.size(), 8u);
-    EXPECT_EQ(drawn, resample_groups(runs, again));  // deterministic for a generator state
-    // Each run's repetitions come as a block: the first four from one run, the last four from one run.
+    EXPECT_EQ(drawn, resample_grouped(process_of, again));  // deterministic for a generator state
+    // Each process's repetitions come as a block: the first four from one process, the last four from one.
     for (std::size_t block : {0u, 4u})
-      for (std::size_t i = block; i < block + 4; ++i) ASSERT_EQ(drawn[i], drawn[block]);
-    one_run_only += drawn.front() == drawn.back();
+      for (std::size_t i = block; i < block + 4; ++i) ASSERT_EQ(process_of[drawn[i]], process_of[drawn[block]]);
+    one_process_only += process_of[drawn.front()] == process_of[drawn.back()];
   }
-  EXPECT_GT(one_run_only, 400);
-  EXPECT_LT(one_run_only, 600);
+  EXPECT_GT(one_process_only, 400);
+  EXPECT_LT(one_process_only, 600);
 }
 
-TEST(Bootstrap, GroupResamplesOfOneGroupDrawItsUnitsAndSkipEmptyGroups) {
-  std::mt19937_64 rng(3);
-  const std::vector<std::vector<double>> one{{1.0, 2.0, 3.0}};
-  std::set<double> seen;
-  for (int r = 0; r < 100; ++r) {
-    const std::vector<double> drawn = resample_groups(one, rng);
-    ASSERT_EQ(drawn.size(), 3u);
-    seen.insert(drawn.begin(), drawn.end());
+TEST(Bootstrap, GroupedResamplesOfOneProcessAreExactlyTheUngroupedOnes) {
+  // One process (any label): the same generator gives the very indices resample_indices gives, so a run of one
+  // process keeps its intervals bit for bit.
+  for (const int label : {0, 3}) {
+    std::mt19937_64 a(5), b(5);
+    for (int r = 0; r < 50; ++r) EXPECT_EQ(resample_grouped(std::vector<int>(6, label), a), resample_indices(6, b));
   }
-  EXPECT_EQ(seen, (std::set<double>{1.0, 2.0, 3.0}));
-  EXPECT_TRUE(resample_groups({{}, {}}, rng).empty());
-  EXPECT_TRUE(resample_groups({}, rng).empty());
+  std::mt19937_64 rng(3);
+  EXPECT_TRUE(resample_grouped({}, rng).empty());
+}
+
+TEST(Bootstrap, ProcessesAreCountedByLabel) {
+  EXPECT_EQ(process_count({}), 0u);
+  EXPECT_EQ(process_count({0, 0, 0}), 1u);
+  EXPECT_EQ(process_count({2, 1, 2, 3}), 3u);
 }
 
 TEST(Bootstrap, PercentileIntervalIsTheCentralQuantiles) {

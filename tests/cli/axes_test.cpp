@@ -192,7 +192,7 @@ TEST_F(Axes, ShardsOfASuiteWithAxesMergeIntoTheWholeRunAndCompareOneToOne) {
   std::set<std::string> covered;
   for (int k = 1; k <= 3; ++k) {
     const std::string file = "shard_" + std::to_string(k) + ".json";
-    const Outcome o = tcsb("run axes.json --quiet --shard " + std::to_string(k) + "/3 --out " + file);
+    const Outcome o = tcsb("run axes.json --quiet --split nets --shard " + std::to_string(k) + "/3 --out " + file);
     ASSERT_EQ(o.exit_code, 0) << o.err;
     const json shard = load(file);
     // A configuration's cases of one net stay together in one shard.

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+
+#include <set>
 #include <string>
 
 #include "cli_fixture.h"
@@ -205,6 +207,36 @@ TEST_F(Cli, RepetitionsFlagOverridesTheSuiteForRunAndReproduce) {
     EXPECT_EQ(j["suite"]["repetitions"], 3) << command;
     for (const auto& c : j["cases"]) EXPECT_EQ(c["repetitions"].size(), 3u) << command << " " << c["label"];
   }
+}
+
+TEST_F(Cli, ReproduceInSeveralProcessesMergesThemAndSaysSoInItsIntervals) {
+  write_file(dir_ / "tiny.json", kTinySuite);
+  // Six repetitions in three processes (two each), no extra ones: every interval pools the three processes.
+  const Outcome o = tcsb("reproduce --suite tiny.json --quiet --budget 0 --repetitions 6 --processes 3 --out out.json");
+  ASSERT_TRUE(o.exit_code == 0 || o.exit_code == 1 || o.exit_code == 4) << o.err;
+  const nlohmann::json j = nlohmann::json::parse(read_file(dir_ / "out.json"));
+  EXPECT_EQ(j["context"]["merged_shards"], 3);
+  std::set<int> processes;
+  for (const auto& c : j["cases"]) {
+    ASSERT_EQ(c["repetitions"].size(), 6u) << c["label"];
+    for (const auto& r : c["repetitions"]) processes.insert(r["process"].get<int>());
+  }
+  EXPECT_EQ(processes, (std::set<int>{1, 2, 3}));
+  int with_interval = 0;
+  for (const auto& c : j["reproduction"]["claims"]) {
+    if (c["interval"].is_null()) continue;
+    EXPECT_EQ(c["processes"], 3) << c["id"];
+    ++with_interval;
+  }
+  EXPECT_GT(with_interval, 0);
+  // One process (the default) says 1; a count beyond the repetitions is refused before anything runs.
+  ASSERT_TRUE(tcsb("reproduce --suite tiny.json --quiet --budget 0 --repetitions 6 --out one.json").exit_code != 2);
+  for (const auto& c : nlohmann::json::parse(read_file(dir_ / "one.json"))["reproduction"]["claims"])
+    if (!c["interval"].is_null()) EXPECT_EQ(c["processes"], 1) << c["id"];
+  const Outcome bad = tcsb("reproduce --suite tiny.json --quiet --repetitions 2 --processes 3 --out bad.json");
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  EXPECT_NE(bad.err.find("--processes"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir_ / "bad.json"));
 }
 
 TEST_F(Cli, BadRepetitionsAreUsageErrors) {

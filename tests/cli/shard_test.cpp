@@ -1,7 +1,9 @@
-// `tcsb run --shard K/N` and `tcsb merge`: merged shards are the unsharded run in every deterministic field, and bad
-// sets of shards are refused with one line naming the file, nothing written.
+// `tcsb run --shard K/N [--split repetitions|nets]` and `tcsb merge`: merged shards are the unsharded run in every
+// deterministic field, per repetition, each repetition marked with the shard that measured it; and bad sets of shards
+// are refused with one line naming the file, nothing written.
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <set>
 
 #include "cli_fixture.h"
@@ -91,16 +93,35 @@ class Shards : public Cli {
  protected:
   json load(const std::string& file) const { return json::parse(read_file(dir_ / file)); }
 
-  /// Runs every shard of `n` of `suite` (with `flags`) into shard_N_K.json and merges them into merged_N.json.
-  void run_and_merge(const std::string& suite, int n, const std::string& flags) {
+  /// Every repetition of the merged result names the shard that measured it, one of 1..n, and the repetitions of
+  /// one net in one repetition (its cases side by side) name the same one.
+  void expect_processes_are_the_shards(const json& merged, int n) {
+    std::map<std::string, int> process_of;  // "net#repetition"
+    for (const json& c : merged["cases"]) {
+      for (const json& r : c["repetitions"]) {
+        ASSERT_TRUE(r.contains("process")) << c["label"];
+        const int p = r["process"].get<int>();
+        EXPECT_GE(p, 1);
+        EXPECT_LE(p, n);
+        const std::string key = c["net"].get<std::string>() + "#" + std::to_string(r["repetition"].get<int>());
+        const auto [it, fresh] = process_of.try_emplace(key, p);
+        if (!fresh) EXPECT_EQ(it->second, p) << key;
+      }
+    }
+  }
+
+  /// Runs every shard of `n` of `suite` (with `flags`, split by `split`) into shard_N_K.json and merges them into
+  /// merged_N.json.
+  void run_and_merge(const std::string& suite, int n, const std::string& flags,
+                     const std::string& split = "repetitions") {
     std::string files;
     for (int k = 1; k <= n; ++k) {
       const std::string file = "shard_" + std::to_string(n) + "_" + std::to_string(k) + ".json";
-      const Outcome o = tcsb("run " + suite + " --quiet " + flags + " --shard " + std::to_string(k) + "/" +
-                             std::to_string(n) + " --out " + file);
+      const Outcome o = tcsb("run " + suite + " --quiet " + flags + " --split " + split + " --shard " +
+                             std::to_string(k) + "/" + std::to_string(n) + " --out " + file);
       ASSERT_EQ(o.exit_code, 0) << o.err;
       const json shard = load(file);
-      EXPECT_EQ(shard["context"]["shard"], (json{{"k", k}, {"n", n}}));
+      EXPECT_EQ(shard["context"]["shard"], (json{{"k", k}, {"n", n}, {"split", split}}));
       files += " " + file;
     }
     // Given in reverse: the order of the files on the command line does not matter.
@@ -130,7 +151,45 @@ TEST_F(Shards, MergedShardsOfTheCiSuiteEqualTheUnshardedRun) {
     EXPECT_EQ(merged["context"]["merged_shards"], n);
     EXPECT_FALSE(merged["context"].contains("shard"));
     EXPECT_FALSE(merged.contains("merge_data"));
+    expect_processes_are_the_shards(merged, n);
   }
+  // The unsharded run is one process: its repetitions name none.
+  for (const json& c : whole["cases"])
+    for (const json& r : c["repetitions"]) EXPECT_FALSE(r.contains("process"));
+}
+
+TEST_F(Shards, MergedShardsSplitByNetEqualTheUnshardedRunToo) {
+  const std::string flags = "--repetitions 2";
+  ASSERT_EQ(tcsb("run ci --quiet " + flags + " --out whole.json").exit_code, 0);
+  run_and_merge("ci", 3, flags, "nets");
+  const json merged = load("merged_3.json");
+  expect_same_deterministic_fields(load("whole.json"), merged);
+  expect_processes_are_the_shards(merged, 3);
+}
+
+TEST_F(Shards, ASplitByRepetitionSpreadsEveryNetsRepetitionsWithAllItsCases) {
+  // Three nets of two repetitions in three shards: the six (net, repetition) units go round the shards, each with
+  // every case of its net, and no repetition is run twice.
+  write_file(dir_ / "three.json", three_net_suite("three"));
+  std::multiset<std::string> runs;  // "label#repetition"
+  for (int k = 1; k <= 3; ++k) {
+    std::string file = "r";
+    file += std::to_string(k) + ".json";
+    ASSERT_EQ(tcsb("run three.json --quiet --shard " + std::to_string(k) + "/3 --out " + file).exit_code, 0);
+    const json shard = load(file);
+    std::map<std::string, std::set<int>> repetitions_of_net;
+    for (const json& c : shard["cases"]) {
+      std::set<int> reps;
+      for (const json& r : c["repetitions"]) {
+        reps.insert(r["repetition"].get<int>());
+        runs.insert(c["label"].get<std::string>() + "#" + std::to_string(r["repetition"].get<int>()));
+      }
+      const auto [it, fresh] = repetitions_of_net.try_emplace(c["net"].get<std::string>(), reps);
+      if (!fresh) EXPECT_EQ(it->second, reps) << "the cases of " << c["net"] << " differ in repetitions";
+    }
+  }
+  EXPECT_EQ(runs.size(), 18u);  // 3 nets x (plain, tcsb@1.0, tcsb@0.5) x 2 repetitions, each once
+  EXPECT_EQ(std::set<std::string>(runs.begin(), runs.end()).size(), 18u);
 }
 
 TEST_F(Shards, ShardsSplitByNetAndCoverEveryCaseOnce) {
@@ -140,7 +199,8 @@ TEST_F(Shards, ShardsSplitByNetAndCoverEveryCaseOnce) {
   for (int k = 1; k <= 2; ++k) {
     std::string file = "s";  // (appended: GCC 12 warns falsely on "literal" + std::string&&)
     file += std::to_string(k) + ".json";
-    ASSERT_EQ(tcsb("run three.json --quiet --shard " + std::to_string(k) + "/2 --out " + file).exit_code, 0);
+    ASSERT_EQ(tcsb("run three.json --quiet --split nets --shard " + std::to_string(k) + "/2 --out " + file).exit_code,
+              0);
     std::set<std::string> nets;
     const json shard = load(file);  // named: a range-for over a temporary's member would dangle
     for (const json& c : shard["cases"]) {
@@ -157,7 +217,7 @@ TEST_F(Shards, ShardsSplitByNetAndCoverEveryCaseOnce) {
 TEST_F(Shards, AnEmptyShardWritesAValidEmptyResultAndMerges) {
   write_file(dir_ / "three.json", three_net_suite("three"));
   ASSERT_EQ(tcsb("run three.json --quiet --out whole.json").exit_code, 0);
-  run_and_merge("three.json", 5, "");  // five shards of three nets: two are empty
+  run_and_merge("three.json", 5, "", "nets");  // five shards of three nets: two are empty
   int empty = 0;
   for (int k = 1; k <= 5; ++k) {
     const json shard = load("shard_5_" + std::to_string(k) + ".json");
@@ -166,6 +226,9 @@ TEST_F(Shards, AnEmptyShardWritesAValidEmptyResultAndMerges) {
   EXPECT_EQ(empty, 2);
   EXPECT_EQ(tcsb("export shard_5_5.json --format markdown").exit_code, 0);  // valid against the schema
   expect_same_deterministic_fields(load("whole.json"), load("merged_5.json"));
+  run_and_merge("three.json", 7, "");  // seven shards of three nets' two repetitions: one is empty
+  EXPECT_TRUE(load("shard_7_7.json")["cases"].empty());
+  expect_same_deterministic_fields(load("whole.json"), load("merged_7.json"));
 }
 
 TEST_F(Shards, AFidelityPassIsShardedAndMergedToo) {
@@ -215,7 +278,7 @@ TEST_F(Shards, AShardOfSmallNetsRunsWhereTheWholeSuiteWouldNotFit) {
   EXPECT_EQ(whole.exit_code, 2) << whole.err;
   EXPECT_NE(whole.err.find("n1025"), std::string::npos) << whole.err;
   // The largest net goes to shard 1, so shard 2 of 2 holds n9 alone.
-  const Outcome small = shell(limited + "--shard 2/2 --out small.json'");
+  const Outcome small = shell(limited + "--split nets --shard 2/2 --out small.json'");
   ASSERT_EQ(small.exit_code, 0) << small.err;
   const json shard = load("small.json");
   ASSERT_EQ(shard["cases"].size(), 1u);
@@ -235,6 +298,7 @@ class BadShardSets : public Shards {
     }
     ASSERT_EQ(tcsb("run other.json --quiet --shard 2/3 --out foreign2.json").exit_code, 0);
     ASSERT_EQ(tcsb("run three.json --quiet --shard 2/4 --out quarter2.json").exit_code, 0);
+    ASSERT_EQ(tcsb("run three.json --quiet --split nets --shard 2/3 --out nets2.json").exit_code, 0);
     ASSERT_EQ(tcsb("run three.json --quiet --out whole.json").exit_code, 0);
   }
 
@@ -250,24 +314,23 @@ class BadShardSets : public Shards {
 
 TEST_F(BadShardSets, TheGoodSetMerges) { EXPECT_EQ(tcsb("merge s1.json s2.json s3.json --quiet").exit_code, 0); }
 
-// Timings are not deterministic, so the merged case must carry what its shard measured: the step breakdown too,
-// which the result records per case only.
-TEST_F(BadShardSets, TheMergedCasesKeepTheirShardsStepBreakdown) {
+// Timings are not deterministic, so the merged case must carry what its shards measured: its step breakdown is the
+// median of its repetitions' parts, which the shards record per repetition (merge_data.breakdown_ms).
+TEST_F(BadShardSets, TheMergedCasesStepBreakdownIsTheMedianOfItsRepetitionsParts) {
   ASSERT_EQ(tcsb("merge s1.json s2.json s3.json --quiet --out merged.json").exit_code, 0);
   const json merged = load("merged.json");
-  std::size_t compared = 0;
+  std::map<std::string, std::vector<double>> bullet;  // by label, over every shard's repetitions
   for (const std::string file : {"s1.json", "s2.json", "s3.json"}) {
     const json shard = load(file);
-    for (const json& c : shard["cases"]) {
-      for (const json& m : merged["cases"]) {
-        if (m["label"] != c["label"]) continue;
-        EXPECT_EQ(m["step_breakdown_ms"], c["step_breakdown_ms"]) << c["label"];
-        EXPECT_GT(m["step_breakdown_ms"]["bullet"].get<double>(), 0) << c["label"];
-        ++compared;
-      }
-    }
+    for (const auto& [label, parts] : shard["merge_data"]["breakdown_ms"].items())
+      for (const json& p : parts) bullet[label].push_back(p[0].get<double>());
   }
-  EXPECT_EQ(compared, merged["cases"].size());
+  for (const json& m : merged["cases"]) {
+    std::vector<double> values = bullet[m["label"].get<std::string>()];
+    ASSERT_EQ(values.size(), 2u) << m["label"];  // two repetitions, wherever they ran
+    EXPECT_NEAR(m["step_breakdown_ms"]["bullet"].get<double>(), (values[0] + values[1]) / 2, 1e-12) << m["label"];
+    EXPECT_GT(m["step_breakdown_ms"]["bullet"].get<double>(), 0) << m["label"];
+  }
 }
 
 TEST_F(BadShardSets, AMissingShardIsRefused) {
@@ -283,7 +346,21 @@ TEST_F(BadShardSets, TheSameShardTwiceIsRefused) {
 
 TEST_F(BadShardSets, ShardsOfTwoSuitesAreRefused) { expect_refused("s1.json foreign2.json s3.json", "foreign2.json"); }
 
-TEST_F(BadShardSets, ShardsOfTwoSplitsAreRefused) { expect_refused("s1.json quarter2.json s3.json", "quarter2.json"); }
+TEST_F(BadShardSets, ShardsOfTwoSplitsAreRefused) {
+  expect_refused("s1.json quarter2.json s3.json", "quarter2.json");
+  // The same k/n split by net: its repetitions are not the ones shard 2/3 by repetition has.
+  expect_refused("s1.json nets2.json s3.json", "nets2.json: context.shard.split");
+}
+
+TEST_F(BadShardSets, ARepetitionMissingOrGivenTwiceIsRefused) {
+  // Shard 2's repetition renumbered as another's: one repetition would be missing from the merge, another twice.
+  json shard = load("s2.json");
+  ASSERT_FALSE(shard["cases"].empty());
+  json& first = shard["cases"][0]["repetitions"][0];
+  first["repetition"] = 1 - first["repetition"].get<int>();
+  write_file(dir_ / "renumbered2.json", shard.dump());
+  expect_refused("s1.json renumbered2.json s3.json", "renumbered2.json: cases[0].repetitions");
+}
 
 TEST_F(BadShardSets, ATruncatedShardIsRefused) {
   const std::string text = read_file(dir_ / "s2.json");

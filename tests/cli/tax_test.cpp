@@ -55,7 +55,7 @@ class Tax : public Cli {
     write_file(dir_ / "sharded.json", suite);
     for (const char* k : {"1", "2"}) {
       const std::string file = std::string("shard-") + k + ".json";
-      const Outcome o = tcsb(std::string("run sharded.json --quiet --shard ") + k + "/2 --out " + file);
+      const Outcome o = tcsb(std::string("run sharded.json --quiet --split nets --shard ") + k + "/2 --out " + file);
       ASSERT_EQ(o.exit_code, 0) << o.err;
       set_times(file, ratio);
     }

@@ -100,6 +100,44 @@ TEST(AdaptivityTax, RunsPoolAndTheirDisagreementWidensTheInterval) {
   EXPECT_EQ(verdict(judge({run_doc({{"n257", 66049}}, 1.10)})[0].claim), Verdict::kPass);
 }
 
+/// One merged run of 60 repetitions whose three shards (shard p measured repetitions p-1, p+2, ...) measured TC-SB at
+/// different ratios to plain_equal (0.95, 1.05, 1.00), a shard's repetitions alike within half a percent.
+ojson merged_doc() {
+  const double ratio_of_process[] = {0.95, 1.05, 1.00};
+  ojson doc = run_doc({{"n257", 66049}}, 1.0, 60);
+  for (ojson& c : doc["cases"]) {
+    for (ojson& r : c["repetitions"]) {
+      const int rep = r["repetition"].get<int>(), process = rep % 3;
+      r["process"] = process + 1;
+      const double equal = 1.0 + 0.001 * rep;
+      const double tcsb = equal * ratio_of_process[process] * (1.0 + 0.001 * (rep % 5));
+      r["mean_step_ms"] = c["method"] == "plain_equal" ? equal : tcsb;
+    }
+  }
+  return doc;
+}
+
+TEST(AdaptivityTax, AMergedRunsShardsAreResampledBeforeTheirRepetitions) {
+  // The same sixty ratios, as one process measured them and as the shards of a merged run did. Pooled, the median
+  // of a resample stays among the middle shard's ratios; drawn shard by shard, a resample may hold one shard's only,
+  // so the shards' disagreement widens the interval. The row says how many processes it pooled.
+  const ojson merged = merged_doc();
+  ojson one = merged;
+  for (ojson& c : one["cases"])
+    for (ojson& r : c["repetitions"]) r.erase("process");
+  const std::vector<NetTax> by_process = judge({merged}), pooled = judge({one});
+  ASSERT_EQ(by_process.size(), 1u);
+  ASSERT_TRUE(by_process[0].claim.interval && pooled[0].claim.interval);
+  EXPECT_EQ(by_process[0].processes, 3u);
+  EXPECT_EQ(pooled[0].processes, 1u);
+  EXPECT_EQ(by_process[0].runs, 1u);
+  EXPECT_EQ(*by_process[0].claim.measured, *pooled[0].claim.measured);  // the same data, the same median
+  const Interval a = *by_process[0].claim.interval, b = *pooled[0].claim.interval;
+  EXPECT_LE(a.low, b.low);
+  EXPECT_GE(a.high, b.high);
+  EXPECT_GT(a.high - a.low, 2 * (b.high - b.low));
+}
+
 TEST(AdaptivityTax, TheSameFilesGiveTheSameInterval) {
   const ojson a = run_doc({{"n257", 66049}}, 1.00, 3), b = run_doc({{"n257", 66049}}, 1.20, 3);
   const NetTax first = judge({a, b})[0], second = judge({a, b})[0];

@@ -175,5 +175,84 @@ TEST(ClaimIntervals, ASubsetKeepsTheChosenCasesWithoutSeriesAndOperationsUnlessA
   EXPECT_NO_THROW(resample_repetitions(with_ops, rng));
 }
 
+/// One net, plain and TC-SB side by side, 12 repetitions measured by `processes` processes in turn (process p runs
+/// repetitions p-1, p-1+processes, ...). TC-SB's ratio to plain is the same within a process and moves between them
+/// (0.95, 1.05, 1.00, ...), as a net's ratio moves between processes on a shared machine; plain's step is 10 ms
+/// everywhere, with a little spread within a process.
+RunResult run_over_processes(int processes) {
+  const std::vector<double> ratio_of_process{0.95, 1.05, 1.00, 0.98, 1.03, 0.97, 1.02};
+  RunResult r;
+  for (int c = 0; c < 2; ++c) {
+    CaseResult& k = r.cases.emplace_back();
+    k.key = CaseKey{0, c == 0 ? Method::kPlain : Method::kTcsb, c == 0 ? std::nullopt : std::optional(1.0)};
+    k.label = k.net_name = "n0";
+    for (int rep = 0; rep < 12; ++rep) {
+      RepetitionResult& x = k.repetitions.emplace_back();
+      x.repetition = rep;
+      const int process = rep % processes;
+      x.process = processes == 1 ? 0 : process + 1;
+      const double plain = 10.0 + 0.01 * rep;
+      x.mean_step_ms = x.median_step_ms = c == 0 ? plain : plain * ratio_of_process[static_cast<std::size_t>(process)];
+    }
+    summarize_case(k);
+  }
+  return r;
+}
+
+/// TC-SB's median step over plain's.
+std::vector<Claim> ratio_claim(const RunResult& r) {
+  return {check_claim("ratio", "", Comparison::kAtMost, 1.03, 0.0,
+                      r.cases[1].step_ms.median / r.cases[0].step_ms.median, Evidence::kRepeated)};
+}
+
+Interval ratio_interval(const RunResult& run) {
+  std::vector<Claim> claims = ratio_claim(run);
+  attach_intervals(claims, bootstrap_claims(run, ratio_claim, 2000, 7), 0.95);
+  return claims.front().interval.value();
+}
+
+TEST(ClaimIntervals, AMergedResultsIntervalIsAtLeastAsWideAsOneProcesssOnTheSameData) {
+  // The same twelve repetitions, first as if one process had measured them all, then marked with the two (three)
+  // processes that did: resampling the processes first carries their spread into the interval.
+  for (const int processes : {2, 3}) {
+    RunResult merged = run_over_processes(processes);
+    RunResult one = merged;
+    for (CaseResult& c : one.cases)
+      for (RepetitionResult& x : c.repetitions) x.process = 0;
+    const Interval pooled = ratio_interval(one), by_process = ratio_interval(merged);
+    EXPECT_LE(by_process.low, pooled.low) << processes;
+    EXPECT_GE(by_process.high, pooled.high) << processes;
+    EXPECT_GT(by_process.high - by_process.low, pooled.high - pooled.low) << processes;
+  }
+}
+
+TEST(ClaimIntervals, ProcessesAreDrawnWholeAndTheNetsCasesStayPaired) {
+  const RunResult merged = run_over_processes(2);
+  std::mt19937_64 rng(3);
+  int one_process_only = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const RunResult s = resample_repetitions(merged, rng);
+    ASSERT_EQ(s.cases[0].repetitions.size(), s.cases[1].repetitions.size());
+    std::set<int> seen;
+    for (std::size_t i = 0; i < s.cases[0].repetitions.size(); ++i) {
+      EXPECT_EQ(s.cases[0].repetitions[i].process, s.cases[1].repetitions[i].process);  // paired
+      seen.insert(s.cases[0].repetitions[i].process);
+    }
+    one_process_only += seen.size() == 1;
+  }
+  EXPECT_GT(one_process_only, 60);  // about half the resamples draw one process twice
+  EXPECT_LT(one_process_only, 140);
+}
+
+TEST(ClaimIntervals, OneProcessResamplesAsBeforeWhateverItsLabel) {
+  // A run's own process (0) and a merged net that one shard measured whole (k) give the very same draws.
+  RunResult shard = two_nets();
+  for (CaseResult& c : shard.cases)
+    for (RepetitionResult& x : c.repetitions) x.process = 2;
+  const auto of_case1 = [](const RunResult& r) { return claims_on(r, 1); };
+  EXPECT_EQ(bootstrap_claims(two_nets(), of_case1, 100, 4).at("median"),
+            bootstrap_claims(shard, of_case1, 100, 4).at("median"));
+}
+
 }  // namespace
 }  // namespace tcsb

@@ -1,4 +1,4 @@
-#include "report/shard_merge.h"
+#include "sweep/shard_merge.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,16 +9,15 @@
 
 #include "gate/result_comparison.h"
 #include "report/json_report.h"
+#include "report/shard_section.h"
 #include "run/case_summary.h"
 #include "suite/fidelity_plan.h"
+#include "sweep/shard_plan.h"
 
 namespace tcsb {
 namespace {
 
 using ojson = nlohmann::ordered_json;
-
-/// The OpSample columns, in merge_data order, besides the work counts.
-constexpr const char* kSampleColumns[] = {"kind", "node_ns", "link_ns", "nodes", "links", "interior"};
 
 /// The context fields that make two shards different builds: their cases would not be one program's measurements.
 constexpr const char* kBuildKeys[] = {"git_commit", "tcsb_version", "compiler",       "cxx_flags",
@@ -87,7 +86,15 @@ ShardIndex shard_index_of(const ShardDocument& shard) {
   if (n < 1 || n > kMaxShards || k < 1 || k > n) {
     r.fail("context.shard", "k " + std::to_string(k) + " of n " + std::to_string(n) + " is not a shard index");
   }
-  return {static_cast<int>(k), static_cast<int>(n)};
+  // Shards written before the split by repetition have no `split`: they split by net.
+  ShardSplit split = ShardSplit::kNets;
+  if (s.contains("split")) {
+    const std::string name = r.string(s, "context.shard", "split");
+    const std::optional<ShardSplit> parsed = parse_split(name);
+    if (!parsed) r.fail("context.shard.split", "\"" + name + "\" is neither repetitions nor nets");
+    split = *parsed;
+  }
+  return {static_cast<int>(k), static_cast<int>(n), split};
 }
 
 /// The suite the shards ran: the file's text from merge_data, with the effective settings of the result's suite
@@ -157,7 +164,7 @@ std::vector<OpSample> read_op_samples(const Reader& r, const ojson& data, const 
   const ojson& columns = r.at(r.at(data, "merge_data", "op_samples"), "merge_data.op_samples", label);
   const ojson& work = r.at(columns, path, "work");
   std::vector<const ojson*> all;
-  for (const char* c : kSampleColumns) all.push_back(&r.at(columns, path, c));
+  for (const char* c : kMergeSampleColumns) all.push_back(&r.at(columns, path, c));
   for (int w = 0; w < kOpWorkCountKinds; ++w)
     all.push_back(&r.at(work, path + ".work", op_work_count_name(OpWorkCount(w))));
   const std::size_t size = all.front()->is_array() ? all.front()->size() : 0;
@@ -226,13 +233,74 @@ FidelityCase read_fidelity_case(const Reader& r, const ojson& j, const std::stri
   return c;
 }
 
+/// A case as one shard measured it: its header and its repetitions (each with its operation samples), in the order
+/// the shard ran them.
+struct CasePiece {
+  CaseResult header;  ///< key, label and net; no repetitions
+  std::vector<RepetitionResult> repetitions;
+  std::vector<std::vector<OpSample>> samples;  ///< per repetition
+  /// Shards written before merge_data.breakdown_ms: the case's summary as the shard gave it (all its repetitions
+  /// then ran in that one shard, split by net).
+  std::optional<StepBreakdown> summary_breakdown;
+};
+
 /// What one shard contributes: its cases (by suite-wide case index) and fidelity cases (by net).
 struct ShardPart {
-  std::map<std::size_t, CaseResult> cases;
+  std::map<std::size_t, CasePiece> cases;
   std::map<std::size_t, std::vector<FidelityCase>> fidelity;
   std::map<std::size_t, FidelityFloors> floors;  ///< by net; none from a result that records no floors
   double fidelity_wall_s = 0;
 };
+
+/// "[0, 2, 4]".
+std::string number_list(const std::vector<int>& numbers) {
+  std::string text;
+  for (const int n : numbers) text += (text.empty() ? "" : ", ") + std::to_string(n);
+  return "[" + text + "]";
+}
+
+/// The per-repetition breakdowns of case `label` from merge_data.breakdown_ms, one per repetition.
+std::vector<StepBreakdown> read_breakdowns(const Reader& r, const ojson& list, const std::string& label,
+                                           std::size_t repetitions) {
+  const std::string path = "merge_data.breakdown_ms." + label;
+  if (!list.is_array() || list.size() != repetitions)
+    r.fail(path, "must hold one breakdown per repetition (" + std::to_string(repetitions) + ")");
+  std::vector<StepBreakdown> out;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const ojson& parts = list[k];
+    const std::string at = path + "[" + std::to_string(k) + "]";
+    if (!parts.is_array() || parts.size() != std::size(kMergeBreakdownParts)) r.fail(at, "must hold 4 numbers");
+    double v[4];
+    for (std::size_t i = 0; i < 4; ++i) {
+      if (parts[i].is_null()) {
+        v[i] = std::numeric_limits<double>::quiet_NaN();
+      } else if (parts[i].is_number() && parts[i].get<double>() >= 0) {
+        v[i] = parts[i].get<double>();
+      } else {
+        r.fail(at, "must hold numbers >= 0 or null");
+      }
+    }
+    out.push_back({v[0], v[1], v[2], v[3]});
+  }
+  return out;
+}
+
+/// A case's repetitions from every shard that measured some, in repetition order, summarised as the run does.
+CaseResult join_pieces(std::vector<CasePiece>& pieces) {
+  CaseResult c = pieces.front().header;
+  std::vector<std::pair<RepetitionResult*, std::vector<OpSample>*>> all;
+  for (CasePiece& p : pieces)
+    for (std::size_t k = 0; k < p.repetitions.size(); ++k) all.push_back({&p.repetitions[k], &p.samples[k]});
+  std::stable_sort(all.begin(), all.end(),
+                   [](const auto& a, const auto& b) { return a.first->repetition < b.first->repetition; });
+  for (auto& [rep, samples] : all) {
+    c.repetitions.push_back(std::move(*rep));
+    c.ops.samples.insert(c.ops.samples.end(), samples->begin(), samples->end());
+  }
+  summarize_case(c);  // the run's own summary of the repetitions, so the merged case is the unsharded one
+  if (pieces.size() == 1 && pieces.front().summary_breakdown) c.breakdown = *pieces.front().summary_breakdown;
+  return c;
+}
 
 /// A summary as the fidelity JSON records it: its mean alone (null when never measured). Every table reads only
 /// the mean (summary_mean), so the merged run's tables and JSON are the unsharded run's.
@@ -264,28 +332,33 @@ FidelityFloors read_floors(const Reader& r, const ojson& j, const std::string& p
   return f;
 }
 
-/// Reads the cases of `shard`, which must be exactly those its index assigns, in the unsharded order.
+/// Reads the cases of `shard`, which must be exactly those its index assigns, in the unsharded order, each with
+/// exactly the repetitions its index assigns.
 ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const ShardIndex& index) {
   const Reader r(shard.file);
   const ojson& doc = shard.document;
-  const std::vector<bool> units = shard_units(suite, index);
+  Suite mine = suite;
+  restrict_to_shard(mine, index);
   const std::vector<CaseKey> keys = expand_cases(suite);
   std::vector<std::size_t> expected;
   for (std::size_t i = 0; i < keys.size(); ++i)
-    if (units[keys[i].configuration * suite.nets.size() + keys[i].net]) expected.push_back(i);
-  // The fidelity pass (never with axes: one configuration) is per net.
-  const std::vector<bool>& nets = units;
+    if (runs_unit(mine, keys[i].configuration, keys[i].net)) expected.push_back(i);
   const ojson& cases = r.at(doc, "", "cases");
   if (!cases.is_array() || cases.size() != expected.size()) {
     r.fail("cases", std::to_string(cases.is_array() ? cases.size() : 0) + " cases, but shard " + shard_text(index) +
-                        " of suite " + suite.name + " has " + std::to_string(expected.size()));
+                        " (split by " + split_name(index.split) + ") of suite " + suite.name + " has " +
+                        std::to_string(expected.size()));
   }
+  const ojson& merge_data = r.at(doc, "", "merge_data");
+  const ojson* breakdowns = merge_data.contains("breakdown_ms") ? &merge_data["breakdown_ms"] : nullptr;
+  if (index.split == ShardSplit::kRepetitions && !breakdowns) r.fail("merge_data.breakdown_ms", "missing");
   ShardPart part;
   for (std::size_t e = 0; e < expected.size(); ++e) {
     const std::size_t index_in_suite = expected[e];
     const std::string path = "cases[" + std::to_string(e) + "]";
     const ojson& j = cases[e];
-    CaseResult c;
+    CasePiece piece;
+    CaseResult& c = piece.header;
     c.key = keys[index_in_suite];
     c.label = r.string(j, path, "label");
     if (c.label != case_label(suite, c.key)) {
@@ -296,21 +369,50 @@ ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const Shard
     c.net_nodes = r.integer(j, path, "net_nodes");
     c.net_links = r.integer(j, path, "net_links");
     c.target_nodes = static_cast<int>(r.integer(j, path, "target_nodes"));
+    // The repetitions its index assigns, no other, none twice, in order: a repetition missing from the merge or in
+    // it twice would change every summary without a trace.
+    std::vector<int> assigned, found;
+    for (int rep = 0; rep < suite.repetitions; ++rep)
+      if (runs_repetition(mine, c.key.configuration, c.key.net, rep)) assigned.push_back(rep);
     const ojson& reps = r.at(j, path, "repetitions");
     for (std::size_t k = 0; k < reps.size(); ++k) {
-      c.repetitions.push_back(read_repetition(r, reps[k], path + ".repetitions[" + std::to_string(k) + "]"));
+      piece.repetitions.push_back(read_repetition(r, reps[k], path + ".repetitions[" + std::to_string(k) + "]"));
+      piece.repetitions.back().process = index.k;
+      found.push_back(piece.repetitions.back().repetition);
     }
-    if (c.key.method == Method::kTcsb) c.ops.samples = read_op_samples(r, r.at(doc, "", "merge_data"), c.label);
-    summarize_case(c);  // the run's own summary of the repetitions, so the merged case is the unsharded one
-    // The step breakdown is summarised from per-repetition parts the result does not record: the shard's own
-    // summary of the case is the one its repetitions give (they all ran in that shard), so it is read back.
-    if (const auto b = j.find("step_breakdown_ms"); b != j.end()) {
+    if (found != assigned) {
+      r.fail(path + ".repetitions", "repetitions " + number_list(found) + ", but shard " + shard_text(index) +
+                                        " (split by " + split_name(index.split) + ") has " + number_list(assigned));
+    }
+    std::vector<OpSample> samples;
+    if (c.key.method == Method::kTcsb) samples = read_op_samples(r, merge_data, c.label);
+    std::size_t offset = 0;
+    for (const RepetitionResult& rep : piece.repetitions) {
+      const auto count = static_cast<std::size_t>(std::max<std::int64_t>(rep.operations, 0));
+      if (c.key.method == Method::kTcsb && offset + count > samples.size())
+        r.fail("merge_data.op_samples." + c.label, "fewer samples than the repetitions' operations");
+      const auto first = samples.begin() + static_cast<std::ptrdiff_t>(std::min(offset, samples.size()));
+      piece.samples.emplace_back(
+          first, first + static_cast<std::ptrdiff_t>(c.key.method == Method::kTcsb ? count : std::size_t{0}));
+      offset += count;
+    }
+    if (c.key.method == Method::kTcsb && offset != samples.size())
+      r.fail("merge_data.op_samples." + c.label, "more samples than the repetitions' operations");
+    if (breakdowns) {
+      const std::vector<StepBreakdown> parts =
+          read_breakdowns(r, r.at(*breakdowns, "merge_data.breakdown_ms", c.label), c.label, piece.repetitions.size());
+      for (std::size_t k = 0; k < parts.size(); ++k) piece.repetitions[k].breakdown = parts[k];
+    } else if (const auto b = j.find("step_breakdown_ms"); b != j.end()) {
+      // An older shard, split by net: the case's summary as the shard gave it (all its repetitions ran there).
       const std::string at = path + ".step_breakdown_ms";
-      c.breakdown = {r.number(*b, at, "bullet"), r.number(*b, at, "feedback"), r.number(*b, at, "operations"),
-                     r.number(*b, at, "blending")};
+      piece.summary_breakdown = StepBreakdown{r.number(*b, at, "bullet"), r.number(*b, at, "feedback"),
+                                              r.number(*b, at, "operations"), r.number(*b, at, "blending")};
     }
-    part.cases.emplace(index_in_suite, std::move(c));
+    part.cases.emplace(index_in_suite, std::move(piece));
   }
+  // The fidelity pass (never with axes: one configuration) is per net, in the shard of the net's first repetition.
+  std::vector<bool> nets(suite.nets.size());
+  for (std::size_t net = 0; net < nets.size(); ++net) nets[net] = runs_fidelity_of(mine, net);
   const std::vector<FidelitySubjectSpec> plan = fidelity_plan(suite);
   if (plan.empty()) return part;
   const ojson& fidelity = r.at(doc, "", "fidelity");
@@ -357,31 +459,6 @@ void check_same(const ShardDocument& first, const ShardDocument& shard, const ch
 
 }  // namespace
 
-ojson merge_data_json(const RunResult& result) {
-  ojson samples = ojson::object();
-  for (const CaseResult& c : result.cases) {
-    if (c.key.method != Method::kTcsb) continue;
-    ojson columns = ojson::object();
-    for (const char* name : kSampleColumns) columns[name] = ojson::array();
-    ojson work = ojson::object();
-    for (int w = 0; w < kOpWorkCountKinds; ++w) work[op_work_count_name(OpWorkCount(w))] = ojson::array();
-    for (const OpSample& s : c.ops.samples) {
-      columns["kind"].push_back(static_cast<int>(s.kind));
-      columns["node_ns"].push_back(s.node_ns);
-      columns["link_ns"].push_back(s.link_ns);
-      columns["nodes"].push_back(s.nodes);
-      columns["links"].push_back(s.links);
-      columns["interior"].push_back(s.work.interior ? 1 : 0);
-      for (int w = 0; w < kOpWorkCountKinds; ++w) {
-        work[op_work_count_name(OpWorkCount(w))].push_back(op_work_count(s.work, OpWorkCount(w)));
-      }
-    }
-    columns["work"] = std::move(work);
-    samples[c.label] = std::move(columns);
-  }
-  return {{"suite_file", result.suite.source}, {"op_samples", std::move(samples)}};
-}
-
 MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
   if (shards.empty()) throw ResultFileError("tcsb merge", "", "no shard results given");
   std::vector<ShardIndex> indices;
@@ -391,6 +468,11 @@ MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
   std::map<int, std::size_t> given;  // k -> position in `shards`
   for (std::size_t i = 0; i < shards.size(); ++i) {
     const ShardDocument& s = shards[i];
+    if (indices[i].split != indices.front().split) {
+      throw ResultFileError(s.file, "context.shard.split",
+                            std::string("split by ") + split_name(indices[i].split) + ", but " + first.file +
+                                " is split by " + split_name(indices.front().split) + ": not one split");
+    }
     if (indices[i].n != n) {
       throw ResultFileError(s.file, "context.shard",
                             "shard " + shard_text(indices[i]) + ", but " + first.file + " is a shard of " +
@@ -422,13 +504,13 @@ MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
   MergedShards merged;
   RunResult& result = merged.result;
   result.suite = rebuild_suite(shards[given.at(1)]);
-  std::map<std::size_t, CaseResult> cases;
+  std::map<std::size_t, std::vector<CasePiece>> cases;
   std::map<std::size_t, std::vector<FidelityCase>> fidelity;
   std::map<std::size_t, FidelityFloors> floors;
   double fidelity_wall_s = 0;
   for (const auto& [k, i] : given) {
     ShardPart part = read_shard(shards[i], result.suite, indices[i]);
-    cases.merge(part.cases);
+    for (auto& [index, piece] : part.cases) cases[index].push_back(std::move(piece));
     fidelity.merge(part.fidelity);
     floors.merge(part.floors);
     fidelity_wall_s += part.fidelity_wall_s;
@@ -436,7 +518,7 @@ MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
     const ojson& wall = shards[i].document["wall_s"];
     if (wall.is_number()) result.wall_s += wall.get<double>();
   }
-  for (auto& [index, c] : cases) result.cases.push_back(std::move(c));
+  for (auto& [index, pieces] : cases) result.cases.push_back(join_pieces(pieces));
   if (!fidelity_plan(result.suite).empty()) {
     FidelityResult f;
     f.rms_threshold_pct = result.suite.fidelity.rms_threshold_pct;

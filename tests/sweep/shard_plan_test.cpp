@@ -1,5 +1,5 @@
-// Shard indices and the split of a suite's nets into shards.
-#include "suite/shard_plan.h"
+// Shard indices and the split of a suite's repetitions, or nets, into shards.
+#include "sweep/shard_plan.h"
 
 #include <gtest/gtest.h>
 
@@ -115,6 +115,65 @@ TEST(ShardPlan, TheScalingSuiteInFourShardsGivesTheLargestNetAShardOfItsOwn) {
   EXPECT_EQ(shard_units(s, {2, 4}), (std::vector<bool>{false, false, false, false, true, false}));
   EXPECT_EQ(shard_units(s, {3, 4}), (std::vector<bool>{false, false, false, true, false, false}));
   EXPECT_EQ(shard_units(s, {4, 4}), (std::vector<bool>{true, true, true, false, false, false}));
+}
+
+TEST(ShardIndex, CarriesItsSplit) {
+  EXPECT_EQ(parse_shard_index("2/3")->split, ShardSplit::kRepetitions);  // the default
+  EXPECT_EQ(parse_shard_index("2/3", ShardSplit::kNets), (ShardIndex{2, 3, ShardSplit::kNets}));
+  EXPECT_EQ(parse_split("repetitions"), ShardSplit::kRepetitions);
+  EXPECT_EQ(parse_split("nets"), ShardSplit::kNets);
+  EXPECT_FALSE(parse_split("net").has_value());
+  EXPECT_FALSE(parse_split("").has_value());
+  EXPECT_STREQ(split_name(ShardSplit::kNets), "nets");
+}
+
+TEST(ShardPlan, EveryRepetitionOfEveryNetIsInExactlyOneShard) {
+  Suite s = suite_of_widths({9, 33, 17, 65});
+  s.repetitions = 3;
+  for (int n = 1; n <= 14; ++n) {
+    std::vector<int> owners(s.nets.size() * 3, 0);
+    for (int k = 1; k <= n; ++k) {
+      const std::vector<bool> mine = shard_repetitions(s, {k, n});
+      ASSERT_EQ(mine.size(), owners.size());
+      for (std::size_t i = 0; i < mine.size(); ++i) owners[i] += mine[i];
+    }
+    EXPECT_EQ(owners, std::vector<int>(owners.size(), 1)) << n << " shards";
+  }
+}
+
+TEST(ShardPlan, RestrictingToAShardSetsItsUnitsAndRepetitions) {
+  Suite s = suite_of_widths({9, 33, 17});
+  s.repetitions = 2;
+  for (int k = 1; k <= 4; ++k) {
+    Suite by_repetition = s, by_net = s;
+    restrict_to_shard(by_repetition, {k, 4, ShardSplit::kRepetitions});
+    restrict_to_shard(by_net, {k, 4, ShardSplit::kNets});
+    EXPECT_EQ(by_net.run_units, shard_units(s, {k, 4}));
+    EXPECT_TRUE(by_net.run_repetitions.empty());  // every repetition of its nets
+    EXPECT_EQ(by_repetition.run_repetitions, shard_repetitions(s, {k, 4}));
+    for (std::size_t net = 0; net < 3; ++net) {
+      const bool any = runs_repetition(by_repetition, 0, net, 0) || runs_repetition(by_repetition, 0, net, 1);
+      EXPECT_EQ(runs_unit(by_repetition, 0, net), any) << "net " << net << ", shard " << k;
+      EXPECT_EQ(runs_fidelity_of(by_repetition, net), runs_repetition(by_repetition, 0, net, 0));
+    }
+  }
+}
+
+TEST(ShardPlan, TheScalingSuiteSplitByRepetitionSpreadsItsLargestNet) {
+  // The 1025^2 net holds three quarters of the work: split by net it is one shard's alone; split by repetition each
+  // of four shards runs one of its four repetitions, the smaller nets' filling in around them.
+  Suite s = parse_suite(kSourceDir / "suites" / "scaling.json");
+  s.repetitions = 4;
+  const std::size_t largest = 5;
+  ASSERT_EQ(s.nets[largest].name, "n1025");
+  std::vector<int> repetitions_of_largest;
+  for (int k = 1; k <= 4; ++k) {
+    const std::vector<bool> mine = shard_repetitions(s, {k, 4});
+    int count = 0;
+    for (std::size_t r = 0; r < 4; ++r) count += mine[largest * 4 + r];
+    repetitions_of_largest.push_back(count);
+  }
+  EXPECT_EQ(repetitions_of_largest, (std::vector<int>{1, 1, 1, 1}));
 }
 
 }  // namespace
