@@ -6,17 +6,17 @@
 #     (plain only, the suite's 400 + 120 steps, 1 repetition)
 #  2. TC-SB at 75 % and 30 %: instructions and cache lines fetched from beyond a simulated 2 MiB cache per
 #     operation, between real steps (200 + 60 steps, 1 repetition, synchronous feedback so one thread does it all).
-# The suites are copies of suites/paper.json narrowed as said (the plain ones by scripts/plain_paper_suites.py),
+# The suites are copies of suites/paper.json narrowed as said (the plain ones by scripts/profile/plain_paper_suites.py),
 # written to a temporary directory.
-# Usage: bash scripts/profile-paper-nets.sh [build-dir]   (needs valgrind; takes about 10 minutes)
+# Usage: bash scripts/profile/profile-paper-nets.sh [build-dir]   (needs valgrind; takes about 10 minutes)
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 build=${1:-build}
 command -v valgrind >/dev/null || { echo "profile-paper-nets: valgrind is not installed" >&2; exit 2; }
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 
-python3 scripts/plain_paper_suites.py "$dir" n45 n81
+python3 scripts/profile/plain_paper_suites.py "$dir" n45 n81
 python3 - "$dir" <<'EOF'
 import json, sys
 out = sys.argv[1]
@@ -41,4 +41,4 @@ valgrind --tool=callgrind --cache-sim=yes --D1=49152,12,64 --LL=2097152,16,64 \
   --callgrind-out-file="$dir/tcsb.out" \
   "$build/tcsb" run "$dir/tcsb-ops.json" --quiet --out "$dir/tcsb.result.json" >/dev/null 2>&1
 echo "TC-SB operations between real steps (n45 + n81, 75 % and 30 %):"
-python3 scripts/callgrind_calls.py "$dir/tcsb.out"
+python3 scripts/profile/callgrind_calls.py "$dir/tcsb.out"
