@@ -14,8 +14,8 @@
 #include "analysis/statistics.h"
 #include "bench_bodies.h"
 
-// scripts/op-instructions.sh runs this benchmark under callgrind: the loop below zeroes the counters when it starts
-// and dumps them when it ends, so each dump covers the measured operations and not the fixture's setup (which
+// scripts/profile/op-instructions.sh runs this benchmark under callgrind: the loop below zeroes the counters when it
+// starts and dumps them when it ends, so each dump covers the measured operations and not the fixture's setup (which
 // drives the cut to half the net with thousands of operations at random places). Without valgrind these do nothing.
 #if __has_include(<valgrind/callgrind.h>)
 #include <valgrind/callgrind.h>

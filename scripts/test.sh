@@ -11,7 +11,7 @@ bash scripts/install-deps.sh libbenchmark-tools python3-scipy clang-format slurm
 # Formatting first, so a format problem fails in seconds: every C++ source as .clang-format says.
 bash scripts/check-format.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
-cmake --build build
+cmake --build build  # every target: the tests and benchmarks too (setup-and-reproduce.sh builds tcsb alone)
 ctest --test-dir build --output-on-failure -j2
 
 # Regression gate: a fresh run of the ci suite against results/baselines/ci.json. N, L, I, operations and final

@@ -1,6 +1,6 @@
 // `tcsb frames`: the paper's Figure 6 as data — plain Bullet and TC-SB of one net in lockstep, both recorded at a
 // few steps (positions, the TC-SB surface reconstructed at full resolution, TC-SB's links with their blend roles).
-// scripts/plot_figure6.py draws it. Nothing is timed.
+// scripts/render-figures.py draws it. Nothing is timed.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 

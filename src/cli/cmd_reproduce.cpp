@@ -43,6 +43,7 @@ CLI::App* add_reproduce_command(CLI::App& app, ReproduceArgs& args) {
   cmd->add_option("--paper", args.paper, "The paper's numbers (JSON)")->capture_default_str();
   cmd->add_option("--out", args.out, "Write the JSON report to FILE (atomically) instead of stdout");
   cmd->add_flag("--quiet", args.quiet, "Only the side-by-side tables and claims on stderr");
+  cmd->add_flag("--targets", args.targets, kTargetsFlagHelp);
   add_repetitions_option(*cmd, args.repetitions);
   cmd->add_option("--budget", args.budget,
                   "Seconds for judging the claims after the run: intervals, and extra repetitions of undecided "
@@ -86,7 +87,7 @@ int reproduce_command(const ReproduceArgs& args) {
   if (!args.quiet) options.on_look = print_look;
   const Reproduction reproduction = check_reproduction(result, paper, options);
   warn_repetitions(result, suite.repetitions);  // those the looks added; the run's own were warned of above
-  print_reproduction(result, reproduction, std::cerr);
+  print_reproduction(result, reproduction, args.targets, std::cerr);
 
   nlohmann::ordered_json report = native_json(result);
   if (merged_context) report["context"] = *merged_context;

@@ -42,6 +42,7 @@ struct ReproduceArgs {
   std::string paper = "results/paper.json";  ///< the paper's own numbers
   std::string out;                           ///< output file; empty: stdout
   bool quiet = false;                        ///< only the reproduction tables on stderr
+  bool targets = false;                      ///< also print this project's targets on stderr (always in the JSON)
   std::optional<int> repetitions;            ///< overrides the suite's repetitions per case, when given
   /// Wall time (s) for judging the claims after the run — intervals, and extra repetitions of undecided claims
   /// while they fit; absent: what is left of kReproductionWallTargetS (paper/paper_claims.h); 0: no extra repetitions.
@@ -50,6 +51,12 @@ struct ReproduceArgs {
   /// one, as always; more gives intervals that include the spread between processes.
   int processes = 1;
 };
+
+/// `--targets` of `tcsb reproduce` and of the bare `tcsb`: the project's own targets are not the paper's claims, so
+/// the console shows them only when asked.
+inline constexpr const char* kTargetsFlagHelp =
+    "Also print this project's own targets (reported, not gating) on stderr; the JSON always holds them "
+    "(reproduction.targets)";
 
 /// The largest --budget accepted (a day): a bound against typing errors.
 inline constexpr double kMaxReproduceBudget = 86400.0;
@@ -153,7 +160,8 @@ CLI::App* add_export_command(CLI::App& app, ExportArgs& args);
 /// Renders an existing result file in another format (gbench, github-action-smaller, ...).
 int export_command(const ExportArgs& args);
 
-/// Registers `reproduce [--suite S] [--paper FILE] [--out FILE] [--quiet] [--repetitions N] [--budget SECONDS]`.
+/// Registers `reproduce [--suite S] [--paper FILE] [--out FILE] [--quiet] [--targets] [--repetitions N]
+/// [--budget SECONDS]`.
 CLI::App* add_reproduce_command(CLI::App& app, ReproduceArgs& args);
 /// Runs the suite, prints both tables beside the paper's, judges the claims (adding repetitions for undecided ones
 /// within the budget): 0 all passed, 1 a claim failed, 4 none failed but some are undecided.

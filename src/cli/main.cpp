@@ -19,10 +19,12 @@ int dispatch(int argc, char** argv) {
                "tcsb"};
   bool version = false;
   app.add_flag("--version", version, "Print the version, commit and Bullet version, then exit");
+  ReproduceArgs reproduce_args;  // the bare `tcsb` is `tcsb reproduce`: --targets works on either
+  app.add_flag("--targets", reproduce_args.targets,
+               std::string("Without a subcommand, as reproduce --targets: ") + kTargetsFlagHelp);
   app.require_subcommand(0, 1);
   RunArgs run_args;
   ValidateArgs validate_args;
-  ReproduceArgs reproduce_args;
   CompareArgs compare_args;
   ExportArgs export_args;
   FramesArgs frames_args;

@@ -1,5 +1,5 @@
 // The document `tcsb frames` writes: the paper's Figure 6 as data (fidelity/figure_frames.h), for
-// scripts/plot_figure6.py.
+// scripts/render-figures.py.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -10,7 +10,7 @@
 
 namespace tcsb {
 
-/// Version of the frames layout that scripts/plot_figure6.py reads. 1: the first, with a context block.
+/// Version of the frames layout that scripts/render-figures.py reads. 1: the first, with a context block.
 inline constexpr int kFramesSchemaVersion = 1;
 
 /// {"schema_version", "tool": "tcsb", "kind": "frames", "context" (context_json), "suite" (suite_json), "net": {name,

@@ -52,7 +52,9 @@ Reproduction check_reproduction(RunResult& result, PaperReference paper, const R
 /// verdict, interval, look and repetitions), the looks, the overall verdict, wall time.
 nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduction& reproduction);
 
-/// Both tables side by side with the paper's, then every claim and target with its verdict.
-void print_reproduction(const RunResult& result, const Reproduction& reproduction, std::ostream& out);
+/// Both tables side by side with the paper's, then every claim of the paper with its verdict; the project's own
+/// targets too with `with_targets`, else one line saying where they are.
+void print_reproduction(const RunResult& result, const Reproduction& reproduction, bool with_targets,
+                        std::ostream& out);
 
 }  // namespace tcsb

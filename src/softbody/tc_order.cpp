@@ -5,7 +5,7 @@
 // update per node) and its link array (the solver), and a plain body's arrays are row-major, so consecutive
 // elements are neighbours on the cloth and share cache lines and DBVT ancestors. Operations append new nodes and
 // links at the end and fill holes by swap-with-last; left alone, that scatters neighbours over the arrays, and the
-// same Bullet instructions then miss the L1 cache about twice as often (callgrind, scripts/step-profile.sh).
+// same Bullet instructions then miss the L1 cache about twice as often (callgrind, scripts/profile/step-profile.sh).
 #include <array>
 #include <utility>
 

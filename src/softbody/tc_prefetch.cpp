@@ -28,8 +28,8 @@
 // needs sits in one 32-byte record (TcSoftBody::NodeRecord), the LOD node fits one line, link constants are computed
 // from the records (no neighbour's Bullet node is touched, and of a link only its constant's line), and the
 // removals here ask for the removed links' lines, which the begin operation no longer loads. Lines from beyond a
-// 2 MiB simulated cache per call at 513^2 (scripts/op-instructions.sh), before -> after those changes: begin-refine
-// 64.8 -> 46.8, begin-coarse 81.2 -> 60.0, end-refine 3.2 -> 7.9, end-coarse 17.2 -> 26.8 (the bench's end
+// 2 MiB simulated cache per call at 513^2 (scripts/profile/op-instructions.sh), before -> after those changes:
+// begin-refine 64.8 -> 46.8, begin-coarse 81.2 -> 60.0, end-refine 3.2 -> 7.9, end-coarse 17.2 -> 26.8 (the bench's end
 // operation follows its begin at once, so lines a begin no longer touches show up there). In real runs every
 // operation got cheaper and flatter (docs/methodology.md, "Operations in constant time").
 //

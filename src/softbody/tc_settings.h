@@ -42,7 +42,7 @@ struct TcSettings {
   /// restore_order runs once operations have displaced this fraction of the nodes and links simulated: the arrays
   /// stay at least 3/4 in order, and the O(N + L + tree) pass runs once per (N + L)/4 displacements: amortised O(1)
   /// each at a fixed compression (about 4 x 50 instructions). 1/8 missed the L1 no less often in Bullet's step and cost
-  /// twice the passes; 1/2 fewer passes, but half the arrays out of order (callgrind, scripts/step-profile.sh;
+  /// twice the passes; 1/2 fewer passes, but half the arrays out of order (callgrind, scripts/profile/step-profile.sh;
   /// docs/methodology.md).
   static constexpr double kReorderFraction = 1.0 / 4;
   /// With restore_order, on bodies of at least restore_order_min_nodes: once the body has shrunk to

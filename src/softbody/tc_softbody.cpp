@@ -245,11 +245,6 @@ double TcSoftBody::blend_alpha(const CutLink& meta) const {
   return meta.role == LinkRole::kFadeIn ? arriving : 1.0 - arriving;
 }
 
-double TcSoftBody::arrival_weight(TreeId id) const {
-  if (state(id) != CutState::kArriving) return 1.0;
-  return op_progress(ops_[static_cast<std::size_t>(record(id).op)]);
-}
-
 void TcSoftBody::refresh_link_constant(int link) {
   ++work_.links;
   work_.tree_records += 2;  // both endpoints' records (inverse masses)

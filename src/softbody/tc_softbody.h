@@ -217,10 +217,6 @@ class TcSoftBody : public btSoftBody {
   /// is the same whether children are placed rigidly or not. O(degree).
   Eigen::Matrix<double, 3, 2> local_affine_fit(TreeId id) const;
 
-  /// How far the operation an arriving node belongs to has blended: (blend steps done + 1) / (K + 1), the weight its
-  /// fading-in links carry now, rising by 1/(K + 1) per step; 1 for a node that is not arriving. O(1).
-  double arrival_weight(TreeId id) const;
-
   /// Whether links above level 0 use their level's calibrated stiffness (TcSettings::level_stiffness).
   bool calibrated() const { return !level_materials_.empty(); }
   /// The material a link between tree nodes a and b uses: the solver's (Bullet's m_materials[0]) when uncalibrated

@@ -8,7 +8,7 @@
 namespace tcsb {
 
 /// Seconds per simulated node and step at 2 solver iterations: the dearest of plain Bullet's measured 0.20-0.35 us
-/// per node-step on the paper suite's nets (docs/methodology.md, the fresh-clone reproduction at 0560439).
+/// per node-step on the paper suite's nets (docs/methodology.md, "Step linearity and the L2").
 inline constexpr double kNodeStepSeconds = 0.35e-6;
 
 /// Estimated wall seconds of every repetition of every case this process runs (Suite::run_units), warm-up steps

@@ -266,6 +266,33 @@ TEST_F(Cli, BadBudgetsAreUsageErrors) {
   }
 }
 
+TEST_F(Cli, ReproducePrintsTheProjectsTargetsOnlyWithTargets) {
+  write_file(dir_ / "tiny.json", kTinySuite);
+  const std::string table = "Targets of this project (reported, not gating):\n";  // the heading of the table
+  for (const bool with_targets : {false, true}) {
+    fs::remove(dir_ / "out.json");
+    const Outcome o = tcsb(std::string("reproduce --suite tiny.json --quiet --budget 0 --out out.json") +
+                           (with_targets ? " --targets" : ""));
+    ASSERT_TRUE(o.exit_code == 0 || o.exit_code == 1 || o.exit_code == 4) << o.err;
+    const nlohmann::json j = nlohmann::json::parse(read_file(dir_ / "out.json"));
+    const nlohmann::json& targets = j["reproduction"]["targets"];
+    ASSERT_FALSE(targets.empty()) << "the JSON holds the targets either way";
+    EXPECT_NE(o.err.find("Claims of the paper"), std::string::npos) << o.err;
+    EXPECT_EQ(o.err.find(table) != std::string::npos, with_targets) << o.err;
+    for (const auto& t : targets) {  // each target's row, by its id, only with the flag
+      const std::string id = t["id"];
+      EXPECT_EQ(o.err.find("  " + id + " ") != std::string::npos, with_targets) << id << ": " << o.err;
+    }
+    if (!with_targets)
+      EXPECT_NE(o.err.find("--targets prints them"), std::string::npos) << "where to find them: " << o.err;
+  }
+  // The bare `tcsb` is `tcsb reproduce`, so it takes the flag too.
+  const Outcome help = tcsb("--help");
+  EXPECT_NE(help.out.find("--targets"), std::string::npos) << help.out;
+  const Outcome reproduce_help = tcsb("reproduce --help");
+  EXPECT_NE(reproduce_help.out.find("--targets"), std::string::npos) << reproduce_help.out;
+}
+
 TEST_F(Cli, ReproduceGivesEveryClaimAVerdictAndExitsByThem) {
   write_file(dir_ / "tiny.json", kTinySuite);  // 2 repetitions: too few for an interval, so look 1 decides nothing
   const Outcome o = tcsb("reproduce --suite tiny.json --quiet --budget 60 --out out.json");

@@ -56,7 +56,7 @@ TEST(ShippedSuites, Paper) {
   EXPECT_EQ(s.steps, 400);
   EXPECT_EQ(s.warmup_steps, 120);
   EXPECT_EQ(s.repetitions,
-            5);  // 7 took up to 103 s in slow hours, too near the reproduction's wall-time target (docs/methodology.md)
+            5);  // 7 took up to 103 s in slow hours on the development VM, too near the reproduction's budget
   EXPECT_EQ(s.solver.piterations, 2);
   EXPECT_EQ(s.tcsb.blend_steps, 4);
   EXPECT_TRUE(s.feedback.parallel) << "the paper evaluates its TreeCut in parallel (section 5)";

@@ -4,9 +4,9 @@
 # lines it fetches from beyond a 2 MiB last-level cache (the L2 of the development VM; callgrind simulates two
 # levels, 48 KiB L1 and that), independently of machine noise: the counts are deterministic.
 # Only the benchmark loops are counted, not the fixture's setup, and of each benchmark only the timed operations.
-# Usage: bash scripts/op-instructions.sh [build-dir] [widths...]   (needs valgrind; takes a few minutes)
+# Usage: bash scripts/profile/op-instructions.sh [build-dir] [widths...]   (needs valgrind; takes a few minutes)
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 build=${1:-build}
 shift || true
 widths=${*:-33 257}
@@ -24,7 +24,7 @@ for width in $widths; do
   echo "width $width:"
   i=1
   for op in begin_refine end_refine begin_coarse end_coarse; do
-    python3 scripts/callgrind_calls.py --only "$op" "$dir/cg.out.$i"
+    python3 scripts/profile/callgrind_calls.py --only "$op" "$dir/cg.out.$i"
     i=$((i + 1))
   done
   rm -rf "$dir"

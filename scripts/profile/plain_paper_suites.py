@@ -1,6 +1,6 @@
 """Writes one suite per net of suites/paper.json, narrowed to plain Bullet on that net alone: 1 repetition, the
 paper suite's own steps and warm-up, no TC-SB cases, no fidelity pass. For the profiling scripts, which run each
-under valgrind. Usage: python3 scripts/plain_paper_suites.py OUT_DIR [NET_NAME ...]  (default: every net); writes
+under valgrind. Usage: python3 scripts/profile/plain_paper_suites.py OUT_DIR [NET_NAME ...]  (default: every net); writes
 OUT_DIR/<net name>.json."""
 import json
 import sys

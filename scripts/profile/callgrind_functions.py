@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Per-function costs per step from pairs of callgrind dumps (scripts/step-profile.sh with TCSB_PROFILE_KEEP=DIR).
+"""Per-function costs per step from pairs of callgrind dumps (step-profile.sh with TCSB_PROFILE_KEEP=DIR).
 
 Usage: callgrind_functions.py DIR [STEPS] [PATTERNS] [EVENTS]
 DIR holds {tcsb,plain_equal}-{short,long}.out; STEPS (default 20) is the number of timed steps between the short and

@@ -6,17 +6,19 @@
 # cache: the instructions per node-step stay about level, the lines per node-step jump where the body no longer fits.
 # Only the steps are counted (callgrind collects inside the plain body's step function alone), not building the
 # body. Plain only, 1 repetition, the suite's own 120 warm-up + 400 timed steps per net.
-# Usage: bash scripts/plain-cache-profile.sh [build-dir]   (needs valgrind; takes a few minutes)
+# Usage: bash scripts/profile/plain-cache-profile.sh [build-dir] [net...]   (default: every net of the suite; needs
+# valgrind; a few minutes per net)
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 build=${1:-build}
+shift || true  # the rest: net names of suites/paper.json
 command -v valgrind >/dev/null || { echo "plain-cache-profile: valgrind is not installed" >&2; exit 2; }
 [ -x "$build/tcsb" ] || { echo "plain-cache-profile: $build/tcsb not found; build first" >&2; exit 2; }
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 
 # One suite per net: the paper suite narrowed to plain Bullet on that net.
-python3 scripts/plain_paper_suites.py "$dir"
+python3 scripts/profile/plain_paper_suites.py "$dir" "$@"
 printf '%-6s %7s %14s %18s %18s\n' net nodes "instr/node-step" "LL reads/node-step" "LL writes/node-step"
 for suite in "$dir"/*.json; do
   name=$(basename "$suite" .json)

@@ -10,7 +10,7 @@
 # divided by the 20 steps between them (the convergence to the budget falls in the warm-up and cancels).
 # Prints per step: Ir, D1 misses (reads + writes), LL misses (reads + writes), and their ratios TC-SB / plain_equal;
 # then the inclusive instructions and LL misses per step of the functions a TC-SB step spends them in.
-# Usage: bash scripts/step-profile.sh [build-dir] [width] [compression]   (defaults: build 129 0.3; needs valgrind)
+# Usage: bash scripts/profile/step-profile.sh [build-dir] [width] [compression]   (defaults: build 129 0.3; needs valgrind)
 #   TCSB_PROFILE_SUITE=paper takes the net's settings from suites/paper.json instead (2 solver iterations, evaluation
 #   every 4 steps); TCSB_PROFILE_TCSB='{"restore_order": false}' overrides TC-SB settings (here: Bullet's arrays left
 #   in the order operations leave them, for the profile before restore_order).
@@ -19,10 +19,10 @@
 #   runs) evicts Bullet's data here; a sparse evaluation shows what the step misses without that.
 #   TCSB_PROFILE_WARMUP=w and TCSB_PROFILE_STEPS="a b" replace the 30 warm-up steps and the 10 and 30 timed steps
 #   (the paper suite warms up for 120); TCSB_PROFILE_KEEP=DIR keeps the dumps there as METHOD-short.out and
-#   METHOD-long.out, for scripts/callgrind_functions.py DIR (b - a) (per-function calls and costs per step).
+#   METHOD-long.out, for scripts/profile/callgrind_functions.py DIR (b - a) (per-function calls and costs per step).
 #   TCSB_PROFILE_VALGRIND_ARGS adds options to callgrind's, e.g. --branch-sim=yes (simulated mispredictions).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 build=${1:-build}
 width=${2:-129}
 compression=${3:-0.3}
@@ -76,7 +76,7 @@ fi
 
 python3 - "$dir" "$width" "$compression" "$((long - short))" <<'EOF'
 import collections, json, sys
-sys.path.insert(0, "scripts")
+sys.path.insert(0, "scripts/profile")
 from callgrind_calls import read_dump
 
 d, width, compression = sys.argv[1], sys.argv[2], sys.argv[3]

@@ -1,0 +1,275 @@
+#!/usr/bin/env python3
+"""Renders the paper's Figures 4-6 in results/figures/ from kept runs in results/runs/, as render-results.sh renders
+docs/results.md, and records what they were rendered from in results/figures/manifest.json.
+
+Usage: python3 scripts/render-figures.py [--check]
+  (no option)  render every figure from its newest kept input and write the manifest; needs matplotlib (Debian:
+               python3-matplotlib)
+  --check      only check the manifest against the tree (no matplotlib needed): every figure's input is still the
+               newest kept file that holds its data, the input's, this script's and the PNG's SHA-256 are those
+               recorded. Exit 0 current, 1 stale (each stale figure named on stderr), 2 a figure has no input.
+
+The inputs, each the newest by name (file names start with the date; reverse C collation, as render-results.sh):
+  fig4_operations.png, fig5_step_time.png  results/runs/*.json of the paper suite with a reproduction and the fits
+      of `scaling` (op_ms_vs_nodes, step_ms_vs_nodes): cost of each operation and step time against node count
+  fig6_frames.png              results/runs/frames/*.json: `tcsb frames` of the paper suite, uncalibrated
+  fig6_frames_converged.png    results/runs/frames/*.json: `tcsb frames --suite converged --calibrated`
+Figure 6's rows: plain Bullet (every grid node), TC-SB's surface reconstructed at every grid node, TC-SB's simulated
+links with those an operation is replacing (fading in or out, tethers, links about to go) in red. The figures show
+exactly the numbers in their input; PNG bytes depend on the matplotlib version, so the manifest records them only to
+tell a PNG that was not rendered by this script.
+"""
+import hashlib
+import json
+import os
+import sys
+
+# The repository's root; TCSB_FIGURES_ROOT points the script at a copy (scripts/render-figures-self-test.sh).
+ROOT = os.environ.get("TCSB_FIGURES_ROOT") or os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+RUNS = os.path.join("results", "runs")
+FRAMES = os.path.join(RUNS, "frames")
+FIGURES = os.path.join("results", "figures")
+MANIFEST = os.path.join(FIGURES, "manifest.json")
+SCRIPT = os.path.join("scripts", "render-figures.py")
+
+
+def sha256(path):
+    with open(os.path.join(ROOT, path), "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def newest(directory, accepts):
+    """The newest .json file of `directory` (relative to the root) whose document `accepts`, or None."""
+    full = os.path.join(ROOT, directory)
+    if not os.path.isdir(full):
+        return None
+    for name in sorted((n for n in os.listdir(full) if n.endswith(".json")), reverse=True):
+        with open(os.path.join(full, name)) as f:
+            doc = json.load(f)
+        if accepts(doc):
+            return os.path.join(directory, name)
+    return None
+
+
+def has_paper_fits(doc):
+    scaling = doc.get("scaling") or {}
+    return (doc.get("suite", {}).get("name") == "paper" and "reproduction" in doc
+            and bool(scaling.get("op_ms_vs_nodes")) and bool(scaling.get("step_ms_vs_nodes")))
+
+
+def frames_of(suite, calibrated):
+    return lambda doc: (doc.get("suite", {}).get("name") == suite and bool(doc.get("calibrated")) == calibrated
+                        and bool(doc.get("frames")))
+
+
+# Each figure: its PNG, where its input is chosen from, and how it is drawn (a function of the input and the PNG).
+FIGURE_INPUTS = {
+    "fig4_operations.png": (RUNS, has_paper_fits),
+    "fig5_step_time.png": (RUNS, has_paper_fits),
+    "fig6_frames.png": (FRAMES, frames_of("paper", False)),
+    "fig6_frames_converged.png": (FRAMES, frames_of("converged", True)),
+}
+
+
+def chosen_inputs():
+    """{png: input path or None}: what each figure must be rendered from today."""
+    return {png: newest(directory, accepts) for png, (directory, accepts) in FIGURE_INPUTS.items()}
+
+
+def plot_fits(ax, fits, label_of, scale=1.0):
+    for fit in fits:
+        points = fit.get("points", [])
+        if not points:
+            continue
+        xs = [p["nodes"] for p in points]
+        ys = [p["ms"] * scale for p in points]
+        line = ax.plot(xs, ys, "o", label=label_of(fit))[0]
+        if fit.get("valid") and fit.get("slope_ms_per_node") is not None:
+            lo, hi = min(xs), max(xs)
+            a, b = fit["intercept_ms"] * scale, fit["slope_ms_per_node"] * scale
+            r2 = fit.get("r2")
+            ax.plot([lo, hi], [a + b * lo, a + b * hi], "-", color=line.get_color(), alpha=0.6,
+                    label=f"  fit, R² = {r2:.3f}" if r2 is not None else "  fit")
+
+
+def source_line(result):
+    context = result["context"]
+    return (f"{result['suite']['name']} suite, {context['date_utc']}, {context['cpu_model']}, "
+            f"tcsb {context.get('git_commit', '?')}")
+
+
+def step_label(fit):
+    if fit["method"] != "tcsb":
+        return fit["method"]
+    c = fit.get("compression")
+    return "tcsb NoCompression" if c == 1.0 else f"tcsb {round(100 * c)}%"
+
+
+def draw_fits(plt, result, png, fits, label_of, scale, xlabel, ylabel, title):
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    plot_fits(ax, fits, label_of, scale)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.set_ylim(bottom=0)
+    ax.legend(fontsize=8)
+    fig.text(0.01, 0.01, source_line(result), fontsize=6)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    plt.close(fig)
+
+
+def figure4(plt, result, png):
+    draw_fits(plt, result, png, result["scaling"]["op_ms_vs_nodes"], lambda fit: fit["operation"], 1000.0,
+              "Bullet nodes present (N)", "cost of one operation [µs]",
+              "Figure 4: TreeCut operations against node count")
+
+
+def figure5(plt, result, png):
+    draw_fits(plt, result, png, result["scaling"]["step_ms_vs_nodes"], step_label, 1.0, "simulated nodes (N)",
+              "step time [ms]", "Figure 5: step time against node count")
+
+
+def grid_lines(points, width, height):
+    """Segments along the rows and columns of a row-major grid of [x, y, z] points."""
+    segments = []
+    for r in range(height):
+        row = points[r * width:(r + 1) * width]
+        segments += [(row[c], row[c + 1]) for c in range(width - 1)]
+    for c in range(width):
+        segments += [(points[r * width + c], points[(r + 1) * width + c]) for r in range(height - 1)]
+    return segments
+
+
+def figure6(plt, doc, png):
+    from mpl_toolkits.mplot3d.art3d import Line3DCollection
+
+    def draw(ax, segments, color, width):  # Bullet's y is up; matplotlib's z is: draw (x, z, y)
+        view = [[(p[0], p[2], p[1]) for p in s] for s in segments]
+        ax.add_collection3d(Line3DCollection(view, colors=color, linewidths=width))
+
+    net = doc["net"]
+    w, h = net["width"], net["height"]
+    frames = doc["frames"]
+    every = [p for fr in frames for key in ("plain", "tcsb_surface") for p in fr[key] if None not in p]
+    lo = [min(p[k] for p in every) for k in range(3)]
+    hi = [max(p[k] for p in every) for k in range(3)]
+    rows = ["Bullet SoftBody", "TC-SB surface", "TC-SB links (red: being replaced)"]
+    fig = plt.figure(figsize=(3.2 * len(frames), 3.0 * len(rows)))
+    for col, fr in enumerate(frames):
+        for row in range(len(rows)):
+            ax = fig.add_subplot(len(rows), len(frames), row * len(frames) + col + 1, projection="3d")
+            if row == 0:
+                draw(ax, grid_lines(fr["plain"], w, h), "0.25", 0.3)
+                ax.set_title(f"step {fr['step']} ({fr['step'] * doc['dt']:.2f} s)", fontsize=9)
+            elif row == 1:
+                draw(ax, grid_lines(fr["tcsb_surface"], w, h), "0.25", 0.3)
+            else:
+                nodes = fr["tcsb_nodes"]
+                draw(ax, [(nodes[a], nodes[b]) for a, b, role in fr["tcsb_links"] if role == "steady"], "0.55", 0.3)
+                draw(ax, [(nodes[a], nodes[b]) for a, b, role in fr["tcsb_links"] if role != "steady"], "red", 0.9)
+                ax.text2D(0.02, 0.02, f"N = {len(nodes)}, I = {fr['interpolations']}", transform=ax.transAxes,
+                          fontsize=7)
+            ax.set_xlim(lo[0], hi[0])
+            ax.set_ylim(lo[2], hi[2])
+            ax.set_zlim(lo[1], hi[1])
+            ax.view_init(elev=20, azim=-60)
+            ax.set_axis_off()
+            if col == 0:
+                ax.text2D(-0.05, 0.5, rows[row], transform=ax.transAxes, rotation=90, va="center", fontsize=9)
+    tcsb = "calibrated TC-SB" if doc.get("calibrated") else "TC-SB"
+    solver = doc["suite"]["solver"]["piterations"]
+    source = (f"{doc['suite']['name']} suite ({solver} solver iterations), net {net['name']} ({w} x {h}), {tcsb} at "
+              f"{round(100 * doc['compression'])}% of the nodes, tcsb {doc['context']['git_commit']}")
+    fig.suptitle("Figure 6: Bullet SoftBody and TC-SB at the same steps", fontsize=11)
+    fig.text(0.01, 0.005, source, fontsize=7)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+
+DRAW = {"fig4_operations.png": figure4, "fig5_step_time.png": figure5, "fig6_frames.png": figure6,
+        "fig6_frames_converged.png": figure6}
+
+
+def missing_inputs(inputs):
+    missing = [png for png, path in inputs.items() if path is None]
+    for png in missing:
+        directory = FIGURE_INPUTS[png][0]
+        print(f"render-figures: no kept file in {directory}/ holds the data of {png}", file=sys.stderr)
+    return bool(missing)
+
+
+def render():
+    try:
+        import matplotlib
+    except ImportError:
+        print("render-figures: matplotlib is not installed (Debian: apt-get install python3-matplotlib)",
+              file=sys.stderr)
+        return 2
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    inputs = chosen_inputs()
+    if missing_inputs(inputs):
+        return 2
+    figures = {}
+    for png, path in inputs.items():
+        with open(os.path.join(ROOT, path)) as f:
+            doc = json.load(f)
+        DRAW[png](plt, doc, os.path.join(ROOT, FIGURES, png))
+        figures[png] = {"from": path, "from_sha256": sha256(path), "png_sha256": sha256(os.path.join(FIGURES, png))}
+        print(f"render-figures: {FIGURES}/{png} from {path}", file=sys.stderr)
+    manifest = {"script": SCRIPT, "script_sha256": sha256(SCRIPT), "figures": figures}
+    with open(os.path.join(ROOT, MANIFEST) + ".tmp", "w") as f:
+        json.dump(manifest, f, indent=2)
+        f.write("\n")
+    os.replace(os.path.join(ROOT, MANIFEST) + ".tmp", os.path.join(ROOT, MANIFEST))
+    return 0
+
+
+def stale_reasons(manifest, inputs):
+    """One reason per figure the manifest does not vouch for today (empty: all current)."""
+    reasons = []
+    if manifest.get("script_sha256") != sha256(SCRIPT):
+        reasons.append(f"{SCRIPT} changed since the figures were rendered")
+    recorded = manifest.get("figures", {})
+    for png, path in inputs.items():
+        entry = recorded.get(png)
+        png_path = os.path.join(FIGURES, png)
+        if entry is None:
+            reasons.append(f"{png_path} is not in {MANIFEST}")
+        elif entry.get("from") != path:
+            reasons.append(f"{png_path} was rendered from {entry.get('from')}; the newest input is {path}")
+        elif entry.get("from_sha256") != sha256(path):
+            reasons.append(f"{path} changed since {png_path} was rendered from it")
+        elif not os.path.exists(os.path.join(ROOT, png_path)):
+            reasons.append(f"{png_path} is missing")
+        elif entry.get("png_sha256") != sha256(png_path):
+            reasons.append(f"{png_path} is not the PNG this script rendered")
+    return reasons
+
+
+def check():
+    inputs = chosen_inputs()
+    if missing_inputs(inputs):
+        return 2
+    try:
+        with open(os.path.join(ROOT, MANIFEST)) as f:
+            manifest = json.load(f)
+    except (OSError, ValueError) as e:
+        print(f"render-figures: {MANIFEST}: {e}", file=sys.stderr)
+        return 1
+    reasons = stale_reasons(manifest, inputs)
+    for reason in reasons:
+        print(f"render-figures: stale: {reason}; run: python3 {SCRIPT}", file=sys.stderr)
+    return 1 if reasons else 0
+
+
+if __name__ == "__main__":
+    if sys.argv[1:] == ["--check"]:
+        sys.exit(check())
+    if sys.argv[1:]:
+        print(__doc__, file=sys.stderr)
+        sys.exit(2)
+    sys.exit(render())
