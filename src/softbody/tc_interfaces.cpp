@@ -150,8 +150,7 @@ void TcSoftBody::solve_constraints() {
   if (m_cfg.diterations > 0) {
     const btScalar vcf = m_cfg.kVCF * m_sst.isdt;
     for (int i = 0; i < m_nodes.size(); ++i) m_nodes[i].m_q = m_nodes[i].m_x;
-    for (int iteration = 0; iteration < m_cfg.diterations; ++iteration)
-    {
+    for (int iteration = 0; iteration < m_cfg.diterations; ++iteration) {
       for (int s = 0; s < m_cfg.m_dsequence.size(); ++s) getSolver(m_cfg.m_dsequence[s])(this, 1, 0);
       project_interfaces();
     }

@@ -105,7 +105,9 @@ class Shards : public Cli {
         EXPECT_LE(p, n);
         const std::string key = c["net"].get<std::string>() + "#" + std::to_string(r["repetition"].get<int>());
         const auto [it, fresh] = process_of.try_emplace(key, p);
-        if (!fresh) EXPECT_EQ(it->second, p) << key;
+        if (!fresh) {
+          EXPECT_EQ(it->second, p) << key;
+        }
       }
     }
   }
@@ -185,7 +187,9 @@ TEST_F(Shards, ASplitByRepetitionSpreadsEveryNetsRepetitionsWithAllItsCases) {
         runs.insert(c["label"].get<std::string>() + "#" + std::to_string(r["repetition"].get<int>()));
       }
       const auto [it, fresh] = repetitions_of_net.try_emplace(c["net"].get<std::string>(), reps);
-      if (!fresh) EXPECT_EQ(it->second, reps) << "the cases of " << c["net"] << " differ in repetitions";
+      if (!fresh) {
+        EXPECT_EQ(it->second, reps) << "the cases of " << c["net"] << " differ in repetitions";
+      }
     }
   }
   EXPECT_EQ(runs.size(), 18u);  // 3 nets x (plain, tcsb@1.0, tcsb@0.5) x 2 repetitions, each once

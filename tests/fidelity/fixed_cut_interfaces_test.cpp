@@ -81,15 +81,18 @@ TEST(FixedCutInterfaces, HangingInterfacesErrLessThanFansOnAHalfCoarseNet) {
 TEST(FixedCutInterfaces, DISABLED_Table) {
   const std::vector<std::pair<const char*, Pattern>> patterns = {
       {"a centred square of 14 x 14 blocks",
-       [](int x, int y, int n) { return x >= (n - 14) / 2 && x < (n + 14) / 2 && y >= (n - 14) / 2 && y < (n + 14) / 2; }},
+       [](int x, int y, int n) {
+         return x >= (n - 14) / 2 && x < (n + 14) / 2 && y >= (n - 14) / 2 && y < (n + 14) / 2;
+       }},
       {"the left half", kLeftHalf},
       {"every third block along both axes", [](int x, int y, int) { return x % 3 == 1 && y % 3 == 1; }},
       {"every other block (checker)", [](int x, int y, int) { return (x + y) % 2 == 0; }},
   };
-  std::printf("| net | coarse level-1 blocks | fans % RMS | hanging % RMS |\n|---|---|---|---|\n");
+  std::printf("| net | coarse level-1 blocks | fans %% RMS | hanging %% RMS |\n|---|---|---|---|\n");
   for (const int width : {45, 67})
     for (const auto& [name, pattern] : patterns)
-      std::printf("| %d^2 | %s | %.3f | %.3f |\n", width, name, fixed_cut_error(width, Interfaces::kLinks, pattern, 400),
+      std::printf("| %d^2 | %s | %.3f | %.3f |\n", width, name,
+                  fixed_cut_error(width, Interfaces::kLinks, pattern, 400),
                   fixed_cut_error(width, Interfaces::kHanging, pattern, 400));
 }
 

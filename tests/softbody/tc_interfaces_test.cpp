@@ -67,7 +67,7 @@ TEST(TcInterfaces, EachFanBecomesOneConstraintAndTheFansAreLeftToTheSolverWithou
     EXPECT_EQ(net->lod().node(c.fine[0]).parent, net->lod().node(c.fine[1]).parent);
     // The leaves' midpoint lies one and a half leaf spacings from the block's centre, straight across its side.
     EXPECT_NEAR(c.rest, 1.5 * net->extent() / 16, 1e-5);  // 17 leaves over the extent: 16 spacings
-    EXPECT_EQ(c.stiffness, 1.0f);  // uncalibrated: the solver's
+    EXPECT_EQ(c.stiffness, 1.0f);                         // uncalibrated: the solver's
   }
   EXPECT_TRUE(hung.validate().ok()) << hung.validate().summary();
 
