@@ -1,15 +1,10 @@
-// Hanging interfaces (TcSettings::interfaces = kHanging): each fan becomes one constraint, the constraint solve
-// keeps Bullet's steps, and both ways a body is stepped (solo, and in a world through TcSoftBodySolver) project it.
+// Hanging interfaces (TcSettings::interfaces = kHanging): each fan becomes one constraint, validate() watches it, the
+// projection conserves momentum, and both ways a body is stepped (solo, and in a world through TcSoftBodySolver)
+// project it. (Without interfaces the body steps as Bullet's: tc_softbody_test.cpp.)
 #include <gtest/gtest.h>
 
-#include <BulletCollision/CollisionShapes/btSphereShape.h>
-#include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
-
 #include "scene/scene_world.h"
-#include "softbody/bullet_setup.h"
-#include "softbody/plain_softbody.h"
 #include "softbody/tc_softbody.h"
-#include "softbody/tc_softbody_solver.h"
 #include "test_bodies.h"
 
 namespace tcsb {
@@ -91,23 +86,6 @@ TEST(TcInterfaces, ValidateCatchesABrokenConstraint) {
   const Validation broken = tc.validate();
   ASSERT_FALSE(broken.ok());
   EXPECT_NE(broken.summary().find("Bullet's link solver would solve it"), std::string::npos) << broken.summary();
-}
-
-TEST(TcInterfaces, WithoutInterfacesAHangingBodyStepsAsBulletBitForBit) {
-  // Until the cut holds an interface, solve_constraints() is Bullet's own: the finest cut is the plain body.
-  const auto net = testing::square_net(33);
-  SceneWorld world({});
-  TcSoftBody tc(world.info(), net, testing::test_solver(), hanging());
-  auto plain = make_plain_softbody(world.info(), *net, testing::test_solver());
-  for (int s = 0; s < 100; ++s) {
-    tc.advance_blends();
-    tc.simulate_step(kDt);
-    step_soft_body(*plain, kDt);
-  }
-  for (int i = 0; i < plain->m_nodes.size(); ++i) {
-    ASSERT_EQ(tc.m_nodes[i].m_x, plain->m_nodes[i].m_x) << "node " << i;
-    ASSERT_EQ(tc.m_nodes[i].m_v, plain->m_nodes[i].m_v) << "node " << i;
-  }
 }
 
 TEST(TcInterfaces, TheProjectionConservesLinearMomentum) {
