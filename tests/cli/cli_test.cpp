@@ -231,8 +231,11 @@ TEST_F(Cli, ReproduceInSeveralProcessesMergesThemAndSaysSoInItsIntervals) {
   EXPECT_GT(with_interval, 0);
   // One process (the default) says 1; a count beyond the repetitions is refused before anything runs.
   ASSERT_TRUE(tcsb("reproduce --suite tiny.json --quiet --budget 0 --repetitions 6 --out one.json").exit_code != 2);
-  for (const auto& c : nlohmann::json::parse(read_file(dir_ / "one.json"))["reproduction"]["claims"])
-    if (!c["interval"].is_null()) EXPECT_EQ(c["processes"], 1) << c["id"];
+  const nlohmann::json one = nlohmann::json::parse(read_file(dir_ / "one.json"));  // (a temporary's member would die)
+  for (const auto& c : one["reproduction"]["claims"]) {
+    if (c["interval"].is_null()) continue;
+    EXPECT_EQ(c["processes"], 1) << c["id"];
+  }
   const Outcome bad = tcsb("reproduce --suite tiny.json --quiet --repetitions 2 --processes 3 --out bad.json");
   EXPECT_EQ(bad.exit_code, 2) << bad.err;
   EXPECT_NE(bad.err.find("--processes"), std::string::npos) << bad.err;
@@ -283,8 +286,9 @@ TEST_F(Cli, ReproducePrintsTheProjectsTargetsOnlyWithTargets) {
       const std::string id = t["id"];
       EXPECT_EQ(o.err.find("  " + id + " ") != std::string::npos, with_targets) << id << ": " << o.err;
     }
-    if (!with_targets)
+    if (!with_targets) {
       EXPECT_NE(o.err.find("--targets prints them"), std::string::npos) << "where to find them: " << o.err;
+    }
   }
   // The bare `tcsb` is `tcsb reproduce`, so it takes the flag too.
   const Outcome help = tcsb("--help");
