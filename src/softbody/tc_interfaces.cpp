@@ -7,6 +7,7 @@
 // pull, as a hanging node of an adaptive mesh is held to the point its coarse neighbours give it.
 #include <BulletSoftBody/btSoftBodyInternals.h>
 
+#include "softbody/fan_rule.h"
 #include "softbody/tc_softbody.h"
 
 namespace tcsb {
@@ -20,16 +21,14 @@ void TcSoftBody::pair_into_interface(int link) {
   const TreeId coarse = a.level > b.level ? added.a : added.b;
   const TreeId fine = added.other(coarse);
   const LodNode& fine_node = a.level > b.level ? b : a;
-  // The other link of the fan: from the same coarse node to the fine node's sibling (the two children of the block
-  // beside the coarse one that face it), made by the same operation in the same role.
+  // The other link of the fan: from the same coarse node to the fine node's sibling (fan_rule.h).
   for (const std::int32_t li : incidence_[static_cast<std::size_t>(coarse)]) {
     if (li == link) continue;
     const CutLink& m = link_meta_[static_cast<std::size_t>(li)];
     if (m.interface >= 0 || m.role != added.role || m.op != added.op) continue;
-    const TreeId sibling = m.other(coarse);
     ++work_.tree_records;  // the candidate's LOD node
-    const LodNode& s = tree().node(sibling);
-    if (s.level != fine_node.level || s.parent != fine_node.parent) continue;
+    if (!forms_fan(tree(), coarse, added, m)) continue;
+    const TreeId sibling = m.other(coarse);
     const btVector3 midpoint = (record(fine).rest_position() + record(sibling).rest_position()) * btScalar(0.5);
     const auto index = static_cast<std::int32_t>(interfaces_.size());
     interfaces_.push_back({.coarse = coarse,

@@ -8,6 +8,7 @@
 
 #include "net/cut_adjacency.h"
 #include "softbody/dbvt_local.h"
+#include "softbody/fan_rule.h"
 #include "softbody/tc_softbody.h"
 
 namespace tcsb {
@@ -218,13 +219,9 @@ void TcSoftBody::validate_interfaces(const std::function<void(const std::string&
     const int la = lod.node(m.a).level, lb = lod.node(m.b).level;
     if (la == lb) continue;
     const TreeId coarse = la > lb ? m.a : m.b;
-    const TreeId fine = m.other(coarse);
     for (const std::int32_t other : incidence_[static_cast<std::size_t>(coarse)]) {
       const CutLink& o = link_meta_[static_cast<std::size_t>(other)];
-      const TreeId sibling = o.other(coarse);
-      if (static_cast<std::size_t>(other) != li && o.interface < 0 && o.role == m.role && o.op == m.op &&
-          sibling != fine && lod.node(sibling).parent == lod.node(fine).parent &&
-          lod.node(sibling).level == lod.node(fine).level)
+      if (static_cast<std::size_t>(other) != li && o.interface < 0 && forms_fan(lod, coarse, m, o))
         fail("link " + std::to_string(li) + ": a fan left unpaired with link " + std::to_string(other));
     }
   }
