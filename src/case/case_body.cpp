@@ -103,7 +103,8 @@ std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key,
       const int target = target_node_count(*net, key);
       auto body = std::make_unique<TcSoftBody>(world.info(), net, suite.solver, suite.tcsb);
       std::unique_ptr<Controller> controller;
-      if (target < static_cast<int>(net->node_count())) controller = make_controller(suite.feedback, target, seed);
+      if (target < static_cast<int>(net->node_count()))
+        controller = make_controller(suite.feedback, target, seed, suite_spectator(suite));
       return std::make_unique<TreeCutBody>(world, std::move(body), std::move(controller));
     }
   }

@@ -1,14 +1,21 @@
 #include "feedback/controller.h"
 
+#include <stdexcept>
+
 #include "feedback/random_controller.h"
 #include "feedback/saliency_controller.h"
 
 namespace tcsb {
 
-std::unique_ptr<Controller> make_controller(const FeedbackSettings& settings, int target_nodes, std::uint64_t seed) {
+std::unique_ptr<Controller> make_controller(const FeedbackSettings& settings, int target_nodes, std::uint64_t seed,
+                                            const std::optional<Spectator>& spectator) {
+  if (settings.view && settings.policy == PolicyKind::kSaliency && !spectator)
+    throw std::invalid_argument("feedback.view: the view terms need a camera");
   switch (settings.policy) {
     case PolicyKind::kRandom: return std::make_unique<RandomController>(target_nodes, settings.max_ops_per_step, seed);
-    case PolicyKind::kSaliency: return std::make_unique<SaliencyController>(settings, target_nodes);
+    case PolicyKind::kSaliency:
+      return std::make_unique<SaliencyController>(settings, target_nodes,
+                                                  settings.view ? spectator : std::optional<Spectator>{});
   }
   return nullptr;
 }

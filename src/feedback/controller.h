@@ -3,7 +3,9 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 
+#include "feedback/camera.h"
 #include "feedback/feedback_settings.h"
 #include "softbody/tc_softbody.h"
 
@@ -34,6 +36,9 @@ class Controller {
 };
 
 /// The controller a suite asks for, holding the body near `target_nodes`. `seed` makes random choices repeatable.
-std::unique_ptr<Controller> make_controller(const FeedbackSettings& settings, int target_nodes, std::uint64_t seed);
+/// `spectator`: whom the view terms (settings.view) see through; required with them, ignored without. Throws
+/// std::invalid_argument when settings.view is on without a spectator.
+std::unique_ptr<Controller> make_controller(const FeedbackSettings& settings, int target_nodes, std::uint64_t seed,
+                                            const std::optional<Spectator>& spectator = std::nullopt);
 
 }  // namespace tcsb

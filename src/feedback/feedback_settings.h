@@ -48,6 +48,19 @@ struct FeedbackSettings {
   /// to where the cloth meets the world — cloth resting on a collider has no relative motion, and the motion terms
   /// alone coarsen it. In [0, 1]; 0 disables it (and its O(contacts) per snapshot).
   double contact_saliency = 0.0;
+  /// The BSWDF's view terms (the paper's omega_C and d_C, eqs. 1-2): motion is measured as the spectator sees it,
+  /// through the scene's camera — a node's motion relative to its cut neighbours projected onto the image, in degrees
+  /// of visual angle per second; the global-motion cap from the body's projected motion (view_motion_scale); nodes
+  /// out of view get the lowest saliency. Needs a camera (the suite's scene.camera). Off: the paper's motion-only
+  /// prototype, bit for bit.
+  bool view = false;
+  /// With view: the cap on saliency is 1 / (1 + omega / view_motion_scale), omega the body's centre of mass's speed
+  /// across the image in degrees of visual angle per second.
+  double view_motion_scale = 20.0;
+  /// With view: the apparent size, pixels, at which a simulated node's block counts as fully visible detail. A block
+  /// that looks smaller weighs in proportion (refining by visibility and apparent size, as view-dependent adaptive
+  /// cloth does: Koh, Narain and O'Brien 2014), so detail a spectator could not resolve is the first to go.
+  double view_detail_px = 8.0;
 };
 
 /// Name used in suites and reports: "saliency" or "random".

@@ -26,8 +26,21 @@ void neighbour_sums(const CutSnapshot& snapshot, NeighbourSums& out) {
   }
 }
 
+namespace {
+Eigen::Vector3d vec(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
+
+/// How much of a detail the spectator sees in simulated node i: its block's side (leaves x spacing) on the image,
+/// over detail_px, capped at 1.
+double apparent_detail(const CutSnapshot& snapshot, std::size_t i, const ScreenProjection& view, double leaf_spacing,
+                       double detail_px) {
+  const LodNode& node = snapshot.cut.tree->node(snapshot.cut.tree_of[i]);
+  const double side = leaf_spacing * std::max(node.leaf_x1 - node.leaf_x0, node.leaf_y1 - node.leaf_y0);
+  return std::min(1.0, view.apparent_size_px(vec(snapshot.position[i]), side) / detail_px);
+}
+}  // namespace
+
 void local_motion(const CutSnapshot& snapshot, const NeighbourSums& sums, std::size_t begin, std::size_t end,
-                  std::span<float> out) {
+                  std::span<float> out, const ScreenProjection* view) {
   for (std::size_t i = begin; i < end; ++i) {
     const int count = sums.count[i];
     if (count == 0 || !snapshot.cut.committed(snapshot.cut.tree_of[i])) {
@@ -37,6 +50,13 @@ void local_motion(const CutSnapshot& snapshot, const NeighbourSums& sums, std::s
     const auto& v = snapshot.velocity[i];
     const auto& s = sums.sum[i];
     const float dx = v[0] - s[0] / count, dy = v[1] - s[1] / count, dz = v[2] - s[2] / count;
+    if (view) {
+      const Eigen::Vector3d x = vec(snapshot.position[i]);
+      out[i] = view->project(x).in_view
+                   ? static_cast<float>(view->pixel_speed(x, {dx, dy, dz}) * view->degrees_per_pixel())
+                   : 0.0f;
+      continue;
+    }
     out[i] = std::sqrt(dx * dx + dy * dy + dz * dz);
   }
 }
@@ -53,6 +73,22 @@ double global_motion(const CutSnapshot& snapshot) {
   }
   if (mass <= 0) return 0;
   return std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / mass;
+}
+
+double projected_global_motion(const CutSnapshot& snapshot, const ScreenProjection& view) {
+  const LodTree& tree = *snapshot.cut.tree;
+  Eigen::Vector3d x = Eigen::Vector3d::Zero(), p = Eigen::Vector3d::Zero();
+  double mass = 0;
+  for (std::size_t i = 0; i < snapshot.size(); ++i) {
+    const TreeId id = snapshot.cut.tree_of[i];
+    if (!snapshot.cut.committed(id)) continue;
+    const double m = tree.node(id).mass;
+    x += m * vec(snapshot.position[i]);
+    p += m * vec(snapshot.velocity[i]);
+    mass += m;
+  }
+  if (mass <= 0) return 0;
+  return view.pixel_speed(x / mass, p / mass) * view.degrees_per_pixel();
 }
 
 double global_motion_cap(double speed, double scale) { return 1.0 / (1.0 + speed / scale); }
@@ -82,25 +118,36 @@ double lambert_factor(const CutSnapshot& snapshot, std::size_t i, const std::arr
   return std::max(0.0, (n[0] * light[0] + n[1] * light[1] + n[2] * light[2]) / (len * llen));
 }
 
-void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings, std::span<float> motion) {
+void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings, std::span<float> motion,
+                     const ScreenProjection* view) {
   float largest = 0;
   for (float m : motion) largest = std::max(largest, m);
-  const double cap = global_motion_cap(global_motion(snapshot), settings.global_motion_scale);
+  const double cap = view ? global_motion_cap(projected_global_motion(snapshot, *view), settings.view_motion_scale)
+                          : global_motion_cap(global_motion(snapshot), settings.global_motion_scale);
+  // The grid's spacing at rest, from the first two leaves (neighbours along a row).
+  const LodTree& tree = *snapshot.cut.tree;
+  const double leaf_spacing = view && tree.leaf_count() > 1 ? (tree.rest(1) - tree.rest(0)).norm() : 0.0;
   for (std::size_t i = 0; i < motion.size(); ++i) {
     double s = largest > 0 ? motion[i] / largest : 0.0;
     s = std::min(s, cap);
+    // Seen, a block is worth its apparent size; its motion ranks it among blocks that look alike, so a quiet block
+    // in view still outranks any block out of view, at rest too.
+    if (view) s = apparent_detail(snapshot, i, *view, leaf_spacing, settings.view_detail_px) * 0.5 * (1.0 + s);
     if (settings.illumination && s > 0) s *= lambert_factor(snapshot, i, settings.light_direction);
     if (!snapshot.contact.empty() && snapshot.contact[i]) s = std::max(s, settings.contact_saliency);
+    // What the spectator cannot see gets the lowest saliency, contact included.
+    if (view && !view->project(vec(snapshot.position[i])).in_view) s = 0;
     motion[i] = static_cast<float>(s);
   }
 }
 
-std::vector<float> compute_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings) {
+std::vector<float> compute_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings,
+                                    const ScreenProjection* view) {
   std::vector<float> s(snapshot.size());
   NeighbourSums sums;
   neighbour_sums(snapshot, sums);
-  local_motion(snapshot, sums, 0, snapshot.size(), s);
-  finish_saliency(snapshot, settings, s);
+  local_motion(snapshot, sums, 0, snapshot.size(), s, view);
+  finish_saliency(snapshot, settings, s, view);
   return s;
 }
 

@@ -9,6 +9,10 @@
 //  * Illumination (optional): Lambertian, o is a product with max(0, n . l), n the cloth normal at the node.
 //  * Contact (optional, not in the paper): a node in contact with a rigid collider is at least contact_saliency
 //    salient, after the cap and the light.
+//  * View (optional, feedback.view): with a spectator (a ScreenProjection), local and global motion are measured on
+//    the image — the relative velocity's projection, in degrees of visual angle per second — so motion far away or
+//    along the line of sight counts little, and a node out of view gets 0 whatever else it has (docs/design.md,
+//    "The spectator").
 #pragma once
 
 #include <array>
@@ -19,6 +23,7 @@
 
 #include "feedback/cut_snapshot.h"
 #include "feedback/feedback_settings.h"
+#include "feedback/screen_projection.h"
 
 namespace tcsb {
 
@@ -31,12 +36,18 @@ struct NeighbourSums {
 void neighbour_sums(const CutSnapshot& snapshot, NeighbourSums& out);
 
 /// Raw local motion |v_i - mean neighbour v| (m/s) for simulated nodes [begin, end); nodes that are not in the
-/// committed cut, or have no neighbour, get 0. Ranges are independent: any split over threads gives the same numbers.
+/// committed cut, or have no neighbour, get 0. With a `view` (snapshot positions required) the relative velocity's
+/// speed across the image instead, degrees per second, and 0 for a node out of view. Ranges are independent: any
+/// split over threads gives the same numbers.
 void local_motion(const CutSnapshot& snapshot, const NeighbourSums& sums, std::size_t begin, std::size_t end,
-                  std::span<float> out);
+                  std::span<float> out, const ScreenProjection* view = nullptr);
 
 /// Speed of the body's centre of mass, m/s (leaf masses from the tree; committed nodes only).
 double global_motion(const CutSnapshot& snapshot);
+
+/// Speed of the body's centre of mass across the image, degrees per second (requires snapshot positions); 0 when
+/// it is behind the camera.
+double projected_global_motion(const CutSnapshot& snapshot, const ScreenProjection& view);
 
 /// Cap on saliency for a body moving at `speed`: 1 / (1 + speed / scale).
 double global_motion_cap(double speed, double scale);
@@ -45,11 +56,14 @@ double global_motion_cap(double speed, double scale);
 double lambert_factor(const CutSnapshot& snapshot, std::size_t i, const std::array<double, 3>& light);
 
 /// Turns raw local motion into saliency in place: divide by the largest value, clamp to the global cap, apply the
-/// illumination factor when enabled, raise nodes in contact to the contact saliency (when the snapshot has contacts).
-/// Deterministic for a given snapshot.
-void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings, std::span<float> motion);
+/// illumination factor when enabled, raise nodes in contact to the contact saliency (when the snapshot has contacts);
+/// with a `view`, the cap from the projected global motion and 0 for every node out of view. Deterministic for a
+/// given snapshot.
+void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings, std::span<float> motion,
+                     const ScreenProjection* view = nullptr);
 
 /// All of the above on one thread: saliency of every simulated node of the snapshot.
-std::vector<float> compute_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings);
+std::vector<float> compute_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings,
+                                    const ScreenProjection* view = nullptr);
 
 }  // namespace tcsb

@@ -13,8 +13,9 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 }  // namespace
 
-SaliencyController::SaliencyController(const FeedbackSettings& settings, int node_budget)
-    : settings_(settings), node_budget_(node_budget), time_budget_(node_budget) {
+SaliencyController::SaliencyController(const FeedbackSettings& settings, int node_budget,
+                                       std::optional<Spectator> spectator)
+    : settings_(settings), spectator_(std::move(spectator)), node_budget_(node_budget), time_budget_(node_budget) {
   if (settings_.parallel) workers_ = std::make_unique<FeedbackWorkers>(std::max(1, settings_.threads));
 }
 
@@ -29,6 +30,10 @@ void SaliencyController::evaluate() {
   const std::size_t n = snapshot_.size();
   saliency_.resize(n);
   neighbour_sums(snapshot_, sums_);
+  // The camera where it stood at the snapshot's boundary.
+  std::optional<ScreenProjection> view;
+  if (spectator_) view.emplace(spectator_->camera, static_cast<double>(snapshot_.step) * spectator_->dt);
+  const ScreenProjection* seen = view ? &*view : nullptr;
   const int threads = workers_ ? workers_->threads() : 1;
   if (threads > 1) {
     // Chunks write disjoint ranges; the normalisation and ranking run after the join: same numbers for any split.
@@ -36,12 +41,12 @@ void SaliencyController::evaluate() {
     workers_->parallel_for(chunks, [&](int c) {
       const std::size_t begin = n * static_cast<std::size_t>(c) / static_cast<std::size_t>(chunks);
       const std::size_t end = n * static_cast<std::size_t>(c + 1) / static_cast<std::size_t>(chunks);
-      local_motion(snapshot_, sums_, begin, end, saliency_);
+      local_motion(snapshot_, sums_, begin, end, saliency_, seen);
     });
   } else {
-    local_motion(snapshot_, sums_, 0, n, saliency_);
+    local_motion(snapshot_, sums_, 0, n, saliency_, seen);
   }
-  finish_saliency(snapshot_, settings_, saliency_);
+  finish_saliency(snapshot_, settings_, saliency_, seen);
   JumpCharge charge;
   if (settings_.popping_charge > 0) {
     cut_neighbours(snapshot_.cut, neighbours_);
@@ -69,7 +74,8 @@ void SaliencyController::before_step(TcSoftBody& body) {
     if (settings_.interface_charge > 0 && settings_.interface_tension > 0 && interface_weights_.empty())
       interface_weights_ = interface_weights(body.tree(), settings_.interface_tension);  // once: O(N)
     budget_level_ = budget_level(body.tree(), budget());  // the budget may move (max_step_ms)
-    take_snapshot(body, cut_view(body), settings_.illumination || settings_.popping_charge > 0, boundary_, snapshot_,
+    const bool positions = settings_.illumination || settings_.popping_charge > 0 || spectator_.has_value();
+    take_snapshot(body, cut_view(body), positions, boundary_, snapshot_,
                   settings_.contact_saliency > 0 ? &contacts_ : nullptr);
     if (workers_) {
       workers_->post([this] { evaluate(); });

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "feedback/budget_policy.h"
@@ -25,7 +26,9 @@ namespace tcsb {
 class SaliencyController final : public Controller {
  public:
   /// `node_budget`: the maximal number of simulated (Bullet) nodes, held at every step once first reached.
-  SaliencyController(const FeedbackSettings& settings, int node_budget);
+  /// `spectator`: with one, saliency takes the BSWDF's view terms through its camera (settings.view).
+  SaliencyController(const FeedbackSettings& settings, int node_budget,
+                     std::optional<Spectator> spectator = std::nullopt);
   ~SaliencyController() override;
 
   void before_step(TcSoftBody& body) override;
@@ -44,6 +47,7 @@ class SaliencyController final : public Controller {
   void adapt_time_budget();
 
   FeedbackSettings settings_;
+  std::optional<Spectator> spectator_;
   int node_budget_;
   int time_budget_;  // adapted when settings_.max_step_ms > 0
   BudgetState budget_state_;

@@ -5,9 +5,11 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "analysis/statistics.h"
 #include "suite/fidelity_plan.h"
 
 namespace tcsb {
@@ -18,6 +20,23 @@ struct MetricSummary {
   double mean = 0;
   double p95 = 0;
   double max = 0;
+};
+
+/// The count, mean, p95 and maximum of a per-step series (0 steps: all 0).
+inline MetricSummary summarize_metric(std::span<const double> values) {
+  const Summary s = summarize(values);
+  return {s.count, s.mean, s.p95, s.max};
+}
+
+/// Error as the spectator sees it, in a scene with a camera (fidelity/screen_error.h): per measured step the mean,
+/// p95 and maximum distance on the image, pixels, between the reference's and the subject's grid points that the
+/// reference shows in view; each summarised over the steps that show any.
+struct ScreenMetrics {
+  MetricSummary mean_px;
+  MetricSummary p95_px;
+  MetricSummary max_px;
+  double p95_over_1px_share = 0;  ///< share of those steps whose p95 exceeds one pixel
+  double points_in_view = 0;      ///< grid points in view, mean over the measured steps
 };
 
 /// One subject on one net.
@@ -33,20 +52,21 @@ struct FidelityCase {
   std::string diverged_reason;
   // Metrics, each per step in percent: of the net's extent (Net::extent()) for distances, of the reference's
   // initial energy (M g h, y from 0) for the drift. Summarised over the measured steps, popping over all steps.
-  MetricSummary rms_pct;              ///< RMS distance of the reconstructed grid nodes from the reference's
-  MetricSummary max_pct;              ///< largest distance of any grid node
-  MetricSummary weighted_rms_pct;     ///< RMS weighted by the reference's saliency at that step
-  MetricSummary popping_pct;          ///< largest jump of any reconstructed node across a step boundary's operations
-                                      ///< (0 where none happened); over every step, warm-up included
-  MetricSummary energy_drift_pct;     ///< 100 |E - E_ref| / |E_ref(0)| (energy_drift_pct())
-  double step_ms = 0;                 ///< mean wall time of the subject's own steps (blends, feedback, operations,
-                                      ///< switch, Bullet) over the measured steps, run on its own
-  double reference_step_ms = 0;       ///< mean wall time of the reference's steps in the same pass (recording run)
-  std::optional<double> switch_ms;    ///< switch_body: building the coarse body, moving the state, freeing the fine
-  std::optional<int> switch_step;     ///< switch_body: the step at whose boundary it switched
-  std::optional<int> converged_step;  ///< TC-SB under a budget: the step at whose boundary it first fitted it
-  std::string final_state_hash;       ///< state_hash of the subject's body at the end (TC-SB: equals the timed
-                                      ///< case's hash at the same target: the pass measured the timed trajectory)
+  MetricSummary rms_pct;                ///< RMS distance of the reconstructed grid nodes from the reference's
+  MetricSummary max_pct;                ///< largest distance of any grid node
+  MetricSummary weighted_rms_pct;       ///< RMS weighted by the reference's saliency at that step
+  MetricSummary popping_pct;            ///< largest jump of any reconstructed node across a step boundary's operations
+                                        ///< (0 where none happened); over every step, warm-up included
+  MetricSummary energy_drift_pct;       ///< 100 |E - E_ref| / |E_ref(0)| (energy_drift_pct())
+  std::optional<ScreenMetrics> screen;  ///< in a scene with a camera
+  double step_ms = 0;                   ///< mean wall time of the subject's own steps (blends, feedback, operations,
+                                        ///< switch, Bullet) over the measured steps, run on its own
+  double reference_step_ms = 0;         ///< mean wall time of the reference's steps in the same pass (recording run)
+  std::optional<double> switch_ms;      ///< switch_body: building the coarse body, moving the state, freeing the fine
+  std::optional<int> switch_step;       ///< switch_body: the step at whose boundary it switched
+  std::optional<int> converged_step;    ///< TC-SB under a budget: the step at whose boundary it first fitted it
+  std::string final_state_hash;         ///< state_hash of the subject's body at the end (TC-SB: equals the timed
+                                        ///< case's hash at the same target: the pass measured the timed trajectory)
 };
 
 /// The interpolation floor of one budget on one net (fidelity/fidelity_floors.h).
@@ -62,6 +82,7 @@ struct FidelityFloors {
   std::size_t net = 0;  ///< index into Suite::nets
   std::string net_name;
   MetricSummary noise_rms_pct;  ///< RMS of the reference started perturbed (kNoiseFloorPerturbation) against itself
+  std::optional<ScreenMetrics> noise_screen;      ///< the same perturbed reference's screen error, with a camera
   std::vector<InterpolationFloor> interpolation;  ///< one per distinct budget of the plan, ascending
 };
 

@@ -15,6 +15,7 @@
 #include "fidelity/fidelity_floors.h"
 #include "fidelity/fidelity_subject.h"
 #include "fidelity/reconstruction.h"
+#include "fidelity/screen_error.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/divergence.h"
 #include "softbody/plain_softbody.h"
@@ -24,16 +25,17 @@ namespace tcsb {
 
 namespace {
 
-MetricSummary summarize_metric(const std::vector<double>& values) {
-  const Summary s = summarize(values);
-  return {s.count, s.mean, s.p95, s.max};
-}
-
 /// Bodies are stepped in blocks of this many steps, round-robin: the reference's block first (recorded), then each
 /// subject's same block. Long enough that a body's first, cache-cold step after the others ran is 1 step in 20;
 /// short enough that machine drift over a pass (other processes, frequency) hits every body alike — the time ratios
 /// are interleaved, like the repetitions of the timed cases.
 constexpr int kBlockSteps = 20;
+
+/// The scene's camera as it saw the end of step `step` (at (step + 1) x dt), when the scene has one.
+std::optional<ScreenProjection> camera_view(const Suite& suite, int step) {
+  if (!suite.scene.camera) return std::nullopt;
+  return ScreenProjection(*suite.scene.camera, static_cast<double>(step + 1) * suite.world.dt);
+}
 
 /// The reference's trajectory over one block of steps. Positions are Bullet's floats, kept as floats.
 struct ReferenceBlock {
@@ -99,8 +101,11 @@ class Reference {
       block.energy[f] = mechanical_energy(net_->masses(), x_, v_, suite_.world.gravity);
       const bool contact = suite_.feedback.contact_saliency > 0;
       if (contact) nodes_in_contact(*body_, finest_.view().tree_of, contacts_);
-      take_snapshot(*body_, finest_.view(), suite_.feedback.illumination, s, snapshot_, contact ? &contacts_ : nullptr);
-      const std::vector<float> saliency = compute_saliency(snapshot_, suite_.feedback);
+      // The weights of the weighted error are the saliency the suite's TC-SB uses: seen by its spectator, if any.
+      const std::optional<ScreenProjection> view = suite_.feedback.view ? camera_view(suite_, s) : std::nullopt;
+      take_snapshot(*body_, finest_.view(), suite_.feedback.illumination || view, s, snapshot_,
+                    contact ? &contacts_ : nullptr);
+      const std::vector<float> saliency = compute_saliency(snapshot_, suite_.feedback, view ? &*view : nullptr);
       std::copy(saliency.begin(), saliency.end(), block.saliency.begin() + static_cast<std::ptrdiff_t>(f * n));
     }
     return true;
@@ -188,6 +193,8 @@ class Track {
       rms_.push_back(to_pct * e.rms);
       max_.push_back(to_pct * e.max);
       weighted_.push_back(to_pct * e.weighted_rms);
+      if (const std::optional<ScreenProjection> view = camera_view(suite_, s))
+        screen_.add(screen_error(*view, surface_, reference_x_, scratch_));
       const double drift = energy_drift_pct(body_->energy(suite_.world.gravity),
                                             reference.energy[static_cast<std::size_t>(s - first)], reference_energy0);
       if (std::isfinite(drift)) drift_.push_back(drift);  // undefined only for an initial energy of 0 (net at y = 0)
@@ -208,6 +215,7 @@ class Track {
     result.weighted_rms_pct = summarize_metric(weighted_);
     result.popping_pct = summarize_metric(popping_);
     result.energy_drift_pct = summarize_metric(drift_);
+    if (suite_.scene.camera) result.screen = screen_.finish();
     result.step_ms = mean(step_ms_);
     result.reference_step_ms = reference_ms;
     result.mean_nodes = mean(nodes_);
@@ -227,6 +235,8 @@ class Track {
   std::unique_ptr<FidelitySubject> body_;
   std::vector<Eigen::Vector3d> surface_, after_, reference_x_;  // surface_: after the last step ("before" a boundary)
   std::vector<double> rms_, max_, weighted_, popping_, drift_, step_ms_, nodes_;
+  ScreenErrorSeries screen_;
+  std::vector<double> scratch_;
 };
 
 /// Seed of the noise floor's perturbation on net 0 (net k uses this + k): any fixed value serves, it only has to be
@@ -269,6 +279,7 @@ class FloorTrack {
         if (divergence_now(*body_, net_->extent())) {
           perturbed_alive_ = false;  // no floor rather than one over part of the steps
           noise_.clear();
+          noise_screen_ = {};
         }
       }
       if (s < suite_.warmup_steps) continue;
@@ -276,6 +287,8 @@ class FloorTrack {
       if (perturbed_alive_) {
         copy_positions(*body_, x_);
         noise_.push_back(to_pct * surface_error(x_, reference_x_).rms);
+        if (const std::optional<ScreenProjection> view = camera_view(suite_, s))
+          noise_screen_.add(screen_error(*view, x_, reference_x_, scratch_));
       }
       for (std::size_t k = 0; k < grids_.size(); ++k) {
         resample_through(fine, reference_x_, grids_[k], coarse_, x_);
@@ -286,6 +299,7 @@ class FloorTrack {
 
   FidelityFloors finish() {
     result.noise_rms_pct = summarize_metric(noise_);
+    if (suite_.scene.camera && perturbed_alive_) result.noise_screen = noise_screen_.finish();
     for (std::size_t k = 0; k < grids_.size(); ++k)
       result.interpolation[k].rms_pct = summarize_metric(interpolation_[k]);
     return result;
@@ -303,6 +317,8 @@ class FloorTrack {
   std::vector<GridSize> grids_;
   std::vector<Eigen::Vector3d> reference_x_, x_, coarse_;
   std::vector<double> noise_;
+  ScreenErrorSeries noise_screen_;
+  std::vector<double> scratch_;
   std::vector<std::vector<double>> interpolation_;
 };
 

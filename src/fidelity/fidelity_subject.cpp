@@ -238,20 +238,25 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
     case FidelityMethod::kTcsbRigid:
     case FidelityMethod::kTcsbNoGeomorph:
     case FidelityMethod::kTcsbCalibrated:
-    case FidelityMethod::kTcsbCalibratedFans: {
+    case FidelityMethod::kTcsbCalibratedFans:
+    case FidelityMethod::kTcsbMotionOnly:
+    case FidelityMethod::kTcsbCalibratedMotionOnly: {
       TcSettings tc = suite.tcsb;
       if (spec.method == FidelityMethod::kTcsbRigid) tc.placement = Placement::kRigid;
-      if (spec.method == FidelityMethod::kTcsbCalibrated || spec.method == FidelityMethod::kTcsbCalibratedFans) {
+      if (spec.method == FidelityMethod::kTcsbCalibrated || spec.method == FidelityMethod::kTcsbCalibratedFans ||
+          spec.method == FidelityMethod::kTcsbCalibratedMotionOnly) {
         if (!suite.calibration) throw std::invalid_argument("tcsb_calibrated: the suite has no calibration");
         tc.level_stiffness = suite.calibration->level_stiffness();
       }
       if (spec.method == FidelityMethod::kTcsbCalibratedFans) tc.interfaces = Interfaces::kLinks;
       FeedbackSettings feedback = suite.feedback;
       if (spec.method == FidelityMethod::kTcsbRandom) feedback.policy = PolicyKind::kRandom;
+      if (spec.method == FidelityMethod::kTcsbMotionOnly || spec.method == FidelityMethod::kTcsbCalibratedMotionOnly)
+        feedback.view = false;
       const bool compressed = budget < static_cast<int>(net->node_count());
       auto body = std::make_unique<TcSoftBody>(world.info(), std::move(net), suite.solver, tc);
       std::unique_ptr<Controller> controller;
-      if (compressed) controller = make_controller(feedback, budget, seed);
+      if (compressed) controller = make_controller(feedback, budget, seed, suite_spectator(suite));
       const bool morph = spec.method != FidelityMethod::kTcsbNoGeomorph;
       return std::make_unique<TreeCutSubject>(world, std::move(body), std::move(controller), budget, morph);
     }

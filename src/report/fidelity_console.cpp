@@ -76,6 +76,36 @@ void print_floors(const std::vector<FidelityFloors>& floors, const std::vector<d
   t.print(out);
 }
 
+/// Per net and subject, the error as the spectator sees it, beside the net's noise floor in pixels (a scene with a
+/// camera only).
+void print_screen(const FidelityResult& fidelity, std::ostream& out) {
+  TextTable t({{"net", Align::kLeft},
+               {"method", Align::kLeft},
+               {"compression", Align::kLeft},
+               {"mean px"},
+               {"p95 px"},
+               {"max px"},
+               {"steps p95>1px"},
+               {"in view"},
+               {"status", Align::kLeft}});
+  const auto add = [&t](const std::string& net, const std::string& method, const std::string& compression,
+                        const ScreenMetrics& s, const std::string& status) {
+    t.add_row({net, method, compression, fixed(value(s.mean_px, s.mean_px.mean), 3),
+               fixed(value(s.p95_px, s.p95_px.mean), 3), fixed(value(s.max_px, s.max_px.max), 2),
+               fixed(100.0 * s.p95_over_1px_share, 1) + "%", fixed(s.points_in_view, 0), status});
+  };
+  for (const FidelityFloors& f : fidelity.floors)
+    if (f.noise_screen) add(f.net_name, "noise floor", "", *f.noise_screen, "");
+  for (const FidelityCase& c : fidelity.cases)
+    if (c.screen)
+      add(c.net_name, fidelity_method_name(c.subject.method), compression_label(c.subject.compression), *c.screen,
+          c.status);
+  out << "Error in pixels as the camera sees it (per step over the grid points in view: mean, p95, max; then mean "
+         "over steps, max for max; steps p95>1px: share of steps whose p95 exceeds one pixel; in view: grid points "
+         "per step):\n";
+  t.print(out);
+}
+
 void print_sweep(const char* title, const std::vector<ParetoPoint>& sweep, const MaxCompression& m, std::ostream& out) {
   TextTable t({{"compression", Align::kLeft},
                {"N"},
@@ -113,6 +143,10 @@ void print_fidelity_report(const RunResult& result, std::ostream& out) {
   out << '\n';
   if (!result.fidelity->floors.empty()) {
     print_floors(result.fidelity->floors, result.suite.compression, out);
+    out << '\n';
+  }
+  if (result.suite.scene.camera) {
+    print_screen(*result.fidelity, out);
     out << '\n';
   }
   const double threshold = result.fidelity->rms_threshold_pct;

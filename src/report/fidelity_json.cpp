@@ -15,6 +15,14 @@ ojson metric_json(const MetricSummary& s) {
   return {{"mean", json_number(s.mean)}, {"p95", json_number(s.p95)}, {"max", json_number(s.max)}};
 }
 
+ojson screen_json(const ScreenMetrics& s) {
+  return {{"mean_px", metric_json(s.mean_px)},
+          {"p95_px", metric_json(s.p95_px)},
+          {"max_px", metric_json(s.max_px)},
+          {"p95_over_1px_share", json_number(s.p95_over_1px_share)},
+          {"points_in_view", json_number(s.points_in_view)}};
+}
+
 ojson claim_json(const Claim& c) {
   return {{"id", c.id},
           {"description", c.description},
@@ -44,28 +52,31 @@ ojson row_json(const FidelityRow& r) {
 }
 
 ojson case_json(const FidelityCase& c) {
-  return {{"net", c.net_name},
-          {"method", fidelity_method_name(c.subject.method)},
-          {"compression", json_number(c.subject.compression)},
-          {"target_nodes", c.target_nodes},
-          {"N", json_number(c.mean_nodes)},
-          {"grid", c.grid.empty() ? ojson(nullptr) : ojson(c.grid)},
-          {"status", c.status},
-          {"diverged_step", json_integer(c.diverged_step)},
-          {"diverged_reason", c.diverged_reason},
-          {"rms_pct", metric_json(c.rms_pct)},
-          {"max_pct", metric_json(c.max_pct)},
-          {"weighted_rms_pct", metric_json(c.weighted_rms_pct)},
-          {"popping_pct", metric_json(c.popping_pct)},
-          {"energy_drift_pct", metric_json(c.energy_drift_pct)},
-          {"step_ms", json_number(c.step_ms)},
-          {"reference_step_ms", json_number(c.reference_step_ms)},
-          {"time_ratio_vs_plain",
-           c.reference_step_ms > 0 ? json_number(c.step_ms / c.reference_step_ms) : ojson(nullptr)},
-          {"switch_ms", json_number(c.switch_ms)},
-          {"switch_step", json_integer(c.switch_step)},
-          {"converged_step", json_integer(c.converged_step)},
-          {"final_state_hash", c.final_state_hash}};
+  ojson out = {{"net", c.net_name},
+               {"method", fidelity_method_name(c.subject.method)},
+               {"compression", json_number(c.subject.compression)},
+               {"target_nodes", c.target_nodes},
+               {"N", json_number(c.mean_nodes)},
+               {"grid", c.grid.empty() ? ojson(nullptr) : ojson(c.grid)},
+               {"status", c.status},
+               {"diverged_step", json_integer(c.diverged_step)},
+               {"diverged_reason", c.diverged_reason},
+               {"rms_pct", metric_json(c.rms_pct)},
+               {"max_pct", metric_json(c.max_pct)},
+               {"weighted_rms_pct", metric_json(c.weighted_rms_pct)},
+               {"popping_pct", metric_json(c.popping_pct)},
+               {"energy_drift_pct", metric_json(c.energy_drift_pct)},
+               {"step_ms", json_number(c.step_ms)},
+               {"reference_step_ms", json_number(c.reference_step_ms)},
+               {"time_ratio_vs_plain",
+                c.reference_step_ms > 0 ? json_number(c.step_ms / c.reference_step_ms) : ojson(nullptr)},
+               {"switch_ms", json_number(c.switch_ms)},
+               {"switch_step", json_integer(c.switch_step)},
+               {"converged_step", json_integer(c.converged_step)},
+               {"final_state_hash", c.final_state_hash}};
+  // Only in a scene with a camera: every other result stays as it was.
+  if (c.screen) out["screen"] = screen_json(*c.screen);
+  return out;
 }
 
 std::optional<double> summary_mean(const MetricSummary& s) {
@@ -78,9 +89,11 @@ ojson floors_json(const FidelityFloors& f) {
     interpolation.push_back({{"compression", json_number(i.compression)},
                              {"grid", i.grid},
                              {"rms_pct", json_number(summary_mean(i.rms_pct))}});
-  return {{"net", f.net_name},
-          {"noise_floor_pct", json_number(summary_mean(f.noise_rms_pct))},
-          {"interpolation_floor_pct", std::move(interpolation)}};
+  ojson out = {{"net", f.net_name},
+               {"noise_floor_pct", json_number(summary_mean(f.noise_rms_pct))},
+               {"interpolation_floor_pct", std::move(interpolation)}};
+  if (f.noise_screen) out["noise_floor_screen"] = screen_json(*f.noise_screen);
+  return out;
 }
 
 /// A method's time-versus-error sweep (`points`, from pareto_sweep) as JSON (`sweep`) and its maximal compression

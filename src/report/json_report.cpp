@@ -84,14 +84,22 @@ ojson suite_json(const Suite& s) {
   if (f.interface_tension > 0) out["feedback"]["interface_tension"] = json_number(f.interface_tension);
   if (f.pin_level_pull > 0) out["feedback"]["pin_level_pull"] = json_number(f.pin_level_pull);
   if (f.contact_saliency > 0) out["feedback"]["contact_saliency"] = json_number(f.contact_saliency);
-  // Only in a scene with colliders, like the penetrations of its repetitions.
-  if (s.scene.has_colliders()) {
+  if (f.view) {
+    out["feedback"]["view"] = true;
+    out["feedback"]["view_motion_scale"] = json_number(f.view_motion_scale);
+    out["feedback"]["view_detail_px"] = json_number(f.view_detail_px);
+  }
+  // Only in a scene with colliders or a camera, like the penetrations of its repetitions.
+  if (s.scene.has_colliders() || s.scene.camera) {
     ojson colliders = ojson::array();
     for (const Collider& c : s.scene.colliders) colliders.push_back(collider_name(c));
     out["scene"] = {{"colliders", std::move(colliders)},
                     {"margin", json_number(s.scene.margin)},
                     {"friction", json_number(s.scene.friction)},
                     {"sdf_voxel", json_number(s.scene.sdf_voxel)}};
+    if (const std::optional<Camera>& c = s.scene.camera)
+      out["scene"]["camera"] = {
+          {"fov_deg", json_number(c->fov_deg)}, {"image", {c->width_px, c->height_px}}, {"keyframes", c->path.size()}};
   }
   // Optional: only a suite with axes has it, so the block of a suite without stays as it always was.
   if (!s.axes.empty()) {

@@ -5,8 +5,11 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "feedback/camera.h"
 
 namespace tcsb {
 
@@ -53,6 +56,9 @@ struct SceneSettings {
   /// distance field between samples this far apart (btSparseSdf), so a collider much smaller than a few voxels is
   /// blurred and nodes sink into it; Bullet's default is 0.25 m.
   double sdf_voxel = 0.25;
+  /// The spectator's camera: what the BSWDF's view terms (feedback.view) and the fidelity pass's error in pixels see
+  /// through. None: no spectator, world-space errors only. It watches; it never changes the simulation.
+  std::optional<Camera> camera;
 
   /// Whether bodies live in a collision world (btSoftRigidDynamicsWorld) rather than being stepped solo.
   bool has_colliders() const { return !colliders.empty(); }

@@ -16,6 +16,8 @@ const char* fidelity_method_name(FidelityMethod method) {
     case FidelityMethod::kTcsbCalibrated: return "tcsb_calibrated";
     case FidelityMethod::kUniformCalibrated: return "uniform_grid_calibrated";
     case FidelityMethod::kTcsbCalibratedFans: return "tcsb_calibrated_fans";
+    case FidelityMethod::kTcsbMotionOnly: return "tcsb_motion_only";
+    case FidelityMethod::kTcsbCalibratedMotionOnly: return "tcsb_calibrated_motion_only";
   }
   return "unknown";
 }
@@ -45,6 +47,10 @@ std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
     add_at_targets(FidelityMethod::kUniformCalibrated);
     if (suite.fidelity.ablations && suite.tcsb.interfaces == Interfaces::kHanging)
       add_at_targets(FidelityMethod::kTcsbCalibratedFans);
+  }
+  if (suite.feedback.view) {
+    add_at_targets(FidelityMethod::kTcsbMotionOnly);
+    if (suite.calibration) add_at_targets(FidelityMethod::kTcsbCalibratedMotionOnly);
   }
   return plan;
 }

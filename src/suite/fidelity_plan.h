@@ -25,11 +25,13 @@ enum class FidelityMethod {
   kUniformCalibrated,   ///< the uniform coarse grid with the calibration's stiffness for its budget (the fair rival)
   kTcsbCalibratedFans,  ///< calibrated TC-SB with the paper's fans at interfaces, in a suite whose TC-SB uses
                         ///< hanging interfaces (ablation)
+  kTcsbMotionOnly,      ///< TC-SB with the paper's motion-only BSWDF, in a suite whose TC-SB uses the view terms
+  kTcsbCalibratedMotionOnly,  ///< the same, calibrated
 };
 
 /// Name used in reports: "tcsb", "uniform_grid", "switch_body", "tcsb_random", "tcsb_rigid", "tcsb_no_geomorph",
-/// "tcsb_calibrated", "uniform_grid_calibrated", "tcsb_calibrated_fans". ("tcsb" is the suite's TC-SB,
-/// uncalibrated: the timed one.)
+/// "tcsb_calibrated", "uniform_grid_calibrated", "tcsb_calibrated_fans", "tcsb_motion_only",
+/// "tcsb_calibrated_motion_only". ("tcsb" is the suite's TC-SB, uncalibrated: the timed one.)
 const char* fidelity_method_name(FidelityMethod method);
 
 /// One body of the fidelity pass on every net.
@@ -42,7 +44,9 @@ struct FidelitySubjectSpec {
 /// each once), then, with fidelity.ablations, the five ablations at every suite compression target below 1 (at 1
 /// they would all be the full-resolution body), then, with a calibration, calibrated TC-SB at every target of the
 /// sweep below 1 and the calibrated uniform grid at the suite's targets below 1, and, when the suite's TC-SB uses
-/// hanging interfaces and asks for ablations, calibrated TC-SB with the paper's fans at the suite's targets below 1.
+/// hanging interfaces and asks for ablations, calibrated TC-SB with the paper's fans at the suite's targets below 1;
+/// when the suite's TC-SB uses the view terms (feedback.view), TC-SB with the motion-only BSWDF at the suite's targets
+/// below 1, and with a calibration the calibrated one too, so the spectator's effect is measured in the same pass.
 /// Empty unless fidelity.enabled and the suite runs TC-SB.
 std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite);
 

@@ -91,7 +91,8 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     const Object fb(r, *j, "feedback",
                     {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale",
                      "illumination", "light_direction", "parallel", "threads", "max_step_ms", "popping_charge",
-                     "interface_charge", "interface_tension", "pin_level_pull", "contact_saliency"});
+                     "interface_charge", "interface_tension", "pin_level_pull", "contact_saliency", "view",
+                     "view_motion_scale", "view_detail_px"});
     FeedbackSettings& f = s.feedback;
     for (const char* key :
          {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale", "illumination"})
@@ -108,6 +109,9 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     read_axis_setting(r, fb, "interface_tension", s);
     read_axis_setting(r, fb, "pin_level_pull", s);
     fb.read("contact_saliency", f.contact_saliency, kUnit);
+    read_axis_setting(r, fb, "view", s);
+    read_axis_setting(r, fb, "view_motion_scale", s);
+    read_axis_setting(r, fb, "view_detail_px", s);
   }
 
   if (const json* j = root.find("fidelity")) {
@@ -172,8 +176,60 @@ Collider parse_collider(const Reader& r, const json& j, const std::string& path)
   return c;
 }
 
+/// A camera pose's position and target (`o` holds both keys): distinct, and not looking along `up`.
+CameraPose parse_camera_pose(const Reader& r, const Object& o, const std::array<double, 3>& up) {
+  CameraPose pose;
+  pose.position = r.numbers<3>(o.need("position"), o.at("position"), kAnyFinite);
+  pose.target = r.numbers<3>(o.need("target"), o.at("target"), kAnyFinite);
+  const std::array<double, 3> d{pose.target[0] - pose.position[0], pose.target[1] - pose.position[1],
+                                pose.target[2] - pose.position[2]};
+  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(length > 0)) r.fail(o.at("target"), "must differ from position (the camera must look somewhere)");
+  const std::array<double, 3> side{d[1] * up[2] - d[2] * up[1], d[2] * up[0] - d[0] * up[2],
+                                   d[0] * up[1] - d[1] * up[0]};
+  const double up_length = std::sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
+  if (!(std::sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]) > 1e-6 * length * up_length))
+    r.fail(o.at("target"), "the camera looks along its up direction, so the image has no up");
+  return pose;
+}
+
+Camera parse_camera(const Reader& r, const json& j, const std::string& path) {
+  const Object o(r, j, path, {"position", "target", "up", "fov_deg", "image", "path"});
+  Camera c;
+  c.up = read_vector(r, o, "up", kAnyFinite, c.up);
+  if (c.up == std::array<double, 3>{}) r.fail(o.at("up"), "must not be the zero vector");
+  o.read("fov_deg", c.fov_deg, Interval{0.0, true, 180.0, true});
+  if (const json* image = o.find("image")) {
+    if (!image->is_array() || image->size() != 2)
+      r.fail(o.at("image"), "must be [width, height] in pixels, got " + describe(*image));
+    c.width_px = static_cast<int>(r.integer((*image)[0], index_path(o.at("image"), 0), 16, 16384));
+    c.height_px = static_cast<int>(r.integer((*image)[1], index_path(o.at("image"), 1), 16, 16384));
+  }
+  if (const json* keys = o.find("path")) {
+    // A path gives every pose; a fixed position or target beside it would be silently ignored.
+    for (const char* fixed : {"position", "target"})
+      if (o.find(fixed)) r.fail(o.at(fixed), "not with a path (each keyframe gives its own)");
+    r.array(*keys, o.at("path"));
+    constexpr std::size_t kMaxKeys = 10000;
+    if (keys->size() > kMaxKeys)
+      r.fail(o.at("path"), "at most " + std::to_string(kMaxKeys) + " keyframes, got " + std::to_string(keys->size()));
+    for (std::size_t i = 0; i < keys->size(); ++i) {
+      const Object key(r, (*keys)[i], index_path(o.at("path"), i), {"time", "position", "target"});
+      CameraKey k;
+      key.read("time", k.time, kNonNegative, true);
+      if (!c.path.empty() && !(k.time > c.path.back().time))
+        r.fail(key.at("time"), "must be later than the keyframe before (" + fmt_number(c.path.back().time) + ")");
+      k.pose = parse_camera_pose(r, key, c.up);
+      c.path.push_back(k);
+    }
+  } else {
+    c.pose = parse_camera_pose(r, o, c.up);
+  }
+  return c;
+}
+
 SceneSettings parse_scene(const Reader& r, const json& j) {
-  const Object o(r, j, "scene", {"colliders", "margin", "friction", "sdf_voxel"});
+  const Object o(r, j, "scene", {"colliders", "margin", "friction", "sdf_voxel", "camera"});
   SceneSettings scene;
   if (const json* colliders = o.find("colliders")) {
     r.array(*colliders, o.at("colliders"), true);
@@ -189,6 +245,7 @@ SceneSettings parse_scene(const Reader& r, const json& j) {
   o.read("friction", scene.friction, kUnit);
   // A voxel below a millimetre would make the SDF's cells (and their memory, clamped by Bullet) explode for nothing.
   o.read("sdf_voxel", scene.sdf_voxel, Interval{0.001, false, 10.0, false});
+  if (const json* camera = o.find("camera")) scene.camera = parse_camera(r, *camera, o.at("camera"));
   return scene;
 }
 
@@ -308,6 +365,8 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
     r.fail("feedback.interface_tension", "weighs the interface charge, which is 0 here: set feedback.interface_charge");
   if (s.feedback.pin_level_pull > 0 && !set_or_varied(s.feedback.interface_tension, "feedback.interface_tension"))
     r.fail("feedback.pin_level_pull", "acts through the pin tension, which is 0 here: set feedback.interface_tension");
+  if ((s.feedback.view || set_or_varied(0, "feedback.view")) && !s.scene.camera)
+    r.fail("feedback.view", "the view terms see through the scene's camera: set scene.camera");
 
   // CreatePatch makes structural links (and, with gendiags, one diagonal per cell), never our shear/bend sets; the
   // TreeCut soft body's balanced-cut adjacency is the 4-neighbourhood, so it is structural-only too (the paper's

@@ -103,6 +103,12 @@ struct Suite {
   std::optional<Calibration> calibration;
 };
 
+/// Whom the BSWDF's view terms see through in `suite`: its scene's camera when feedback.view is on, else none.
+inline std::optional<Spectator> suite_spectator(const Suite& suite) {
+  if (!suite.feedback.view || !suite.scene.camera) return std::nullopt;
+  return Spectator{*suite.scene.camera, suite.world.dt};
+}
+
 /// Every step a repetition of a case takes, warm-up and the untimed step opening each interleaved block included.
 /// In 64 bits: each field may be up to INT_MAX, and only the memory check bounds their sum.
 inline long long steps_per_repetition(const Suite& suite) {

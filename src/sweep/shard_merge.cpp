@@ -191,6 +191,30 @@ std::vector<OpSample> read_op_samples(const Reader& r, const ojson& data, const 
   return samples;
 }
 
+/// A metric summary (mean, p95, max) at `path`.`key` as the writer records it.
+MetricSummary read_metric(const Reader& r, const ojson& j, const std::string& path, const char* key) {
+  MetricSummary m;
+  const ojson& s = r.at(j, path, key);
+  const std::string sub = path + "." + key;
+  if (r.at(s, sub, "mean").is_null()) return m;  // never measured: count 0, as the writer's null says
+  m.count = 1;  // the file does not keep the step count; the tables only ask whether there is one
+  m.mean = r.number(s, sub, "mean");
+  m.p95 = r.number(s, sub, "p95");
+  m.max = r.number(s, sub, "max");
+  return m;
+}
+
+/// Screen metrics (a case's "screen", a floor's "noise_floor_screen") at `path`.
+ScreenMetrics read_screen(const Reader& r, const ojson& j, const std::string& path) {
+  ScreenMetrics s;
+  s.mean_px = read_metric(r, j, path, "mean_px");
+  s.p95_px = read_metric(r, j, path, "p95_px");
+  s.max_px = read_metric(r, j, path, "max_px");
+  s.p95_over_1px_share = r.number(j, path, "p95_over_1px_share");
+  s.points_in_view = r.number(j, path, "points_in_view");
+  return s;
+}
+
 /// A fidelity case of net `net`, subject `subject`, as the shard's fidelity section records it.
 FidelityCase read_fidelity_case(const Reader& r, const ojson& j, const std::string& path, std::size_t net,
                                 const FidelitySubjectSpec& subject) {
@@ -208,17 +232,7 @@ FidelityCase read_fidelity_case(const Reader& r, const ojson& j, const std::stri
   c.status = r.string(j, path, "status");
   c.diverged_step = r.integer_or_null(j, path, "diverged_step");
   c.diverged_reason = r.string(j, path, "diverged_reason");
-  const auto metric = [&](const char* key) {
-    MetricSummary m;
-    const ojson& s = r.at(j, path, key);
-    const std::string sub = path + "." + key;
-    if (r.at(s, sub, "mean").is_null()) return m;  // never measured: count 0, as the writer's null says
-    m.count = 1;  // the file does not keep the step count; the tables only ask whether there is one
-    m.mean = r.number(s, sub, "mean");
-    m.p95 = r.number(s, sub, "p95");
-    m.max = r.number(s, sub, "max");
-    return m;
-  };
+  const auto metric = [&](const char* key) { return read_metric(r, j, path, key); };
   c.rms_pct = metric("rms_pct");
   c.max_pct = metric("max_pct");
   c.weighted_rms_pct = metric("weighted_rms_pct");
@@ -230,6 +244,7 @@ FidelityCase read_fidelity_case(const Reader& r, const ojson& j, const std::stri
   c.switch_step = r.integer_or_null(j, path, "switch_step");
   c.converged_step = r.integer_or_null(j, path, "converged_step");
   c.final_state_hash = r.string(j, path, "final_state_hash");
+  if (j.contains("screen")) c.screen = read_screen(r, j["screen"], path + ".screen");
   return c;
 }
 
@@ -321,6 +336,8 @@ FidelityFloors read_floors(const Reader& r, const ojson& j, const std::string& p
   f.net_name = r.string(j, path, "net");
   if (f.net_name != net_name) r.fail(path + ".net", "expected " + net_name + " here");
   f.noise_rms_pct = summary_of_mean(r.number(j, path, "noise_floor_pct"));
+  if (j.contains("noise_floor_screen"))
+    f.noise_screen = read_screen(r, j["noise_floor_screen"], path + ".noise_floor_screen");
   const ojson& list = r.at(j, path, "interpolation_floor_pct");
   if (!list.is_array()) r.fail(path + ".interpolation_floor_pct", "must be an array");
   for (std::size_t k = 0; k < list.size(); ++k) {

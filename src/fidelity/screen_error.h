@@ -1,0 +1,42 @@
+// Screen error: a reconstructed surface's error as the spectator sees it. Both surfaces are projected through the
+// scene's camera at the same moment; for every grid point the reference shows in view, the distance on the image
+// between where the reference puts it and where the subject does, in pixels. A world-space error of 1 % of the net is
+// invisible on a cloth twenty metres away and glaring a metre from the lens; this is the measure that tells them
+// apart. (Occlusion is not modelled: a point behind another still counts.)
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "feedback/screen_projection.h"
+#include "fidelity/fidelity_result.h"
+
+namespace tcsb {
+
+/// One step's screen error, over the grid points the reference shows in view (all 0 when it shows none).
+struct ScreenError {
+  std::size_t in_view = 0;            ///< grid points of the reference in view
+  double mean = 0, p95 = 0, max = 0;  ///< pixels
+};
+
+/// The screen error of `subject` against `reference` (the same grid points, in the same order) seen through `view`.
+/// A subject point at or behind the near plane, where its image does not exist, counts as the image's diagonal (the
+/// largest displacement two points in view can have). `scratch` is reused between calls.
+ScreenError screen_error(const ScreenProjection& view, std::span<const Eigen::Vector3d> subject,
+                         std::span<const Eigen::Vector3d> reference, std::vector<double>& scratch);
+
+/// The per-step screen errors of a subject over the measured steps, summarised into ScreenMetrics. Steps whose
+/// reference shows nothing in view have no screen error and are left out of the summaries.
+class ScreenErrorSeries {
+ public:
+  void add(const ScreenError& e);
+  ScreenMetrics finish() const;
+
+ private:
+  std::vector<double> mean_, p95_, max_, in_view_;
+};
+
+}  // namespace tcsb
