@@ -82,6 +82,70 @@ TEST(Saliency, LambertFactorOfAFlatNet) {
   for (float v : s) EXPECT_FLOAT_EQ(v, 0.0f);
 }
 
+/// A camera 5 m above the 8 x 8 m net's point (2, 8, 0), looking straight down on a 100 x 300 px image with 120
+/// degrees of vertical field of view: it sees z in about [-8.7, 8.7] and x in about [-0.9, 4.9], so the grid's
+/// columns at x <= -1 are out of view.
+ScreenProjection looking_down(double height = 5.0) {
+  Camera c;
+  c.pose = {{2, 8 + height, 0}, {2, 8, 0}};
+  c.up = {0, 0, -1};
+  c.fov_deg = 120;
+  c.width_px = 100;
+  c.height_px = 300;
+  return {c, 0.0};
+}
+
+TEST(SaliencyView, WhatIsOutOfViewHasNoneAndWhatIsInViewHasSomeEvenAtRest) {
+  Field f;
+  f.take(true);
+  const ScreenProjection view = looking_down();
+  FeedbackSettings settings;
+  settings.view = true;
+  settings.contact_saliency = 1.0;  // not in contact here; and out of view even contact would count for nothing
+  const std::vector<float> s = compute_saliency(f.snapshot, settings, &view);
+  for (int i = 0; i < 81; ++i) {
+    const int column = i % 9;  // x = -4 + column
+    SCOPED_TRACE(i);
+    if (column <= 3)
+      EXPECT_EQ(s[static_cast<std::size_t>(i)], 0.0f);
+    else
+      EXPECT_GT(s[static_cast<std::size_t>(i)], 0.0f) << "a block in view is worth its apparent size";
+  }
+  EXPECT_EQ(*std::max_element(s.begin(), s.end()), s[4 * 9 + 6]) << "at rest, everything in view ranks alike";
+}
+
+TEST(SaliencyView, MotionOutOfViewCountsForNothingAndInViewRanksTheNodes) {
+  Field f;
+  f.set(4 * 9 + 1, btVector3(0, -5, 0));  // x = -3: out of view
+  f.set(4 * 9 + 6, btVector3(0, 0, -1));  // x = 2: in view, moving across the image
+  f.take(true);
+  const ScreenProjection view = looking_down();
+  FeedbackSettings settings;
+  settings.view = true;
+  settings.view_motion_scale = 1e9;  // no global cap
+  const std::vector<float> s = compute_saliency(f.snapshot, settings, &view);
+  EXPECT_EQ(s[4 * 9 + 1], 0.0f);
+  const auto top = std::max_element(s.begin(), s.end()) - s.begin();
+  EXPECT_EQ(top, 4 * 9 + 6);
+  EXPECT_GT(s[4 * 9 + 6], s[4 * 9 + 8]) << "motion ranks nodes that look alike";
+  // Motion-only, the faster node out of view would be the most salient: the view terms changed the ranking.
+  const std::vector<float> motion_only = compute_saliency(f.snapshot, settings);
+  EXPECT_EQ(std::max_element(motion_only.begin(), motion_only.end()) - motion_only.begin(), 4 * 9 + 1);
+}
+
+TEST(SaliencyView, DetailTooSmallToSeeWeighsLess) {
+  Field f;
+  f.take(true);
+  FeedbackSettings settings;
+  settings.view = true;
+  settings.view_detail_px = 50;  // a grid cell (1 m) must look 50 px wide to count fully
+  const ScreenProjection near = looking_down(2.0), far = looking_down(40.0);
+  const std::vector<float> s_near = compute_saliency(f.snapshot, settings, &near);
+  const std::vector<float> s_far = compute_saliency(f.snapshot, settings, &far);
+  EXPECT_GT(s_near[4 * 9 + 6], s_far[4 * 9 + 6]);
+  EXPECT_GT(s_far[4 * 9 + 6], 0.0f);
+}
+
 TEST(Evaluator, RanksRefinesHighFirstAndCoarsensLowFirst) {
   Field f(17);
   f.take();

@@ -413,6 +413,76 @@ TEST(SuiteReject, SceneFields) {
   rejected_edit([](json& j) { j["feedback"] = {{"contact_saliency", 2}}; }, "feedback.contact_saliency");
 }
 
+TEST(SuiteParse, CameraAndViewTerms) {
+  json j = minimal();
+  EXPECT_FALSE(parse_suite_text(j.dump(), "plain.json").scene.camera);  // no camera: no spectator
+  j["scene"] = json::parse(R"({"camera": {"position": [0, 5, 10], "target": [0, 0, 0], "fov_deg": 50,
+                                          "image": [640, 480]}})");
+  j["feedback"] = {{"view", true}, {"view_motion_scale", 10}, {"view_detail_px", 4}};
+  const Suite s = parse_suite_text(j.dump(), "camera.json");
+  ASSERT_TRUE(s.scene.camera);
+  EXPECT_FALSE(s.scene.has_colliders()) << "a camera watches: the bodies still step solo";
+  EXPECT_DOUBLE_EQ(s.scene.camera->pose.position[2], 10.0);
+  EXPECT_DOUBLE_EQ(s.scene.camera->fov_deg, 50.0);
+  EXPECT_EQ(s.scene.camera->width_px, 640);
+  EXPECT_EQ(s.scene.camera->height_px, 480);
+  EXPECT_TRUE(s.feedback.view);
+  EXPECT_DOUBLE_EQ(s.feedback.view_motion_scale, 10.0);
+  EXPECT_DOUBLE_EQ(s.feedback.view_detail_px, 4.0);
+  ASSERT_TRUE(suite_spectator(s));
+  EXPECT_DOUBLE_EQ(suite_spectator(s)->dt, s.world.dt);
+  j["feedback"]["view"] = false;
+  EXPECT_FALSE(suite_spectator(parse_suite_text(j.dump(), "camera.json"))) << "the view terms are off";
+
+  j["scene"] = json::parse(R"({"camera": {"path": [{"time": 0, "position": [0, 5, 10], "target": [0, 0, 0]},
+                                                   {"time": 2, "position": [4, 5, 10], "target": [1, 0, 0]}]}})");
+  const Suite moving = parse_suite_text(j.dump(), "path.json");
+  ASSERT_EQ(moving.scene.camera->path.size(), 2u);
+  EXPECT_DOUBLE_EQ(moving.scene.camera->path[1].pose.position[0], 4.0);
+}
+
+TEST(SuiteReject, CameraFields) {
+  const auto camera = [](const char* text) {
+    return [text](json& j) { j["scene"] = {{"camera", json::parse(text)}}; };
+  };
+  rejected_edit(camera(R"({"target": [0, 0, 0]})"), "scene.camera.position");
+  rejected_edit(camera(R"({"position": [1, 2, 3], "target": [1, 2, 3]})"), "scene.camera.target");
+  rejected_edit(camera(R"({"position": [0, 5, 0], "target": [0, 0, 0]})"), "scene.camera.target");  // looks along up
+  rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "up": [0, 0, 0]})"), "scene.camera.up");
+  rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "fov_deg": 180})"), "scene.camera.fov_deg");
+  rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "image": [1280]})"), "scene.camera.image");
+  rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "image": [1280, 8]})"),
+                "scene.camera.image[1]");
+  rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "zoom": 2})"), "scene.camera.zoom");
+  rejected_edit(camera(R"({"position": [0, 0, 5], "path": [{"time": 0, "position": [0, 0, 5], "target": [0, 0, 0]}]})"),
+                "scene.camera.position");
+  rejected_edit(camera(R"({"path": [{"time": 1, "position": [0, 0, 5], "target": [0, 0, 0]},
+                                    {"time": 1, "position": [0, 0, 6], "target": [0, 0, 0]}]})"),
+                "scene.camera.path[1].time");
+  rejected_edit(camera(R"({"path": []})"), "scene.camera.path");
+  // The view terms see through the camera: without one they would silently do nothing.
+  rejected_edit([](json& j) { j["feedback"] = {{"view", true}}; }, "feedback.view");
+  rejected_edit([](json& j) { j["axes"] = {{"feedback.view", {false, true}}}; }, "feedback.view");
+  rejected_edit([](json& j) { j["feedback"] = {{"view_detail_px", 0}}; }, "feedback.view_detail_px");
+}
+
+TEST(ShippedSuites, ViewerSuitesWatchThroughACameraWithTheViewTermsOn) {
+  for (const char* name : {"viewer-far", "viewer-corner", "viewer-drape"}) {
+    SCOPED_TRACE(name);
+    const Suite s = parse_suite(kSourceDir / "suites" / (std::string(name) + ".json"));
+    ASSERT_TRUE(s.scene.camera);
+    EXPECT_EQ(s.scene.camera->width_px, 1280);
+    EXPECT_EQ(s.scene.camera->height_px, 720);
+    EXPECT_TRUE(s.feedback.view);
+    EXPECT_EQ(s.solver.piterations, 32);
+    EXPECT_TRUE(s.calibration) << "calibrated as the converged suite is";
+    EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kTcsb, Method::kPlainEqual}));
+  }
+  // The paper's suites have no camera, and their TC-SB the motion-only BSWDF.
+  EXPECT_FALSE(parse_suite(kSourceDir / "suites/paper.json").scene.camera);
+  EXPECT_FALSE(parse_suite(kSourceDir / "suites/ci.json").feedback.view);
+}
+
 TEST(SuiteReject, MalformedText) {
   // A parse error names the member being read when there is one.
   const std::string msg = rejected([] { parse_suite_text("{\"name\": ", "t.json"); }, "t.json", "name");
