@@ -451,8 +451,7 @@ TEST(SuiteReject, CameraFields) {
   rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "up": [0, 0, 0]})"), "scene.camera.up");
   rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "fov_deg": 180})"), "scene.camera.fov_deg");
   rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "image": [1280]})"), "scene.camera.image");
-  rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "image": [1280, 8]})"),
-                "scene.camera.image[1]");
+  rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "image": [1280, 8]})"), "scene.camera.image[1]");
   rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "zoom": 2})"), "scene.camera.zoom");
   rejected_edit(camera(R"({"position": [0, 0, 5], "path": [{"time": 0, "position": [0, 0, 5], "target": [0, 0, 0]}]})"),
                 "scene.camera.position");
