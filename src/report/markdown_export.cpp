@@ -400,6 +400,42 @@ std::string sweep_section(const ojson& pareto, const ojson& best, const std::str
   return out;
 }
 
+/// Per net and subject, the error in pixels as the scene's camera sees it, each net's noise floor first; empty
+/// unless the run's scene has a camera.
+std::string screen_section(const ojson& fidelity) {
+  ojson rows = ojson::array();
+  for (const ojson& f : at(fidelity, "floors"))
+    if (at(f, "noise_floor_screen").is_object())
+      rows.push_back({{"net", at(f, "net")}, {"method", "noise floor"}, {"screen", at(f, "noise_floor_screen")}});
+  for (const ojson& c : at(fidelity, "cases"))
+    if (at(c, "screen").is_object()) rows.push_back(c);
+  if (rows.empty()) return "";
+  const auto screen = [](std::string header, std::string metric, std::string stat) {
+    return Column{std::move(header), [metric = std::move(metric), stat = std::move(stat)](const ojson& row) {
+                    return markdown_number(at(at(at(row, "screen"), metric), stat));
+                  }};
+  };
+  const std::vector<Column> columns{
+      field("net", "net"),
+      field("method", "method"),
+      {"compression",
+       [](const ojson& row) {
+         return at(row, "compression").is_number() ? compression_text(at(row, "compression")) : std::string();
+       }},
+      screen("mean px", "mean_px", "mean"),
+      screen("p95 px", "p95_px", "mean"),
+      screen("max px", "max_px", "max"),
+      {"steps p95 > 1 px",
+       [](const ojson& row) { return markdown_number(at(at(row, "screen"), "p95_over_1px_share")); }},
+      {"in view", [](const ojson& row) { return markdown_number(at(at(row, "screen"), "points_in_view"), 0); }},
+      field("status", "status")};
+  return "\nError in pixels as the camera sees it: per step, over the grid points the reference shows in view, the "
+         "mean, p95 and maximum distance on the image between the reference's point and the subject's; then the mean "
+         "over the steps (max px: the maximum); the share of steps whose p95 exceeds one pixel; grid points in view "
+         "per step.\n\n" +
+         table(columns, rows);
+}
+
 std::string fidelity_section(const ojson& doc) {
   const ojson& fidelity = at(doc, "fidelity");
   const ojson& rows = at(fidelity, "rows");
@@ -424,6 +460,7 @@ std::string fidelity_section(const ojson& doc) {
       columns.push_back(std::move(c));
     out += "\n" + table(columns, rows);
   }
+  out += screen_section(fidelity);
   out += sweep_section(pareto, best, "TC-SB");
   out += sweep_section(at(doc, "pareto_calibrated"), at(doc, "max_compression_calibrated"), "calibrated TC-SB");
   // A reproduction lists these targets with the claims; a plain run with a fidelity pass has them only here.
