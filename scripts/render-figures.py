@@ -14,6 +14,13 @@ The inputs, each the newest by name (file names start with the date; reverse C c
       of `scaling` (op_ms_vs_nodes, step_ms_vs_nodes): cost of each operation and step time against node count
   fig6_frames.png              results/runs/frames/*.json: `tcsb frames` of the paper suite, uncalibrated
   fig6_frames_converged.png    results/runs/frames/*.json: `tcsb frames --suite converged --calibrated`
+  viewer_far.png, viewer_corner.png, viewer_drape.png
+                               results/runs/frames/*.json: `tcsb frames --suite viewer-SCENE --calibrated` (a scene
+      with a camera): the camera's image of plain Bullet, calibrated TC-SB (its simulated nodes coloured by LOD level
+      over its reconstructed surface) and the calibrated uniform grid of the same node count, at each recorded step
+Usage: python3 scripts/render-figures.py --animate FRAMES GIF
+               draws the same three views for every frame of FRAMES (a `tcsb frames` file of a scene with a camera)
+               into an animated GIF; not part of the manifest (its input is too large to keep)
 Figure 6's rows: plain Bullet (every grid node), TC-SB's surface reconstructed at every grid node, TC-SB's simulated
 links with those an operation is replacing (fading in or out, tethers, links about to go) in red. The figures show
 exactly the numbers in their input; PNG bytes depend on the matplotlib version, so the manifest records them only to
@@ -62,12 +69,20 @@ def frames_of(suite, calibrated):
                         and bool(doc.get("frames")))
 
 
+def viewer_frames_of(suite):
+    accepts = frames_of(suite, True)
+    return lambda doc: accepts(doc) and "camera" in doc
+
+
 # Each figure: its PNG, where its input is chosen from, and how it is drawn (a function of the input and the PNG).
 FIGURE_INPUTS = {
     "fig4_operations.png": (RUNS, has_paper_fits),
     "fig5_step_time.png": (RUNS, has_paper_fits),
     "fig6_frames.png": (FRAMES, frames_of("paper", False)),
     "fig6_frames_converged.png": (FRAMES, frames_of("converged", True)),
+    "viewer_far.png": (FRAMES, viewer_frames_of("viewer-far")),
+    "viewer_corner.png": (FRAMES, viewer_frames_of("viewer-corner")),
+    "viewer_drape.png": (FRAMES, viewer_frames_of("viewer-drape")),
 }
 
 
@@ -188,8 +203,112 @@ def figure6(plt, doc, png):
     plt.close(fig)
 
 
+def on_image(doc, frame, points):
+    """Where the frame's camera shows each [x, y, z] point: pixel columns and rows (NaN behind the near plane)."""
+    import numpy as np
+    camera, pose = doc["camera"], frame["camera"]
+    eye = np.array(pose["position"], float)
+    forward = np.array(pose["target"], float) - eye
+    forward /= np.linalg.norm(forward)
+    right = np.cross(forward, camera["up"])
+    right /= np.linalg.norm(right)
+    up = np.cross(right, forward)
+    width, height = camera["image"]
+    focal = 0.5 * height / np.tan(np.radians(camera["fov_deg"]) / 2)  # as src/feedback/screen_projection.cpp
+    d = np.array([[np.nan] * 3 if None in p else p for p in points], float) - eye
+    depth = d @ forward
+    depth[depth < 0.01] = np.nan
+    return width / 2 + focal * (d @ right) / depth, height / 2 - focal * (d @ up) / depth
+
+
+def draw_views(plt, doc, frame, axes):
+    """The camera's image of plain Bullet, TC-SB and the uniform grid at one frame, on three axes."""
+    from matplotlib.collections import LineCollection
+
+    def lines(ax, points, w, h, color, width):
+        x, y = on_image(doc, frame, points)
+        ax.add_collection(LineCollection([[(x[a], y[a]), (x[b], y[b])] for a, b in grid_index_pairs(w, h)],
+                                         colors=color, linewidths=width))
+
+    net, grid = doc["net"], doc["uniform_grid"]
+    width, height = doc["camera"]["image"]
+    lines(axes[0], frame["plain"], net["width"], net["height"], "0.2", 0.3)
+    lines(axes[1], frame["tcsb_surface"], net["width"], net["height"], "0.75", 0.3)
+    x, y = on_image(doc, frame, frame["tcsb_nodes"])
+    levels = frame["tcsb_levels"]
+    dots = axes[1].scatter(x, y, c=levels, s=2, cmap="viridis", vmin=0, vmax=max(3, max(levels)))
+    lines(axes[2], frame["uniform_nodes"], grid["width"], grid["height"], "0.2", 0.4)
+    for ax in axes:
+        ax.set_xlim(0, width)
+        ax.set_ylim(height, 0)
+        ax.set_aspect("equal")
+        ax.set_xticks([])
+        ax.set_yticks([])
+    return dots
+
+
+def grid_index_pairs(width, height):
+    """Index pairs of the segments along the rows and columns of a row-major width x height grid."""
+    pairs = [(r * width + c, r * width + c + 1) for r in range(height) for c in range(width - 1)]
+    return pairs + [(r * width + c, (r + 1) * width + c) for c in range(width) for r in range(height - 1)]
+
+
+VIEW_TITLES = ["Bullet SoftBody, full resolution", "calibrated TC-SB (nodes by LOD level)",
+               "calibrated uniform grid, same node count"]
+
+
+def viewer_source(doc):
+    net = doc["net"]
+    return (f"{doc['suite']['name']} suite, net {net['name']} ({net['width']} x {net['height']}), "
+            f"{round(100 * doc['compression'])}% of the nodes, camera image {doc['camera']['image'][0]} x "
+            f"{doc['camera']['image'][1]}, tcsb {doc['context']['git_commit']}")
+
+
+def figure_viewer(plt, doc, png):
+    frames = doc["frames"]
+    fig, axes = plt.subplots(len(frames), 3, figsize=(12, 0.6 + 2.2 * len(frames)), squeeze=False)
+    for row, frame in enumerate(frames):
+        dots = draw_views(plt, doc, frame, axes[row])
+        axes[row][0].set_ylabel(f"step {frame['step']}\n({frame['step'] * doc['dt']:.2f} s)", fontsize=8)
+    for col, title in enumerate(VIEW_TITLES):
+        axes[0][col].set_title(title, fontsize=9)
+    fig.colorbar(dots, ax=axes.ravel().tolist(), label="TC-SB's LOD level", shrink=0.8)
+    fig.suptitle("What the camera sees", fontsize=11)
+    fig.text(0.01, 0.005, viewer_source(doc), fontsize=7)
+    fig.savefig(png, dpi=100)
+    plt.close(fig)
+
+
+def animate(frames_path, gif):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.animation import FuncAnimation, PillowWriter
+    with open(frames_path) as f:
+        doc = json.load(f)
+    if "camera" not in doc or not doc.get("frames"):
+        print(f"render-figures: {frames_path}: not frames of a scene with a camera", file=sys.stderr)
+        return 2
+    fig, axes = plt.subplots(1, 3, figsize=(10, 2.3))
+
+    def draw(i):
+        for ax in axes:
+            ax.clear()
+        frame = doc["frames"][i]
+        draw_views(plt, doc, frame, axes)
+        for ax, title in zip(axes, VIEW_TITLES):
+            ax.set_title(title, fontsize=8)
+        axes[0].set_ylabel(f"{frame['step'] * doc['dt']:.2f} s", fontsize=8)
+
+    FuncAnimation(fig, draw, frames=len(doc["frames"])).save(gif, writer=PillowWriter(fps=10), dpi=70)
+    plt.close(fig)
+    print(f"render-figures: {gif} from {frames_path}", file=sys.stderr)
+    return 0
+
+
 DRAW = {"fig4_operations.png": figure4, "fig5_step_time.png": figure5, "fig6_frames.png": figure6,
-        "fig6_frames_converged.png": figure6}
+        "fig6_frames_converged.png": figure6, "viewer_far.png": figure_viewer, "viewer_corner.png": figure_viewer,
+        "viewer_drape.png": figure_viewer}
 
 
 def missing_inputs(inputs):
@@ -269,6 +388,8 @@ def check():
 if __name__ == "__main__":
     if sys.argv[1:] == ["--check"]:
         sys.exit(check())
+    if len(sys.argv) == 4 and sys.argv[1] == "--animate":
+        sys.exit(animate(sys.argv[2], sys.argv[3]))
     if sys.argv[1:]:
         print(__doc__, file=sys.stderr)
         sys.exit(2)

@@ -12,13 +12,15 @@ namespace tcsb {
 
 namespace {
 
-FigureFrame capture(int step, const CaseBody& plain, const TcSoftBody& tc,
-                    const std::vector<Eigen::Vector3d>& surface) {
+FigureFrame capture(int step, const CaseBody& plain, const TcSoftBody& tc, const std::vector<Eigen::Vector3d>& surface,
+                    const FidelitySubject* uniform) {
   FigureFrame f;
   f.step = step;
   copy_positions(plain.bullet(), f.plain);
   f.tcsb_surface = surface;
   copy_positions(tc, f.tcsb_nodes);
+  for (const TreeId id : tc.tree_ids()) f.tcsb_levels.push_back(tc.tree().node(id).level);
+  if (uniform) copy_positions(uniform->bullet(), f.uniform_nodes);
   const btSoftBody::Node* first = &tc.m_nodes[0];
   f.tcsb_links.reserve(static_cast<std::size_t>(tc.m_links.size()));
   for (int i = 0; i < tc.m_links.size(); ++i) {
@@ -61,6 +63,17 @@ FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, dou
   const std::unique_ptr<FidelitySubject> tc =
       make_fidelity_subject(suite, subject, tc_world, net, suite.seed, nullptr, 0);
   const auto& tc_body = dynamic_cast<const TcSoftBody&>(tc->bullet());
+  // What the camera compares TC-SB with: the static grid of its node count.
+  SceneWorld uniform_world(suite.world, suite.scene);
+  std::unique_ptr<FidelitySubject> uniform;
+  if (suite.scene.camera) {
+    const FidelitySubjectSpec grid{calibrated ? FidelityMethod::kUniformCalibrated : FidelityMethod::kUniform,
+                                   compression};
+    uniform = make_fidelity_subject(suite, grid, uniform_world, net, suite.seed, nullptr, 0);
+    const CoarseGrid g = coarse_grid_for(spec.width, spec.height, subject_budget(*net, grid));
+    out.uniform_width = g.width;
+    out.uniform_height = g.height;
+  }
 
   if (steps.empty()) return out;
   const btScalar dt = static_cast<btScalar>(suite.world.dt);
@@ -69,7 +82,7 @@ FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, dou
   std::size_t next = 0;
   for (int s = 0;; ++s) {
     if (steps[next] == s) {
-      out.frames.push_back(capture(s, *plain, tc_body, surface));
+      out.frames.push_back(capture(s, *plain, tc_body, surface, uniform.get()));
       if (++next == steps.size()) break;
     }
     plain->step(dt);
@@ -77,6 +90,10 @@ FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, dou
     if (tc->surface_changed()) tc->reconstruct(surface);  // the morph records the boundary's jump before the step
     tc->simulate(dt);
     tc->reconstruct(surface);
+    if (uniform) {
+      uniform->boundary(s);
+      uniform->simulate(dt);
+    }
     for (const btSoftBody* body : {&plain->bullet(), &tc->bullet()}) {
       if (auto diverged = divergence_now(*body, net->extent())) {  // untimed: check fully every step
         out.diverged_step = s;
