@@ -32,8 +32,8 @@ struct FigureFrame {
   /// In a scene with a camera: the uniform grid of the budget's node count (calibrated with `calibrated`), its nodes
   /// row-major (FigureFrames::uniform_width x uniform_height); else empty.
   std::vector<Eigen::Vector3d> uniform_nodes;
-  std::vector<FrameLink> tcsb_links;          ///< TC-SB's Bullet links
-  int interpolations = 0;                     ///< operations blending (the paper's I)
+  std::vector<FrameLink> tcsb_links;  ///< TC-SB's Bullet links
+  int interpolations = 0;             ///< operations blending (the paper's I)
 };
 
 /// The frames of one net, or where they stopped.
@@ -41,10 +41,10 @@ struct FigureFrames {
   std::string net;
   int width = 0, height = 0;
   double compression = 1.0;
-  bool calibrated = false;           ///< TC-SB with the suite's calibration (per-level link stiffness)
+  bool calibrated = false;                    ///< TC-SB with the suite's calibration (per-level link stiffness)
   int uniform_width = 0, uniform_height = 0;  ///< the uniform grid's, in a scene with a camera
-  std::vector<FigureFrame> frames;   ///< one per requested step that was reached, in step order
-  std::optional<int> diverged_step;  ///< a body diverged after this step; later frames are missing
+  std::vector<FigureFrame> frames;            ///< one per requested step that was reached, in step order
+  std::optional<int> diverged_step;           ///< a body diverged after this step; later frames are missing
   std::string diverged_reason;
 };
 

@@ -60,9 +60,9 @@ nlohmann::ordered_json frames_json(const Suite& suite, const Context& context, c
     j["tcsb_levels"] = frame.tcsb_levels;
     if (camera) {
       const CameraPose pose = camera->pose_at(static_cast<double>(frame.step) * suite.world.dt);
-      j["camera"] = {{"position", {json_number(pose.position[0]), json_number(pose.position[1]),
-                                   json_number(pose.position[2])}},
-                     {"target", {json_number(pose.target[0]), json_number(pose.target[1]), json_number(pose.target[2])}}};
+      j["camera"] = {
+          {"position", {json_number(pose.position[0]), json_number(pose.position[1]), json_number(pose.position[2])}},
+          {"target", {json_number(pose.target[0]), json_number(pose.target[1]), json_number(pose.target[2])}}};
       j["uniform_nodes"] = points_json(frame.uniform_nodes);
     }
     frames.push_back(std::move(j));
