@@ -365,7 +365,10 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
     r.fail("feedback.interface_tension", "weighs the interface charge, which is 0 here: set feedback.interface_charge");
   if (s.feedback.pin_level_pull > 0 && !set_or_varied(s.feedback.interface_tension, "feedback.interface_tension"))
     r.fail("feedback.pin_level_pull", "acts through the pin tension, which is 0 here: set feedback.interface_tension");
-  if ((s.feedback.view || set_or_varied(0, "feedback.view")) && !s.scene.camera)
+  const bool view_in_an_axis = std::any_of(s.axes.begin(), s.axes.end(), [](const Axis& a) {
+    return a.path == "feedback.view" && std::find(a.values.begin(), a.values.end(), json(true)) != a.values.end();
+  });
+  if ((s.feedback.view || view_in_an_axis) && !s.scene.camera)
     r.fail("feedback.view", "the view terms see through the scene's camera: set scene.camera");
 
   // CreatePatch makes structural links (and, with gendiags, one diagonal per cell), never our shear/bend sets; the
