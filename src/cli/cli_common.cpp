@@ -6,7 +6,7 @@
 #include <iostream>
 
 #include "report/report_writer.h"
-#include "report/terminal_text.h"
+#include "base/terminal_text.h"
 #include "run/context.h"
 #include "run/out_of_memory.h"
 #include "suite/suite.h"

@@ -13,7 +13,7 @@
 #include "cli/run_support.h"
 #include "fidelity/calibration.h"
 #include "report/report_writer.h"
-#include "report/terminal_text.h"
+#include "base/terminal_text.h"
 #include "suite/calibration_path.h"
 
 namespace tcsb::cli {

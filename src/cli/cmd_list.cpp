@@ -7,7 +7,7 @@
 #include "base/json_file.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "report/terminal_text.h"
+#include "base/terminal_text.h"
 #include "report/text_table.h"
 #include "suite/suite.h"
 

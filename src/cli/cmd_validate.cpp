@@ -7,7 +7,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "report/terminal_text.h"
+#include "base/terminal_text.h"
 #include "suite/case_plan.h"
 #include "suite/suite_memory.h"
 #include "suite/suite_time.h"

@@ -3,7 +3,7 @@
 #include "base/input_error.h"
 #include "base/json_file.h"
 #include "report/json_report.h"
-#include "report/result_schema.h"
+#include "gate/result_schema.h"
 
 namespace tcsb::cli {
 

@@ -10,7 +10,7 @@
 #include "report/console_report.h"
 #include "report/format_registry.h"
 #include "report/report_writer.h"
-#include "report/terminal_text.h"
+#include "base/terminal_text.h"
 #include "report/text_table.h"
 #include "run/context.h"
 #include "run/runner.h"

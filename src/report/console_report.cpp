@@ -5,7 +5,7 @@
 
 #include "paper/paper_tables.h"
 #include "report/fidelity_console.h"
-#include "report/terminal_text.h"
+#include "base/terminal_text.h"
 #include "report/text_table.h"
 #include "run/configuration_result.h"
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "cli_fixture.h"
-#include "report/result_schema.h"
+#include "gate/result_schema.h"
 
 namespace {
 
