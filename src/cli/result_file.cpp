@@ -2,8 +2,8 @@
 
 #include "base/input_error.h"
 #include "base/json_file.h"
-#include "report/json_report.h"
 #include "gate/result_schema.h"
+#include "report/json_report.h"
 
 namespace tcsb::cli {
 
