@@ -54,7 +54,8 @@ struct ResultView {
 };
 
 /// Throws InputError naming `file` unless `doc` is a tcsb document: a JSON object whose "tool" is "tcsb". The one
-/// check of the "tool" field, for every reader of tcsb's files.
+/// check of a result's "tool" field, for every reader of results and shards (a calibration file, which suite/ reads,
+/// checks its own).
 void check_tcsb_document(const nlohmann::ordered_json& doc, const std::string& file);
 
 /// Reads a parsed native result document. Throws InputError (naming `file` and the field) when it is not a
