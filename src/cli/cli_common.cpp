@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "base/terminal_text.h"
 #include "report/report_writer.h"
-#include "report/terminal_text.h"
 #include "run/context.h"
 #include "run/out_of_memory.h"
 #include "suite/suite.h"

@@ -48,7 +48,7 @@ std::filesystem::path resolve_suite(const std::string& argument);
 void refuse_axes(const Suite& suite, const std::string& command);
 
 /// `text` with line breaks turned into spaces, so every error is exactly one line, made terminal_safe (control
-/// characters escaped) and cut to kMaxMessageBytes (report/terminal_text.h).
+/// characters escaped) and cut to kMaxMessageBytes (base/terminal_text.h).
 std::string one_line(std::string_view text);
 
 /// Writes "tcsb: error: <message>" as one line to stderr.

@@ -8,12 +8,12 @@
 #include <sstream>
 
 #include "base/input_error.h"
+#include "base/terminal_text.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/run_support.h"
 #include "fidelity/calibration.h"
 #include "report/report_writer.h"
-#include "report/terminal_text.h"
 #include "suite/calibration_path.h"
 
 namespace tcsb::cli {

@@ -5,9 +5,9 @@
 #include <nlohmann/json.hpp>
 
 #include "base/json_file.h"
+#include "base/terminal_text.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "report/terminal_text.h"
 #include "report/text_table.h"
 #include "suite/suite.h"
 

@@ -31,19 +31,10 @@ int merge_command(const MergeArgs& args) {
   std::vector<ShardDocument> shards;
   for (const std::string& file : args.shards) {
     LoadedResult shard = load_result_file(file);
-    try {
-      check_run_is_possible(shard.view);  // as strictly as a result is checked before it is judged
-    } catch (const ResultFileError& e) {
-      throw UsageError(e.what());
-    }
+    check_run_is_possible(shard.view);  // as strictly as a result is checked before it is judged
     shards.push_back({file, std::move(shard.document)});
   }
-  MergedShards merged;
-  try {
-    merged = merge_shards(shards);
-  } catch (const ResultFileError& e) {
-    throw UsageError(e.what());
-  }
+  const MergedShards merged = merge_shards(shards);
   // The suite and its calibration were read too (from where the shards' suite lived).
   check_out_is_not_suite_input(args.out, merged.result.suite);
   for (const std::string& warning : merged.warnings) print_warning(warning);

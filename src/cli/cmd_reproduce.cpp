@@ -87,11 +87,11 @@ int reproduce_command(const ReproduceArgs& args) {
   if (!args.quiet) options.on_look = print_look;
   const Reproduction reproduction = check_reproduction(result, paper, options);
   warn_repetitions(result, suite.repetitions);  // those the looks added; the run's own were warned of above
-  print_reproduction(result, reproduction, args.targets, std::cerr);
+  print_reproduction(reproduction, args.targets, std::cerr);
 
   nlohmann::ordered_json report = native_json(result);
   if (merged_context) report["context"] = *merged_context;
-  report["reproduction"] = reproduction_json(result, reproduction);
+  report["reproduction"] = reproduction_json(reproduction);
   const int written = write_report(json_text(report), args.out);
   if (written != kExitOk) return written;
   switch (reproduction.verdict()) {

@@ -48,13 +48,7 @@ void check_distinct(const std::vector<std::string>& files, const std::vector<Loa
 
 /// A run no `tcsb run` could have written is not judged (gate/run_consistency.h).
 void check_possible(const std::vector<LoadedResult>& runs) {
-  for (const LoadedResult& r : runs) {
-    try {
-      check_run_is_possible(r.view);
-    } catch (const ResultFileError& e) {
-      throw UsageError(e.what());
-    }
-  }
+  for (const LoadedResult& r : runs) check_run_is_possible(r.view);
 }
 
 }  // namespace
@@ -99,8 +93,6 @@ int tax_command(const TaxArgs& args) {
   try {
     nets = judge_tax(views, target);
   } catch (const SuiteMismatch& e) {
-    throw UsageError(e.what());
-  } catch (const ResultFileError& e) {
     throw UsageError(e.what());
   }
   if (nets.empty())

@@ -5,9 +5,9 @@
 #include <iostream>
 #include <string>
 
+#include "base/terminal_text.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "report/terminal_text.h"
 #include "suite/case_plan.h"
 #include "suite/suite_memory.h"
 #include "suite/suite_time.h"

@@ -1,6 +1,6 @@
 // Reading a result file given on the command line (`tcsb compare`, `tcsb export`): the file must exist, parse as
 // JSON, be a tcsb result of this build's schema_version, and conform to the result schema. Anything else is bad
-// input: one UsageError line naming the file and, where there is one, the field.
+// input: one InputError line naming the file and, where there is one, the field (exit 2).
 #pragma once
 
 #include <string>
@@ -17,7 +17,7 @@ struct LoadedResult {
   ResultView view;                  ///< its typed reading
 };
 
-/// Loads `path`. Throws UsageError when the file is unreadable, not JSON, not a tcsb result, of another
+/// Loads `path`. Throws InputError when the file is unreadable, not JSON, not a tcsb result, of another
 /// schema_version, or breaks the schema (the first violation is named, the others counted).
 LoadedResult load_result_file(const std::string& path);
 

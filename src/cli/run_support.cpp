@@ -6,10 +6,11 @@
 
 #include <iostream>
 
+#include "base/terminal_text.h"
 #include "cli/cli_common.h"
 #include "report/console_report.h"
+#include "report/format_registry.h"
 #include "report/report_writer.h"
-#include "report/terminal_text.h"
 #include "report/text_table.h"
 #include "run/context.h"
 #include "run/runner.h"

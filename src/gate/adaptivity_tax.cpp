@@ -220,8 +220,8 @@ std::vector<NetTax> judge_tax(const std::vector<ResultView>& runs, const TaxTarg
       const std::optional<std::size_t> equal = equal_plain_case_of(run, i);
       if (!equal) continue;
       if (!c.net_nodes)
-        throw ResultFileError(run.file, "cases[" + std::to_string(i) + "].net_nodes",
-                              "missing (needed to tell whether the net is judged)");
+        throw InputError(run.file, "cases[" + std::to_string(i) + "].net_nodes",
+                         "missing (needed to tell whether the net is judged)");
       if (*c.net_nodes < target.min_net_nodes) continue;
       auto it = std::find_if(nets.begin(), nets.end(), [&](const NetSamples& s) {
         return s.tax.net == c.net && s.tax.configuration == c.configuration;

@@ -53,7 +53,7 @@ struct NetTax {
 /// Judges every TC-SB case at `target.compression` that has a plain_equal case, on nets of at least
 /// `target.min_net_nodes`, pooled over `runs` (matched by configuration and net). Throws SuiteMismatch when the runs
 /// are of different suites, settings (repetitions aside) or seeds, or of different builds (context.git_commit), and
-/// ResultFileError (naming the file and the field) when a judged TC-SB case lacks net_nodes. Returns no nets when
+/// InputError (naming the file and the field) when a judged TC-SB case lacks net_nodes. Returns no nets when
 /// nothing matched; the caller decides what that means. With `target.over_nets`, one entry for all the matched nets
 /// together: `net` lists them ("n45+n55+..."), `net_nodes` is the smallest one's, its claim's id "tax_over_nets"
 /// (+ "_" + configuration), its ratios the paired repetitions of all nets, and `run_medians` each run's own Table 2

@@ -5,21 +5,14 @@
 
 #include <cstdint>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-namespace tcsb {
+#include "base/input_error.h"
 
-/// A result file that cannot be used. what() is one line naming the file and the field.
-class ResultFileError : public std::runtime_error {
- public:
-  /// `field` is a path such as "cases[3].repetitions[0].mean_step_ms"; empty for the file as a whole.
-  ResultFileError(const std::string& file, const std::string& field, const std::string& problem)
-      : std::runtime_error(file + ": " + (field.empty() ? std::string() : field + ": ") + problem) {}
-};
+namespace tcsb {
 
 /// One repetition of one case as the file records it.
 struct RepetitionView {
@@ -60,8 +53,13 @@ struct ResultView {
   std::vector<CaseView> cases;
 };
 
-/// Reads a parsed native result document. Throws ResultFileError (naming `file` and the field) when it is not a
-/// tcsb result ("tool" is not "tcsb"), a field the readers use is missing or of the wrong type, or a value no run
+/// Throws InputError naming `file` unless `doc` is a tcsb document: a JSON object whose "tool" is "tcsb". The one
+/// check of a result's "tool" field, for every reader of results and shards (a calibration file, which suite/ reads,
+/// checks its own).
+void check_tcsb_document(const nlohmann::ordered_json& doc, const std::string& file);
+
+/// Reads a parsed native result document. Throws InputError (naming `file` and the field) when it is not a
+/// tcsb result (check_tcsb_document), a field the readers use is missing or of the wrong type, or a value no run
 /// can produce: a repetition's mean_step_ms <= 0, or null where its status is "ok"; a negative N, L or I (mean
 /// nodes, links, interpolations) or step_ms median, stddev or cv.
 ResultView read_result(const nlohmann::ordered_json& doc, const std::string& file);

@@ -15,19 +15,19 @@ using ojson = nlohmann::ordered_json;
 std::map<std::string, std::int64_t> net_sizes(const ResultView& result) {
   const auto nets = result.suite.find("nets");
   if (nets == result.suite.end() || !nets->is_array() || nets->empty())
-    throw ResultFileError(result.file, "suite.nets", "missing or empty (a run records the nets it ran)");
+    throw InputError(result.file, "suite.nets", "missing or empty (a run records the nets it ran)");
   std::map<std::string, std::int64_t> sizes;
   for (std::size_t i = 0; i < nets->size(); ++i) {
     const ojson& n = (*nets)[i];
     const std::string at = "suite.nets[" + std::to_string(i) + "]";
     if (!n.is_object() || !n.contains("name") || !n["name"].is_string() || !n.contains("width") ||
         !n["width"].is_number_integer() || !n.contains("height") || !n["height"].is_number_integer())
-      throw ResultFileError(result.file, at, "must have a name, a width and a height");
+      throw InputError(result.file, at, "must have a name, a width and a height");
     const std::int64_t width = n["width"].get<std::int64_t>(), height = n["height"].get<std::int64_t>();
     if (width < 1 || height < 1 || width > 1000000 || height > 1000000)
-      throw ResultFileError(result.file, at, "width and height must be in [1, 1000000]");
+      throw InputError(result.file, at, "width and height must be in [1, 1000000]");
     if (!sizes.emplace(n["name"].get<std::string>(), width * height).second)
-      throw ResultFileError(result.file, at + ".name", "net " + n["name"].dump() + " listed twice");
+      throw InputError(result.file, at + ".name", "net " + n["name"].dump() + " listed twice");
   }
   return sizes;
 }
@@ -51,19 +51,19 @@ void check_repetitions(const ResultView& result, const CaseView& c, const std::s
     const int number = c.repetitions[k].repetition;
     const std::string at = path + ".repetitions[" + std::to_string(k) + "].repetition";
     if (number < 0 || static_cast<std::size_t>(number) >= numbers)
-      throw ResultFileError(result.file, at,
-                            some ? std::to_string(number) + ", but the suite ran repetitions 0 to " +
-                                       std::to_string(numbers) + " - 1"
-                                 : std::to_string(number) + ", but the case has " + std::to_string(count) +
-                                       " repetitions (a run numbers them from 0, once each)");
+      throw InputError(result.file, at,
+                       some ? std::to_string(number) + ", but the suite ran repetitions 0 to " +
+                                  std::to_string(numbers) + " - 1"
+                            : std::to_string(number) + ", but the case has " + std::to_string(count) +
+                                  " repetitions (a run numbers them from 0, once each)");
     if (seen[static_cast<std::size_t>(number)])
-      throw ResultFileError(result.file, at, "repetition " + std::to_string(number) + " appears twice");
+      throw InputError(result.file, at, "repetition " + std::to_string(number) + " appears twice");
     seen[static_cast<std::size_t>(number)] = true;
   }
   if (!some && count < static_cast<std::size_t>(result.repetitions))
-    throw ResultFileError(result.file, path + ".repetitions",
-                          std::to_string(count) + " repetitions, but the suite ran " +
-                              std::to_string(result.repetitions) + " of every case (one is missing)");
+    throw InputError(result.file, path + ".repetitions",
+                     std::to_string(count) + " repetitions, but the suite ran " + std::to_string(result.repetitions) +
+                         " of every case (one is missing)");
 }
 
 }  // namespace
@@ -75,11 +75,11 @@ void check_run_is_possible(const ResultView& result) {
     const std::string path = "cases[" + std::to_string(i) + "]";
     const auto net = sizes.find(c.net);
     if (net == sizes.end())
-      throw ResultFileError(result.file, path + ".net", "\"" + c.net + "\" is not a net of the suite (suite.nets)");
+      throw InputError(result.file, path + ".net", "\"" + c.net + "\" is not a net of the suite (suite.nets)");
     if (c.net_nodes && *c.net_nodes != net->second)
-      throw ResultFileError(result.file, path + ".net_nodes",
-                            std::to_string(*c.net_nodes) + ", but net " + c.net + " has " +
-                                std::to_string(net->second) + " nodes (its width x height)");
+      throw InputError(result.file, path + ".net_nodes",
+                       std::to_string(*c.net_nodes) + ", but net " + c.net + " has " + std::to_string(net->second) +
+                           " nodes (its width x height)");
     check_repetitions(result, c, path);
   }
 }

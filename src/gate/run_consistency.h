@@ -8,7 +8,7 @@
 
 namespace tcsb {
 
-/// Throws ResultFileError naming the file and the field when `result` holds what no run writes: a case on a net
+/// Throws InputError naming the file and the field when `result` holds what no run writes: a case on a net
 /// suite.nets does not list, net_nodes other than that net's width x height, or repetitions that are not numbered
 /// 0, 1, ... once each and at least suite.repetitions of them (a run writes every repetition of every case,
 /// diverged or not; `reproduce` may add more).

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <tuple>
 
 #include "analysis/linear_fit.h"
 #include "analysis/relative_change.h"
 #include "analysis/statistics.h"
+#include "base/case_pairing.h"
 
 namespace tcsb {
 namespace {
@@ -112,6 +114,15 @@ std::optional<double> loglog_exponent(const std::vector<ScalingPoint>& points) {
   return line.valid ? std::optional(line.slope) : std::nullopt;
 }
 
+/// A case as the pairing rule sees it (base/case_pairing.h): its net and configuration, and its method.
+auto pairing_key(const CaseResult& c) {
+  const PairingRole role = c.key.method == Method::kPlain        ? PairingRole::kPlain
+                           : c.key.method == Method::kPlainEqual ? PairingRole::kPlainEqual
+                           : c.key.method == Method::kTcsb       ? PairingRole::kTcsb
+                                                                 : PairingRole::kOther;
+  return PairingKey{std::tie(c.key.net, c.key.configuration), role, c.key.compression};
+}
+
 }  // namespace
 
 std::string compression_percent(double compression) {
@@ -173,42 +184,21 @@ std::vector<Table2Row> table2(const RunResult& result) {
 
 std::optional<double> paired_ratio(const RunResult& result, std::size_t case_index, std::size_t base_case_index) {
   if (case_index >= result.cases.size() || base_case_index >= result.cases.size()) return std::nullopt;
-  const CaseResult& c = result.cases[case_index];
-  const CaseResult& base = result.cases[base_case_index];
   std::vector<double> ratios;
-  for (const RepetitionResult& r : c.repetitions) {
-    if (r.status != "ok") continue;
-    const auto b = std::find_if(base.repetitions.begin(), base.repetitions.end(),
-                                [&](const RepetitionResult& x) { return x.repetition == r.repetition; });
-    if (b == base.repetitions.end() || b->status != "ok") continue;
-    if (const auto q = safe_ratio(r.mean_step_ms, b->mean_step_ms)) ratios.push_back(*q);
-  }
+  for_each_repetition_pair(result.cases[case_index].repetitions, result.cases[base_case_index].repetitions,
+                           [&](const RepetitionResult& r, const RepetitionResult& b) {
+                             if (const auto q = safe_ratio(r.mean_step_ms, b.mean_step_ms)) ratios.push_back(*q);
+                           });
   if (ratios.empty()) return std::nullopt;
   return median(ratios);
 }
 
 std::optional<std::size_t> plain_case_for(const RunResult& result, std::size_t case_index) {
-  if (case_index >= result.cases.size()) return std::nullopt;
-  const CaseKey& key = result.cases[case_index].key;
-  for (std::size_t i = 0; i < result.cases.size(); ++i) {
-    const CaseKey& other = result.cases[i].key;
-    // The same configuration too: a ratio compares methods, never settings.
-    if (other.net == key.net && other.configuration == key.configuration && other.method == Method::kPlain) return i;
-  }
-  return std::nullopt;
+  return plain_partner(result.cases, case_index, pairing_key);
 }
 
 std::optional<std::size_t> equal_plain_case_for(const RunResult& result, std::size_t case_index) {
-  if (case_index >= result.cases.size()) return std::nullopt;
-  const CaseKey& key = result.cases[case_index].key;
-  if (key.method != Method::kTcsb || !key.compression) return std::nullopt;
-  for (std::size_t i = 0; i < result.cases.size(); ++i) {
-    const CaseKey& other = result.cases[i].key;
-    if (other.net == key.net && other.configuration == key.configuration && other.method == Method::kPlainEqual &&
-        other.compression && same_compression(*other.compression, *key.compression))
-      return i;
-  }
-  return std::nullopt;
+  return equal_plain_partner(result.cases, case_index, pairing_key);
 }
 
 std::vector<Table1Row> table1(const RunResult& result) {

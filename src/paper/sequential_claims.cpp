@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "paper/claim_intervals.h"
 
@@ -27,10 +28,9 @@ std::vector<TrackedClaim> tracked(const std::vector<Claim>& claims, bool gates, 
 }
 
 std::vector<Claim> all_claims(const RunResult& result, const SequentialHooks& hooks) {
-  std::vector<Claim> all = hooks.claims_of(result);
-  const std::vector<Claim> targets = hooks.targets_of(result);
-  all.insert(all.end(), targets.begin(), targets.end());
-  return all;
+  JudgedClaims judged = hooks.claims_of(result);
+  judged.claims.insert(judged.claims.end(), judged.targets.begin(), judged.targets.end());
+  return std::move(judged.claims);
 }
 
 /// The fewest and the most repetitions among `cases`.
@@ -105,8 +105,9 @@ double repetition_cost_s(const RunResult& result, const std::vector<std::size_t>
 SequentialOutcome judge_sequentially(RunResult& result, const SequentialSettings& settings,
                                      const SequentialHooks& hooks) {
   SequentialOutcome out;
-  out.claims = tracked(hooks.claims_of(result), true, hooks);
-  out.targets = tracked(hooks.targets_of(result), false, hooks);
+  const JudgedClaims judged = hooks.claims_of(result);
+  out.claims = tracked(judged.claims, true, hooks);
+  out.targets = tracked(judged.targets, false, hooks);
 
   // What is still followed: judged on an interval, at every look so far, and undecided at the last.
   std::vector<TrackedClaim*> following;

@@ -53,10 +53,17 @@ struct SequentialSettings {
   std::uint64_t seed = 1;  ///< bootstrap seed of look 1 (look k uses seed + k - 1)
 };
 
+/// The claims judged on one state of a run.
+struct JudgedClaims {
+  std::vector<Claim> claims;   ///< the paper's claims (gating)
+  std::vector<Claim> targets;  ///< the project's targets (reported)
+};
+
 /// What the looks need from the outside world; injected so tests can fake the runner and the clock.
 struct SequentialHooks {
-  std::function<std::vector<Claim>(const RunResult&)> claims_of;        ///< the paper's claims on a run (gating)
-  std::function<std::vector<Claim>(const RunResult&)> targets_of;       ///< the project's targets on a run (reported)
+  /// The paper's claims (gating) and the project's targets (reported) on a run, from one computation of its tables
+  /// (it runs once per bootstrap resample).
+  std::function<JudgedClaims(const RunResult&)> claims_of;
   std::function<std::optional<ClaimScope>(std::string_view)> scope_of;  ///< cases behind a claim id
   /// Adds `extra` repetitions of the cases (run_more_repetitions in production).
   std::function<void(RunResult&, const std::vector<std::size_t>&, int)> run_more;
@@ -74,7 +81,7 @@ enum class LooksEnded {
 /// The outcome of the looks.
 struct SequentialOutcome {
   std::vector<TrackedClaim> claims;   ///< the paper's claims, in claims_of order
-  std::vector<TrackedClaim> targets;  ///< the project's targets, in targets_of order
+  std::vector<TrackedClaim> targets;  ///< the project's targets, in claims_of order
   std::vector<Look> looks;
   double bootstrap_s = 0;  ///< of which computing intervals
   LooksEnded ended = LooksEnded::kDecided;

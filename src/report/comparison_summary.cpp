@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "report/terminal_text.h"
+#include "base/terminal_text.h"
 #include "report/text_table.h"
 
 namespace tcsb {

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <ostream>
 
+#include "base/terminal_text.h"
 #include "paper/paper_tables.h"
 #include "report/fidelity_console.h"
-#include "report/terminal_text.h"
 #include "report/text_table.h"
 #include "run/configuration_result.h"
 

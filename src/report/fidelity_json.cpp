@@ -1,7 +1,7 @@
 #include "report/fidelity_json.h"
 
 #include "paper/fidelity_tables.h"
-#include "report/json_report.h"
+#include "report/json_number.h"
 
 namespace tcsb {
 

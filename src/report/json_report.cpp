@@ -281,12 +281,6 @@ ojson configurations_json(const RunResult& result) {
 
 }  // namespace
 
-ojson json_number(double value) { return std::isfinite(value) ? ojson(value) : ojson(nullptr); }
-
-ojson json_number(const std::optional<double>& value) { return value ? json_number(*value) : ojson(nullptr); }
-
-ojson json_integer(const std::optional<int>& value) { return value ? ojson(*value) : ojson(nullptr); }
-
 ojson native_json(const RunResult& result) {
   ojson cases = ojson::array();
   bool diverged = false;
@@ -321,7 +315,5 @@ ojson native_json(const RunResult& result) {
 std::string json_text(const nlohmann::ordered_json& doc, int indent) {
   return doc.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
-
-std::string NativeJsonFormat::render_native(const nlohmann::ordered_json& native) const { return json_text(native); }
 
 }  // namespace tcsb

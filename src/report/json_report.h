@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "report/report_format.h"
+#include "report/json_number.h"
 #include "run/run_result.h"
 
 namespace tcsb {
@@ -17,15 +17,6 @@ namespace tcsb {
 /// meaning), together with results/schema/tcsb-result.schema.json, which pins it in its schema_version enum; tests
 /// validate real runs against that schema. 2: first version with a schema.
 inline constexpr int kNativeJsonSchemaVersion = 2;
-
-/// A number as JSON, or null when it is NaN or infinite: no result file ever holds NaN or Infinity.
-nlohmann::ordered_json json_number(double value);
-
-/// An optional number as JSON: null when absent or non-finite.
-nlohmann::ordered_json json_number(const std::optional<double>& value);
-
-/// An optional integer (a step, a count) as JSON: null when absent.
-nlohmann::ordered_json json_integer(const std::optional<int>& value);
 
 /// A JSON document as output text: indented by `indent` (-1: all on one line), newline-terminated; invalid UTF-8 in
 /// recorded strings (a host name, say) is replaced, not thrown on.
@@ -45,14 +36,5 @@ nlohmann::ordered_json suite_json(const Suite& suite);
 /// order); with axes every case has its `configuration` {label, axes} and the suite block its `axes`;
 /// a shard's run is written by shard_json (report/shard_section.h), which adds what `tcsb merge` needs.
 nlohmann::ordered_json native_json(const RunResult& result);
-
-/// The native JSON format: native_json() indented by 2, newline-terminated.
-class NativeJsonFormat final : public ReportFormat {
- public:
-  /// "json".
-  std::string name() const override { return "json"; }
-  /// The document as text (json_text), re-indented.
-  std::string render_native(const nlohmann::ordered_json& native) const override;
-};
 
 }  // namespace tcsb

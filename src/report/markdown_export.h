@@ -12,13 +12,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "report/markdown_table.h"
 #include "report/report_format.h"
 
 namespace tcsb {
-
-/// A number with `digits` significant digits in plain decimal notation (no exponent unless |value| < 0.001);
-/// "" when `value` is not a number (null, missing, a string).
-std::string markdown_number(const nlohmann::ordered_json& value, int digits = 4);
 
 /// One run as Markdown (see the file comment), newline-terminated, with no blank line at the end.
 std::string markdown_report(const nlohmann::ordered_json& native);

@@ -1,9 +1,33 @@
 #include "report/markdown_table.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
-#include "report/markdown_export.h"
 #include "report/text_table.h"
+
+namespace tcsb {
+
+using ojson = nlohmann::ordered_json;
+
+std::string markdown_number(const ojson& value, int digits) {
+  if (value.is_number_integer() || value.is_number_unsigned()) return value.dump();
+  if (!value.is_number()) return "";
+  const double x = value.get<double>();
+  if (!std::isfinite(x)) return "";
+  if (x == 0) return "0";
+  char buf[64];
+  const double magnitude = std::floor(std::log10(std::abs(x)));
+  if (magnitude < -3) {
+    std::snprintf(buf, sizeof buf, "%.*e", std::max(0, digits - 1), x);
+    return buf;
+  }
+  const int decimals = std::max(0, digits - 1 - static_cast<int>(magnitude));
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+  return buf;
+}
+
+}  // namespace tcsb
 
 namespace tcsb::markdown {
 

@@ -1,5 +1,5 @@
-// Markdown tables from the generic JSON document (report/markdown_export.h): lookups that never throw on a missing or
-// mistyped value, cell text for any JSON value, and columns and tables built from them.
+// Markdown tables from the generic JSON document (report/markdown_export.h): numbers as cells, lookups that never throw
+// on a missing or mistyped value, cell text for any JSON value, and columns and tables built from them.
 #pragma once
 
 #include <functional>
@@ -7,6 +7,14 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+namespace tcsb {
+
+/// A number with `digits` significant digits in plain decimal notation (no exponent unless |value| < 0.001);
+/// "" when `value` is not a number (null, missing, a string).
+std::string markdown_number(const nlohmann::ordered_json& value, int digits = 4);
+
+}  // namespace tcsb
 
 namespace tcsb::markdown {
 

@@ -1,7 +1,7 @@
 #include "report/op_work_json.h"
 
 #include "paper/op_work.h"
-#include "report/json_report.h"
+#include "report/json_number.h"
 
 namespace tcsb {
 

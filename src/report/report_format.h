@@ -1,5 +1,5 @@
 // ReportFormat: the one interface every output format implements (as Google Benchmark's reporters do), so the CLI
-// picks a format by name and each format lives in its own file.
+// picks a format by name (report/format_registry.h) and each format lives in its own file.
 #pragma once
 
 #include <memory>
@@ -27,11 +27,5 @@ class ReportFormat {
   /// document has been checked against the result schema.
   virtual std::string render_native(const nlohmann::ordered_json& native) const = 0;
 };
-
-/// The format called `name`, or nullptr if there is none. Formats are registered in report_format.cpp's table.
-std::unique_ptr<ReportFormat> make_format(std::string_view name);
-
-/// Every registered format's name, in registration order (for --help and error messages).
-std::vector<std::string> format_names();
 
 }  // namespace tcsb

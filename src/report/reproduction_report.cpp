@@ -5,16 +5,10 @@
 #include <limits>
 #include <ostream>
 
-#include "case/step_clock.h"
 #include "paper/claim_intervals.h"
-#include "paper/fidelity_tables.h"
-#include "paper/op_work_claims.h"
-#include "paper/paper_claims.h"
-#include "paper/paper_tables.h"
 #include "report/claims_console.h"
-#include "report/json_report.h"
+#include "report/json_number.h"
 #include "report/text_table.h"
-#include "run/runner.h"
 
 namespace tcsb {
 
@@ -89,24 +83,12 @@ nlohmann::ordered_json fit_json(const StepFit& f) {
           {"loglog_exponent", json_number(f.loglog_exponent)}};
 }
 
-/// The deterministic targets: judged on their values, once, after the looks.
-TrackedClaim untracked(Claim c) {
-  TrackedClaim t;
-  t.claim = std::move(c);
-  t.gates = false;
-  return t;
-}
-
 /// The fidelity row of TC-SB at a Table 2 row's target, when the run has a fidelity pass.
 const FidelityRow* fidelity_row(const std::vector<FidelityRow>& rows, const Table2Row& row) {
   if (row.method != "tcsb" || !row.compression) return nullptr;
   for (const FidelityRow& f : rows)
     if (f.method == "tcsb" && same_compression(f.compression, *row.compression) && f.nets > 0) return &f;
   return nullptr;
-}
-
-std::vector<FidelityRow> fidelity_rows_of(const RunResult& result) {
-  return result.fidelity ? fidelity_rows(*result.fidelity) : std::vector<FidelityRow>{};
 }
 
 /// The looks taken, and what the verdicts rest on.
@@ -140,66 +122,10 @@ void print_looks(const Reproduction& reproduction, std::ostream& out) {
 
 }  // namespace
 
-Verdict Reproduction::verdict() const {
-  std::vector<Claim> all;
-  for (const TrackedClaim& t : claims) all.push_back(t.claim);
-  return overall_verdict(all);
-}
-
-Reproduction check_reproduction(RunResult& result, PaperReference paper, const ReproductionOptions& options) {
-  Reproduction r;
-  r.paper = std::move(paper);
-  r.budget_s = options.budget_s;
-  const PaperReference& ref = r.paper;
-  SequentialHooks hooks;
-  hooks.claims_of = [&ref](const RunResult& run) {
-    return paper_claims(ref, table2(run), step_fit_of_method(run, Method::kTcsb), table1(run));
-  };
-  hooks.targets_of = [](const RunResult& run) { return project_targets(table2(run)); };
-  hooks.scope_of = scope_of;
-  hooks.run_more =
-      options.run_more ? options.run_more : [](RunResult& run, const std::vector<std::size_t>& cases, int extra) {
-        run_more_repetitions(run, cases, extra);
-      };
-  const StepClock::time_point start = StepClock::now();
-  hooks.now_s = [start] { return ms_between(start, StepClock::now()) / 1000.0; };
-  hooks.on_look = options.on_look;
-  SequentialSettings settings;
-  settings.budget_s = options.budget_s;
-  settings.seed = result.suite.seed;  // the same measurements give the same intervals
-  SequentialOutcome outcome = judge_sequentially(result, settings, hooks);
-
-  r.claims = std::move(outcome.claims);
-  // Figure 4 (operations constant in time) is judged on deterministic work counts, not on wall time, which this
-  // machine's memory hierarchy decides (docs/methodology.md, "The memory floor"): decided on their values.
-  for (Claim& c : op_work_claims(result)) {
-    TrackedClaim t;  // a claim of the paper: it gates like the others
-    t.claim = std::move(c);
-    r.claims.push_back(std::move(t));
-  }
-  for (const TrackedClaim& t : r.claims) {
-    if (t.claim.id != kNoCompressionClaimId) continue;
-    TrackedClaim sanity = t;  // the claim's look, repetitions and confidence: it reads the same interval
-    sanity.claim = nocompression_sanity(t.claim);
-    sanity.gates = false;
-    r.sanity.push_back(std::move(sanity));
-  }
-  r.targets = std::move(outcome.targets);
-  r.looks = std::move(outcome.looks);
-  r.ended = outcome.ended;
-  r.bootstrap_s = outcome.bootstrap_s;
-  r.wall_s = result.wall_s + r.bootstrap_s;  // result.wall_s includes the extra repetitions
-  r.targets.push_back(untracked(wall_time_target(r.wall_s)));
-  if (result.fidelity) {  // reported beside the speed targets; like them, they do not gate the exit code
-    for (Claim& c : fidelity_targets(fidelity_rows(*result.fidelity))) r.targets.push_back(untracked(std::move(c)));
-  }
-  return r;
-}
-
-nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduction& reproduction) {
+nlohmann::ordered_json reproduction_json(const Reproduction& reproduction) {
+  const ReproductionTables& tables = reproduction.tables;
   nlohmann::ordered_json t2 = nlohmann::ordered_json::array();
-  const std::vector<FidelityRow> fidelity = fidelity_rows_of(result);
-  for (const Table2Row& row : table2(result)) {
+  for (const Table2Row& row : tables.table2) {
     const PaperTable2Row* p = paper_row(reproduction.paper, row);
     nlohmann::ordered_json paper = nullptr;
     if (p)
@@ -223,7 +149,7 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
       t2.back()["ours"]["time_ratio_vs_equal_plain"] = json_number(row.time_ratio_vs_equal_plain);
     // What the speed costs, from the fidelity pass (the `fidelity` section has every statistic).
     nlohmann::ordered_json error = nullptr;
-    if (const FidelityRow* f = fidelity_row(fidelity, row))
+    if (const FidelityRow* f = fidelity_row(tables.fidelity, row))
       error = {{"rms_pct", json_number(f->rms_pct.mean)},
                {"max_pct", json_number(f->max_pct.max)},
                {"weighted_rms_pct", json_number(f->weighted_rms_pct.mean)},
@@ -232,7 +158,7 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
     t2.back()["ours"]["fidelity"] = error;
   }
   nlohmann::ordered_json t1 = nlohmann::ordered_json::array();
-  for (const Table1Row& row : table1(result)) {
+  for (const Table1Row& row : tables.table1) {
     const PaperTable1Row* p = paper_row(reproduction.paper, row.operation);
     nlohmann::ordered_json paper = nullptr;
     if (p)
@@ -268,8 +194,8 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
           {"figure5",
            {{"description", "step time against simulated nodes, one least-squares line per method through "
                             "every usable case (TC-SB: all budgets); plain's is reported, not claimed"},
-            {"plain", fit_json(step_fit_of_method(result, Method::kPlain))},
-            {"tcsb", fit_json(step_fit_of_method(result, Method::kTcsb))}}},
+            {"plain", fit_json(tables.plain_fit)},
+            {"tcsb", fit_json(tables.tcsb_fit)}}},
           {"claims", claims},
           {"targets", targets},
           {"sanity", sanity},
@@ -285,9 +211,8 @@ nlohmann::ordered_json reproduction_json(const RunResult& result, const Reproduc
           {"wall_s", json_number(reproduction.wall_s)}};
 }
 
-void print_reproduction(const RunResult& result, const Reproduction& reproduction, bool with_targets,
-                        std::ostream& out) {
-  const std::vector<FidelityRow> fidelity = fidelity_rows_of(result);
+void print_reproduction(const Reproduction& reproduction, bool with_targets, std::ostream& out) {
+  const ReproductionTables& tables = reproduction.tables;
   std::vector<TextTable::Column> columns{{"method", Align::kLeft},
                                          {"compression", Align::kLeft},
                                          {"paper N"},
@@ -300,12 +225,12 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
                                          {"ours ms"},
                                          {"paper ratio"},
                                          {"ours ratio"}};
-  const std::vector<Table2Row> rows = table2(result);
+  const std::vector<Table2Row>& rows = tables.table2;
   const bool equal_plain =
       std::any_of(rows.begin(), rows.end(), [](const Table2Row& r) { return r.time_ratio_vs_equal_plain.has_value(); });
   // Beyond the paper: TC-SB against a static body of the nodes it simulates.
   if (equal_plain) columns.push_back({"ours/equal"});
-  if (result.fidelity) {  // the paper reports no error; ours, beside the speed it buys
+  if (tables.has_fidelity) {  // the paper reports no error; ours, beside the speed it buys
     columns.push_back({"RMS %"});
     columns.push_back({"max %"});
     columns.push_back({"pop max %"});
@@ -329,7 +254,7 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
                                    fixed(paper_ratio, 3),
                                    fixed(row.time_ratio_vs_plain, 3)};
     if (equal_plain) cells.push_back(fixed(row.time_ratio_vs_equal_plain, 3));
-    if (const FidelityRow* f = fidelity_row(fidelity, row)) {
+    if (const FidelityRow* f = fidelity_row(tables.fidelity, row)) {
       cells.push_back(fixed(f->rms_pct.mean, 3));
       cells.push_back(fixed(f->max_pct.max, 3));
       cells.push_back(fixed(f->popping_pct.max, 3));
@@ -339,7 +264,7 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
   out << "Table 2 beside the paper's (paper: " << reproduction.paper.hardware << "; ratios are to plain Bullet";
   if (equal_plain)
     out << "; ours/equal: TC-SB's time over plain_equal's, a static plain grid of the budget's node count, same run";
-  if (result.fidelity)
+  if (tables.has_fidelity)
     out << "; RMS: error against full-resolution plain Bullet in % of the net's extent, mean over steps and nets; "
            "max and pop: max over steps and nets";
   out << "):\n";
@@ -355,7 +280,7 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
                 {"paper node %"},
                 {"ours node %"},
                 {"count"}});
-  for (const Table1Row& row : table1(result)) {
+  for (const Table1Row& row : tables.table1) {
     const PaperTable1Row* p = paper_row(reproduction.paper, row.operation);
     const auto pv = [&](double x) { return p ? std::optional(x) : std::nullopt; };
     const auto ov = [&](double x) { return row.count > 0 ? std::optional(x) : std::nullopt; };
@@ -367,7 +292,7 @@ void print_reproduction(const RunResult& result, const Reproduction& reproductio
   out << "Table 1 beside the paper's (cost of one operation):\n";
   t1.print(out);
   for (const Method method : {Method::kPlain, Method::kTcsb}) {
-    const StepFit f = step_fit_of_method(result, method);
+    const StepFit& f = method == Method::kPlain ? tables.plain_fit : tables.tcsb_fit;
     if (!f.valid) continue;
     out << "Figure 5, " << f.method << ": step ms = " << general(f.slope_ms_per_node.value_or(0) * 1000.0, 4)
         << " us x nodes + " << general(f.intercept_ms, 4) << " ms over " << f.points.size() << " cases ("

@@ -1,7 +1,7 @@
 #include "report/tax_report.h"
 
 #include "report/claims_console.h"
-#include "report/json_report.h"
+#include "report/json_number.h"
 #include "report/text_table.h"
 
 namespace tcsb {

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <ostream>
 
-#include "report/terminal_text.h"
+#include "base/terminal_text.h"
 
 namespace tcsb {
 

@@ -151,13 +151,13 @@ Calibration parse_calibration_file(const std::filesystem::path& path) {
   root.read("piterations", c.piterations, 1, 100000, true);
   root.read("linear_stiffness", c.linear_stiffness, kStiffness, true);
   if (const json* m = root.find("method")) r.string(*m, "method");
-  const json& levels = r.array(root.need("levels"), "levels", true);
+  const json& levels = r.array(root.need("levels"), "levels", EmptyArray::kAllowed);
   for (std::size_t i = 0; i < levels.size(); ++i) {
     c.levels.push_back(parse_fit(r, levels[i], index_path("levels", i), true));
     if (c.levels.back().level != static_cast<int>(i) + 1)
       r.fail(index_path("levels", i) + ".level", "must be " + std::to_string(i + 1) + " (levels in order from 1)");
   }
-  const json& grids = r.array(root.need("uniform_grid"), "uniform_grid", true);
+  const json& grids = r.array(root.need("uniform_grid"), "uniform_grid", EmptyArray::kAllowed);
   for (std::size_t i = 0; i < grids.size(); ++i)
     c.uniform_grid.push_back(parse_fit(r, grids[i], index_path("uniform_grid", i), false));
   return c;

@@ -9,12 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "base/case_pairing.h"
 #include "suite/suite.h"
 
 namespace tcsb {
-
-/// Whether two compression targets are the same one (up to binary noise such as 100 * 0.3 = 30.000000000000004).
-inline bool same_compression(double a, double b) { return std::abs(a - b) < 1e-9; }
 
 /// One case: a configuration of the suite's axes, a net, a method, and (TC-SB, plain_equal) a compression target.
 struct CaseKey {

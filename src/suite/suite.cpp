@@ -119,7 +119,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     fi.read("enabled", s.fidelity.enabled);
     fi.read("rms_threshold_pct", s.fidelity.rms_threshold_pct, kPositive);
     if (const json* targets = fi.find("pareto_targets")) {
-      r.array(*targets, fi.at("pareto_targets"), true);
+      r.array(*targets, fi.at("pareto_targets"), EmptyArray::kAllowed);
       for (std::size_t i = 0; i < targets->size(); ++i) {
         s.fidelity.pareto_targets.push_back(r.number((*targets)[i], index_path(fi.at("pareto_targets"), i), kFraction));
       }
@@ -232,7 +232,7 @@ SceneSettings parse_scene(const Reader& r, const json& j) {
   const Object o(r, j, "scene", {"colliders", "margin", "friction", "sdf_voxel", "camera"});
   SceneSettings scene;
   if (const json* colliders = o.find("colliders")) {
-    r.array(*colliders, o.at("colliders"), true);
+    r.array(*colliders, o.at("colliders"), EmptyArray::kAllowed);
     // Each collider is a rigid body in every case's world: a cap keeps a typo from building millions of them.
     constexpr std::size_t kMaxColliders = 64;
     if (colliders->size() > kMaxColliders)

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "base/json_fields.h"
 #include "gate/result_comparison.h"
 #include "report/json_report.h"
 #include "report/shard_section.h"
@@ -26,58 +27,19 @@ constexpr const char* kBuildKeys[] = {"git_commit", "tcsb_version", "compiler", 
 /// The context fields that tell machines apart for absolute times (what `tcsb compare` warns about, and the host).
 constexpr const char* kMachineKeys[] = {"host", "cpu_model", "cores", "transparent_hugepages", "glibc_tunables"};
 
-/// Typed reading of one shard document; every failure names the file and the field.
-class Reader {
- public:
-  explicit Reader(const std::string& file) : file_(file) {}
-  [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-    throw ResultFileError(file_, field, problem);
-  }
-  const ojson& at(const ojson& parent, const std::string& path, const std::string& key) const {
-    const std::string field = path.empty() ? key : path + "." + key;
-    if (!parent.is_object() || !parent.contains(key)) fail(field, "missing");
-    return parent[key];
-  }
-  std::string string(const ojson& parent, const std::string& path, const std::string& key) const {
-    const ojson& j = at(parent, path, key);
-    if (!j.is_string()) fail(path + "." + key, "must be a string");
-    return j.get<std::string>();
-  }
-  /// A number; null (what the writer makes of NaN) reads as NaN, so writing it again gives null again.
-  double number(const ojson& parent, const std::string& path, const std::string& key) const {
-    const ojson& j = at(parent, path, key);
-    if (j.is_null()) return std::numeric_limits<double>::quiet_NaN();
-    if (!j.is_number()) fail(path + "." + key, "must be a number or null");
-    return j.get<double>();
-  }
-  /// number() that no run writes below 0: a time, a mean count (null, NaN, passes: nothing was measured).
-  double non_negative(const ojson& parent, const std::string& path, const std::string& key) const {
-    const double v = number(parent, path, key);
-    if (v < 0) fail(path + "." + key, "must be >= 0, got " + at(parent, path, key).dump());
-    return v;
-  }
-  std::int64_t integer(const ojson& parent, const std::string& path, const std::string& key) const {
-    const ojson& j = at(parent, path, key);
-    if (!j.is_number_integer()) fail(path + "." + key, "must be an integer");
-    return j.get<std::int64_t>();
-  }
-  std::optional<int> integer_or_null(const ojson& parent, const std::string& path, const std::string& key) const {
-    if (at(parent, path, key).is_null()) return std::nullopt;
-    return static_cast<int>(integer(parent, path, key));
-  }
-  std::optional<double> number_or_null(const ojson& parent, const std::string& path, const std::string& key) const {
-    if (at(parent, path, key).is_null()) return std::nullopt;
-    return number(parent, path, key);
-  }
+/// Typed reading of one shard document; every failure names the file and the field (base/json_fields.h).
+using Reader = JsonFields<ojson>;
 
- private:
-  const std::string& file_;
-};
+constexpr Interval kNonNegative{0.0, false};
+
+/// A measured value as RunResult holds it: NaN where the file has null (nothing was measured), so writing the
+/// merged run gives null again.
+double measured(std::optional<double> value) { return value.value_or(std::numeric_limits<double>::quiet_NaN()); }
 
 /// A shard's index from context.shard.
 ShardIndex shard_index_of(const ShardDocument& shard) {
   const Reader r(shard.file);
-  const ojson& context = r.at(shard.document, "", "context");
+  const ojson& context = r.member(shard.document, "", "context");
   if (!context.contains("shard")) {
     r.fail("context.shard", "missing: not a shard's result (write shards with `tcsb run SUITE --shard K/N`)");
   }
@@ -103,32 +65,39 @@ ShardIndex shard_index_of(const ShardDocument& shard) {
 Suite rebuild_suite(const ShardDocument& shard) {
   const Reader r(shard.file);
   const ojson& doc = shard.document;
-  const std::string text = r.string(r.at(doc, "", "merge_data"), "merge_data", "suite_file");
-  const ojson& block = r.at(doc, "", "suite");
+  const std::string text = r.string(r.member(doc, "", "merge_data"), "merge_data", "suite_file");
+  const ojson& block = r.member(doc, "", "suite");
   // Parsed as the file it was, where it was: its calibration (fidelity.calibration, relative to the suite) lies
   // beside the suite, not beside the shard, where a stale file of that name would be taken for it.
   const std::string suite_path = r.string(block, "suite", "path");
+  // The effective settings, read before the suite text is parsed, so an InputError of the parse below is the
+  // suite file's alone.
+  std::vector<Method> methods;
+  for (const ojson& m : r.array(block, "suite", "methods")) {
+    const std::string name = m.is_string() ? m.get<std::string>() : "";
+    const auto* it =
+        std::find_if(std::begin(kAllMethods), std::end(kAllMethods), [&](Method k) { return name == method_name(k); });
+    if (it == std::end(kAllMethods)) r.fail("suite.methods", "unknown method " + m.dump());
+    methods.push_back(*it);
+  }
+  std::vector<double> compression;
+  for (const ojson& c : r.array(block, "suite", "compression"))
+    compression.push_back(c.is_number() ? c.get<double>() : 0);
+  const auto repetitions = static_cast<int>(r.integer(block, "suite", "repetitions"));
+  const double max_step_ms =
+      measured(r.number_or_null(r.member(block, "suite", "feedback"), "suite.feedback", "max_step_ms"));
   Suite suite;
   try {
     suite = parse_suite_text(text, suite_path, [&](Suite& s) {
-      s.methods.clear();
-      for (const ojson& m : r.at(block, "suite", "methods")) {
-        const std::string name = m.is_string() ? m.get<std::string>() : "";
-        const auto* it = std::find_if(std::begin(kAllMethods), std::end(kAllMethods),
-                                      [&](Method k) { return name == method_name(k); });
-        if (it == std::end(kAllMethods)) r.fail("suite.methods", "unknown method " + m.dump());
-        s.methods.push_back(*it);
-      }
-      s.compression.clear();
-      for (const ojson& c : r.at(block, "suite", "compression"))
-        s.compression.push_back(c.is_number() ? c.get<double>() : 0);
-      s.repetitions = static_cast<int>(r.integer(block, "suite", "repetitions"));
-      s.feedback.max_step_ms = r.number(r.at(block, "suite", "feedback"), "suite.feedback", "max_step_ms");
+      s.methods = methods;
+      s.compression = compression;
+      s.repetitions = repetitions;
+      s.feedback.max_step_ms = max_step_ms;
       // Merging runs nothing: no memory check for the suite's nets here.
       s.run_units.assign(configuration_count(s) * s.nets.size(), false);
     });
   } catch (const InputError& e) {
-    throw ResultFileError(shard.file, "merge_data.suite_file", e.what());
+    throw InputError(shard.file, "merge_data.suite_file", e.what());
   }
   suite.run_units.clear();
   suite.path = suite_path;
@@ -145,35 +114,33 @@ RepetitionResult read_repetition(const Reader& r, const ojson& j, const std::str
   rep.status = r.string(j, path, "status");
   rep.diverged_step = r.integer_or_null(j, path, "diverged_step");
   rep.diverged_reason = r.string(j, path, "diverged_reason");
-  rep.mean_step_ms = r.non_negative(j, path, "mean_step_ms");
-  rep.median_step_ms = r.non_negative(j, path, "median_step_ms");
-  rep.mean_nodes = r.non_negative(j, path, "mean_nodes");
-  rep.mean_links = r.non_negative(j, path, "mean_links");
-  rep.mean_interpolations = r.non_negative(j, path, "mean_interpolations");
-  rep.mean_feedback_ms = r.non_negative(j, path, "mean_feedback_ms");
-  rep.mean_feedback_total_ms = r.non_negative(j, path, "mean_feedback_total_ms");
+  rep.mean_step_ms = measured(r.non_negative_or_null(j, path, "mean_step_ms"));
+  rep.median_step_ms = measured(r.non_negative_or_null(j, path, "median_step_ms"));
+  rep.mean_nodes = measured(r.non_negative_or_null(j, path, "mean_nodes"));
+  rep.mean_links = measured(r.non_negative_or_null(j, path, "mean_links"));
+  rep.mean_interpolations = measured(r.non_negative_or_null(j, path, "mean_interpolations"));
+  rep.mean_feedback_ms = measured(r.non_negative_or_null(j, path, "mean_feedback_ms"));
+  rep.mean_feedback_total_ms = measured(r.non_negative_or_null(j, path, "mean_feedback_total_ms"));
   rep.operations = r.integer(j, path, "operations");
   rep.final_state_hash = r.string(j, path, "final_state_hash");
-  rep.build_ms = r.non_negative(j, path, "build_ms");
+  rep.build_ms = measured(r.non_negative_or_null(j, path, "build_ms"));
   return rep;
 }
 
 /// A TC-SB case's operation samples from merge_data.op_samples, column by column.
 std::vector<OpSample> read_op_samples(const Reader& r, const ojson& data, const std::string& label) {
   const std::string path = "merge_data.op_samples." + label;
-  const ojson& columns = r.at(r.at(data, "merge_data", "op_samples"), "merge_data.op_samples", label);
-  const ojson& work = r.at(columns, path, "work");
+  const ojson& columns = r.member(r.member(data, "merge_data", "op_samples"), "merge_data.op_samples", label);
+  const ojson& work = r.member(columns, path, "work");
   std::vector<const ojson*> all;
-  for (const char* c : kMergeSampleColumns) all.push_back(&r.at(columns, path, c));
+  for (const char* c : kMergeSampleColumns) all.push_back(&r.member(columns, path, c));
   for (int w = 0; w < kOpWorkCountKinds; ++w)
-    all.push_back(&r.at(work, path + ".work", op_work_count_name(OpWorkCount(w))));
+    all.push_back(&r.member(work, path + ".work", op_work_count_name(OpWorkCount(w))));
   const std::size_t size = all.front()->is_array() ? all.front()->size() : 0;
   for (const ojson* column : all) {
     if (!column->is_array() || column->size() != size) r.fail(path, "columns must be arrays of one length");
     // Times and counts: a sample of -1 ns would become a negative operation time in Table 1.
-    for (const ojson& v : *column)
-      if (!v.is_number_integer() || v.get<std::int64_t>() < 0 || v.get<std::int64_t>() > INT32_MAX)
-        r.fail(path, "columns must hold integers in [0, 2^31)");
+    for (const ojson& v : *column) r.integer(v, path, 0, INT32_MAX);
   }
   const auto value = [&](std::size_t column, std::size_t i) { return (*all[column])[i].get<std::int32_t>(); };
   std::vector<OpSample> samples(size);
@@ -194,13 +161,13 @@ std::vector<OpSample> read_op_samples(const Reader& r, const ojson& data, const 
 /// A metric summary (mean, p95, max) at `path`.`key` as the writer records it.
 MetricSummary read_metric(const Reader& r, const ojson& j, const std::string& path, const char* key) {
   MetricSummary m;
-  const ojson& s = r.at(j, path, key);
+  const ojson& s = r.member(j, path, key);
   const std::string sub = path + "." + key;
-  if (r.at(s, sub, "mean").is_null()) return m;  // never measured: count 0, as the writer's null says
+  if (r.member(s, sub, "mean").is_null()) return m;  // never measured: count 0, as the writer's null says
   m.count = 1;  // the file does not keep the step count; the tables only ask whether there is one
-  m.mean = r.number(s, sub, "mean");
-  m.p95 = r.number(s, sub, "p95");
-  m.max = r.number(s, sub, "max");
+  m.mean = measured(r.number_or_null(s, sub, "mean"));
+  m.p95 = measured(r.number_or_null(s, sub, "p95"));
+  m.max = measured(r.number_or_null(s, sub, "max"));
   return m;
 }
 
@@ -210,8 +177,8 @@ ScreenMetrics read_screen(const Reader& r, const ojson& j, const std::string& pa
   s.mean_px = read_metric(r, j, path, "mean_px");
   s.p95_px = read_metric(r, j, path, "p95_px");
   s.max_px = read_metric(r, j, path, "max_px");
-  s.p95_over_1px_share = r.number(j, path, "p95_over_1px_share");
-  s.points_in_view = r.number(j, path, "points_in_view");
+  s.p95_over_1px_share = measured(r.number_or_null(j, path, "p95_over_1px_share"));
+  s.points_in_view = measured(r.number_or_null(j, path, "points_in_view"));
   return s;
 }
 
@@ -226,8 +193,8 @@ FidelityCase read_fidelity_case(const Reader& r, const ojson& j, const std::stri
     r.fail(path + ".method", "expected " + std::string(fidelity_method_name(subject.method)) + " here");
   }
   c.target_nodes = static_cast<int>(r.integer(j, path, "target_nodes"));
-  c.mean_nodes = r.number(j, path, "N");
-  const ojson& grid = r.at(j, path, "grid");
+  c.mean_nodes = measured(r.number_or_null(j, path, "N"));
+  const ojson& grid = r.member(j, path, "grid");
   c.grid = grid.is_string() ? grid.get<std::string>() : "";
   c.status = r.string(j, path, "status");
   c.diverged_step = r.integer_or_null(j, path, "diverged_step");
@@ -238,8 +205,8 @@ FidelityCase read_fidelity_case(const Reader& r, const ojson& j, const std::stri
   c.weighted_rms_pct = metric("weighted_rms_pct");
   c.popping_pct = metric("popping_pct");
   c.energy_drift_pct = metric("energy_drift_pct");
-  c.step_ms = r.number(j, path, "step_ms");
-  c.reference_step_ms = r.number(j, path, "reference_step_ms");
+  c.step_ms = measured(r.number_or_null(j, path, "step_ms"));
+  c.reference_step_ms = measured(r.number_or_null(j, path, "reference_step_ms"));
   c.switch_ms = r.number_or_null(j, path, "switch_ms");
   c.switch_step = r.integer_or_null(j, path, "switch_step");
   c.converged_step = r.integer_or_null(j, path, "converged_step");
@@ -286,15 +253,7 @@ std::vector<StepBreakdown> read_breakdowns(const Reader& r, const ojson& list, c
     const std::string at = path + "[" + std::to_string(k) + "]";
     if (!parts.is_array() || parts.size() != std::size(kMergeBreakdownParts)) r.fail(at, "must hold 4 numbers");
     double v[4];
-    for (std::size_t i = 0; i < 4; ++i) {
-      if (parts[i].is_null()) {
-        v[i] = std::numeric_limits<double>::quiet_NaN();
-      } else if (parts[i].is_number() && parts[i].get<double>() >= 0) {
-        v[i] = parts[i].get<double>();
-      } else {
-        r.fail(at, "must hold numbers >= 0 or null");
-      }
-    }
+    for (std::size_t i = 0; i < 4; ++i) v[i] = measured(r.number_or_null(parts[i], index_path(at, i), kNonNegative));
     out.push_back({v[0], v[1], v[2], v[3]});
   }
   return out;
@@ -335,16 +294,16 @@ FidelityFloors read_floors(const Reader& r, const ojson& j, const std::string& p
   f.net = net;
   f.net_name = r.string(j, path, "net");
   if (f.net_name != net_name) r.fail(path + ".net", "expected " + net_name + " here");
-  f.noise_rms_pct = summary_of_mean(r.number(j, path, "noise_floor_pct"));
+  f.noise_rms_pct = summary_of_mean(measured(r.number_or_null(j, path, "noise_floor_pct")));
   if (j.contains("noise_floor_screen"))
     f.noise_screen = read_screen(r, j["noise_floor_screen"], path + ".noise_floor_screen");
-  const ojson& list = r.at(j, path, "interpolation_floor_pct");
+  const ojson& list = r.member(j, path, "interpolation_floor_pct");
   if (!list.is_array()) r.fail(path + ".interpolation_floor_pct", "must be an array");
   for (std::size_t k = 0; k < list.size(); ++k) {
     const std::string at = path + ".interpolation_floor_pct[" + std::to_string(k) + "]";
-    f.interpolation.push_back({.compression = r.number(list[k], at, "compression"),
+    f.interpolation.push_back({.compression = measured(r.number_or_null(list[k], at, "compression")),
                                .grid = r.string(list[k], at, "grid"),
-                               .rms_pct = summary_of_mean(r.number(list[k], at, "rms_pct"))});
+                               .rms_pct = summary_of_mean(measured(r.number_or_null(list[k], at, "rms_pct")))});
   }
   return f;
 }
@@ -360,13 +319,13 @@ ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const Shard
   std::vector<std::size_t> expected;
   for (std::size_t i = 0; i < keys.size(); ++i)
     if (runs_unit(mine, keys[i].configuration, keys[i].net)) expected.push_back(i);
-  const ojson& cases = r.at(doc, "", "cases");
+  const ojson& cases = r.member(doc, "", "cases");
   if (!cases.is_array() || cases.size() != expected.size()) {
     r.fail("cases", std::to_string(cases.is_array() ? cases.size() : 0) + " cases, but shard " + shard_text(index) +
                         " (split by " + split_name(index.split) + ") of suite " + suite.name + " has " +
                         std::to_string(expected.size()));
   }
-  const ojson& merge_data = r.at(doc, "", "merge_data");
+  const ojson& merge_data = r.member(doc, "", "merge_data");
   const ojson* breakdowns = merge_data.contains("breakdown_ms") ? &merge_data["breakdown_ms"] : nullptr;
   if (index.split == ShardSplit::kRepetitions && !breakdowns) r.fail("merge_data.breakdown_ms", "missing");
   ShardPart part;
@@ -391,7 +350,7 @@ ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const Shard
     std::vector<int> assigned, found;
     for (int rep = 0; rep < suite.repetitions; ++rep)
       if (runs_repetition(mine, c.key.configuration, c.key.net, rep)) assigned.push_back(rep);
-    const ojson& reps = r.at(j, path, "repetitions");
+    const ojson& reps = r.member(j, path, "repetitions");
     for (std::size_t k = 0; k < reps.size(); ++k) {
       piece.repetitions.push_back(read_repetition(r, reps[k], path + ".repetitions[" + std::to_string(k) + "]"));
       piece.repetitions.back().process = index.k;
@@ -416,14 +375,16 @@ ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const Shard
     if (c.key.method == Method::kTcsb && offset != samples.size())
       r.fail("merge_data.op_samples." + c.label, "more samples than the repetitions' operations");
     if (breakdowns) {
-      const std::vector<StepBreakdown> parts =
-          read_breakdowns(r, r.at(*breakdowns, "merge_data.breakdown_ms", c.label), c.label, piece.repetitions.size());
+      const std::vector<StepBreakdown> parts = read_breakdowns(
+          r, r.member(*breakdowns, "merge_data.breakdown_ms", c.label), c.label, piece.repetitions.size());
       for (std::size_t k = 0; k < parts.size(); ++k) piece.repetitions[k].breakdown = parts[k];
     } else if (const auto b = j.find("step_breakdown_ms"); b != j.end()) {
       // An older shard, split by net: the case's summary as the shard gave it (all its repetitions ran there).
       const std::string at = path + ".step_breakdown_ms";
-      piece.summary_breakdown = StepBreakdown{r.number(*b, at, "bullet"), r.number(*b, at, "feedback"),
-                                              r.number(*b, at, "operations"), r.number(*b, at, "blending")};
+      piece.summary_breakdown =
+          StepBreakdown{measured(r.number_or_null(*b, at, "bullet")), measured(r.number_or_null(*b, at, "feedback")),
+                        measured(r.number_or_null(*b, at, "operations")),
+                        measured(r.number_or_null(*b, at, "blending"))};
     }
     part.cases.emplace(index_in_suite, std::move(piece));
   }
@@ -432,8 +393,8 @@ ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const Shard
   for (std::size_t net = 0; net < nets.size(); ++net) nets[net] = runs_fidelity_of(mine, net);
   const std::vector<FidelitySubjectSpec> plan = fidelity_plan(suite);
   if (plan.empty()) return part;
-  const ojson& fidelity = r.at(doc, "", "fidelity");
-  const ojson& fcases = r.at(fidelity, "fidelity", "cases");
+  const ojson& fidelity = r.member(doc, "", "fidelity");
+  const ojson& fcases = r.member(fidelity, "fidelity", "cases");
   std::size_t next = 0;
   for (std::size_t net = 0; net < suite.nets.size(); ++net) {
     if (!nets[net]) continue;
@@ -458,7 +419,7 @@ ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const Shard
     }
     if (k != floors.size()) r.fail("fidelity.floors", "more nets than shard " + shard_text(index) + " runs");
   }
-  part.fidelity_wall_s = r.number(fidelity, "fidelity", "wall_s");
+  part.fidelity_wall_s = measured(r.number_or_null(fidelity, "fidelity", "wall_s"));
   return part;
 }
 
@@ -469,15 +430,15 @@ void check_same(const ShardDocument& first, const ShardDocument& shard, const ch
   const ojson& b = shard.document[block];
   const ojson va = a.contains(key) ? a[key] : ojson(), vb = b.contains(key) ? b[key] : ojson();
   if (va != vb) {
-    throw ResultFileError(shard.file, std::string(block) + "." + key,
-                          vb.dump() + ", but " + first.file + " has " + va.dump() + ": " + what);
+    throw InputError(shard.file, std::string(block) + "." + key,
+                     vb.dump() + ", but " + first.file + " has " + va.dump() + ": " + what);
   }
 }
 
 }  // namespace
 
 MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
-  if (shards.empty()) throw ResultFileError("tcsb merge", "", "no shard results given");
+  if (shards.empty()) throw InputError("tcsb merge", "", "no shard results given");
   std::vector<ShardIndex> indices;
   for (const ShardDocument& s : shards) indices.push_back(shard_index_of(s));
   const ShardDocument& first = shards.front();
@@ -486,14 +447,14 @@ MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
   for (std::size_t i = 0; i < shards.size(); ++i) {
     const ShardDocument& s = shards[i];
     if (indices[i].split != indices.front().split) {
-      throw ResultFileError(s.file, "context.shard.split",
-                            std::string("split by ") + split_name(indices[i].split) + ", but " + first.file +
-                                " is split by " + split_name(indices.front().split) + ": not one split");
+      throw InputError(s.file, "context.shard.split",
+                       std::string("split by ") + split_name(indices[i].split) + ", but " + first.file +
+                           " is split by " + split_name(indices.front().split) + ": not one split");
     }
     if (indices[i].n != n) {
-      throw ResultFileError(s.file, "context.shard",
-                            "shard " + shard_text(indices[i]) + ", but " + first.file + " is a shard of " +
-                                std::to_string(n) + ": not one split");
+      throw InputError(s.file, "context.shard",
+                       "shard " + shard_text(indices[i]) + ", but " + first.file + " is a shard of " +
+                           std::to_string(n) + ": not one split");
     }
     check_same(first, s, "context", "suite_sha256", "shards of different suite files");
     check_same(first, s, "suite", "name", "shards of different suites");
@@ -503,18 +464,18 @@ MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
     a.erase("path");
     b.erase("path");
     if (const std::string d = first_json_difference(b, a, "suite"); !d.empty()) {
-      throw ResultFileError(s.file, "suite", "settings differ from " + first.file + "'s (" + d + ")");
+      throw InputError(s.file, "suite", "settings differ from " + first.file + "'s (" + d + ")");
     }
     if (const auto [it, fresh] = given.emplace(indices[i].k, i); !fresh) {
-      throw ResultFileError(s.file, "context.shard",
-                            "shard " + shard_text(indices[i]) + " given twice (also " + shards[it->second].file + ")");
+      throw InputError(s.file, "context.shard",
+                       "shard " + shard_text(indices[i]) + " given twice (also " + shards[it->second].file + ")");
     }
   }
   for (int k = 1; k <= n; ++k) {
     if (!given.contains(k)) {
       std::string files;
       for (const ShardDocument& s : shards) files += (files.empty() ? "" : ", ") + s.file;
-      throw ResultFileError(files, "context.shard", "shard " + shard_text({k, n}) + " is missing");
+      throw InputError(files, "context.shard", "shard " + shard_text({k, n}) + " is missing");
     }
   }
 

@@ -30,7 +30,7 @@ struct MergedShards {
   std::vector<std::string> warnings;  ///< new warnings of the merge (different machines), also in context.warnings
 };
 
-/// Merges shard results. Throws ResultFileError (one line naming the file and the field) when a file is not a
+/// Merges shard results. Throws InputError (one line naming the file and the field) when a file is not a
 /// shard, the shards are of different suites, settings, seeds or builds, of different shard counts or splits, the
 /// same shard is given twice or one is missing (so a repetition would be missing or counted twice), or a shard's
 /// cases or repetitions are not the ones its index assigns. Each merged repetition's `process` is its shard's k. Warns

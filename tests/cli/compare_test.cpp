@@ -199,7 +199,7 @@ TEST_F(Compare, UnusableInputIsOneLineNamingTheFile) {
   } cases[] = {
       {"compare base.json missing.json", "tcsb: error: missing.json: cannot read the file"},
       {"compare broken.json base.json", "tcsb: error: broken.json: not valid JSON: "},
-      {"compare base.json gbench.json", "tcsb: error: gbench.json: not a tcsb result"},
+      {"compare base.json gbench.json", "tcsb: error: gbench.json: tool: not a tcsb result"},
       {"compare old.json base.json", "tcsb: error: old.json: schema_version: 1, but this tcsb reads version 2"},
       {"compare base.json frames.json", "tcsb: error: frames.json: kind: \"frames\": not a run result"},
       {"compare base.json bad.json", "tcsb: error: bad.json: not a valid tcsb result: cases[1].status: must be one of"},
@@ -323,7 +323,8 @@ TEST_F(Compare, AnInfiniteTimeIsBadInput) {
 TEST_F(Compare, NegativeNodeCountsAreBadInput) {
   ojson next = base_;
   next["cases"][1]["repetitions"][2]["mean_nodes"] = -81.0;
-  expect_bad_input(compare_with(next), "tcsb: error: new.json: cases[1].repetitions[2].mean_nodes: must be >= 0");
+  expect_bad_input(compare_with(next),
+                   "tcsb: error: new.json: cases[1].repetitions[2].mean_nodes: must be a finite number >= 0");
 }
 
 TEST_F(Compare, TooFewRepetitionsCannotPass) {

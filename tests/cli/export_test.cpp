@@ -4,7 +4,7 @@
 #include <string>
 
 #include "cli_fixture.h"
-#include "report/result_schema.h"
+#include "gate/result_schema.h"
 
 namespace {
 
@@ -104,7 +104,7 @@ TEST_F(Export, BadInputIsOneLineAndWritesNothing) {
   } cases[] = {
       {"export result.json --format nope --out x.json", "tcsb: error: --format: unknown format \"nope\""},
       {"export missing.json --format gbench --out x.json", "tcsb: error: missing.json: cannot read the file"},
-      {"export small.json --format gbench --out x.json", "tcsb: error: small.json: not a tcsb result"},
+      {"export small.json --format gbench --out x.json", "tcsb: error: small.json: tool: not a tcsb result"},
       {"export result.json --out x.json", "tcsb: error: "},
   };
   for (const auto& c : cases) {

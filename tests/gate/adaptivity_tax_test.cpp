@@ -254,7 +254,7 @@ TEST(AdaptivityTax, AJudgedCaseWithoutItsNetSizeIsRefusedNamingTheField) {
   try {
     judge({doc});
     FAIL() << "judged without knowing the net's size";
-  } catch (const ResultFileError& e) {
+  } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("run0: cases[0].net_nodes"), std::string::npos) << e.what();
   }
 }

@@ -14,7 +14,7 @@ using testing::result_doc;
 std::string error_of(const ojson& doc) {
   try {
     read_result(doc, "r.json");
-  } catch (const ResultFileError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "";
@@ -72,13 +72,14 @@ TEST(ResultView, DivergedRepetitionsAreLeftOutOfSamples) {
 }
 
 TEST(ResultView, BadFieldsAreNamedWithTheFile) {
+  // The messages are base/json_fields.h's, the same for suites, results and shards.
   ojson doc = result_doc();
   doc["cases"][1]["repetitions"][3]["final_state_hash"] = 5;
-  EXPECT_EQ(error_of(doc), "r.json: cases[1].repetitions[3].final_state_hash: must be a string");
+  EXPECT_EQ(error_of(doc), "r.json: cases[1].repetitions[3].final_state_hash: must be a string, got 5");
 
   doc = result_doc();
   doc["cases"][0].erase("status");
-  EXPECT_EQ(error_of(doc), "r.json: cases[0].status: missing");
+  EXPECT_EQ(error_of(doc), "r.json: cases[0].status: required key is missing");
 
   doc = result_doc();
   doc["cases"][0]["repetitions"][0]["operations"] = 1.5;
@@ -86,12 +87,19 @@ TEST(ResultView, BadFieldsAreNamedWithTheFile) {
 
   doc = result_doc();
   doc["cases"][0]["mean_nodes"] = "many";
-  EXPECT_EQ(error_of(doc), "r.json: cases[0].mean_nodes: must be a number or null");
+  EXPECT_EQ(error_of(doc), "r.json: cases[0].mean_nodes: must be a finite number >= 0 or null, got string \"many\"");
 
   doc = result_doc();
   doc["tool"] = "gbench";
-  EXPECT_NE(error_of(doc).find("not a tcsb result"), std::string::npos);
+  EXPECT_EQ(error_of(doc), "r.json: tool: not a tcsb result (\"tool\" is not \"tcsb\")");
   EXPECT_NE(error_of(ojson::array()).find("not a tcsb result"), std::string::npos);
+}
+
+TEST(ResultView, AnIntegerWithoutAFractionalPartIsAnInteger) {
+  // One rule for every input (base/json_fields.h): 7.0 is 7, as the result schema's check also has it.
+  ojson doc = result_doc();
+  doc["cases"][1]["repetitions"][3]["operations"] = 7.0;
+  EXPECT_EQ(read_result(doc, "r.json").cases[1].repetitions[3].operations, 7);
 }
 
 TEST(ResultView, ImpossibleStepTimesAreBadInput) {
@@ -122,15 +130,18 @@ TEST(ResultView, NegativeCountsAndSpreadsAreBadInput) {
   for (const char* field : {"mean_nodes", "mean_links", "mean_interpolations"}) {
     ojson doc = result_doc();
     doc["cases"][2]["repetitions"][0][field] = -1.0;
-    EXPECT_EQ(error_of(doc), std::string("r.json: cases[2].repetitions[0].") + field + ": must be >= 0, got -1.0");
+    EXPECT_EQ(error_of(doc), std::string("r.json: cases[2].repetitions[0].") + field +
+                                 ": must be a finite number >= 0 or null, got -1.0");
     doc = result_doc();
     doc["cases"][2][field] = -3.0;
-    EXPECT_EQ(error_of(doc), std::string("r.json: cases[2].") + field + ": must be >= 0, got -3.0");
+    EXPECT_EQ(error_of(doc),
+              std::string("r.json: cases[2].") + field + ": must be a finite number >= 0 or null, got -3.0");
   }
   for (const char* field : {"median", "stddev", "cv"}) {
     ojson doc = result_doc();
     doc["cases"][0]["step_ms"][field] = -0.25;
-    EXPECT_EQ(error_of(doc), std::string("r.json: cases[0].step_ms.") + field + ": must be >= 0, got -0.25");
+    EXPECT_EQ(error_of(doc),
+              std::string("r.json: cases[0].step_ms.") + field + ": must be a finite number >= 0 or null, got -0.25");
   }
   // Zero is a real count: a plain net interpolates nothing.
   ojson doc = result_doc();

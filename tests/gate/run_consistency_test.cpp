@@ -23,7 +23,7 @@ ojson possible_run() {
 std::string problem(const ojson& doc) {
   try {
     check_run_is_possible(read_result(doc, "run.json"));
-  } catch (const ResultFileError& e) {
+  } catch (const InputError& e) {
     return e.what();
   }
   return "";

@@ -42,20 +42,17 @@ struct Fixture {
 
   SequentialHooks hooks(bool with_target = false) {
     SequentialHooks h;
-    h.claims_of = [](const RunResult& r) {
-      return std::vector<Claim>{check_claim("tcsb_at_most_1", "", Comparison::kAtMost, 1.0, 0.0,
-                                            r.cases.size() > 1 ? std::optional(r.cases[1].step_ms.median)
-                                                               : std::nullopt,
-                                            Evidence::kRepeated),
-                                check_claim("exact", "", Comparison::kAtMost, 1.0, 0.0, 0.5)};
-    };
-    h.targets_of = [with_target](const RunResult& r) {
-      std::vector<Claim> t;
+    h.claims_of = [with_target](const RunResult& r) {
+      JudgedClaims judged;
+      judged.claims = {check_claim("tcsb_at_most_1", "", Comparison::kAtMost, 1.0, 0.0,
+                                   r.cases.size() > 1 ? std::optional(r.cases[1].step_ms.median) : std::nullopt,
+                                   Evidence::kRepeated),
+                       check_claim("exact", "", Comparison::kAtMost, 1.0, 0.0, 0.5)};
       if (with_target)  // undecided at 0.9: 1.0 +- nothing, straddling forever
-        t.push_back(check_claim("target_09", "", Comparison::kAtMost, 1.0, 0.0,
-                                r.cases.size() > 2 ? std::optional(r.cases[2].step_ms.median) : std::nullopt,
-                                Evidence::kRepeated));
-      return t;
+        judged.targets.push_back(check_claim(
+            "target_09", "", Comparison::kAtMost, 1.0, 0.0,
+            r.cases.size() > 2 ? std::optional(r.cases[2].step_ms.median) : std::nullopt, Evidence::kRepeated));
+      return judged;
     };
     h.scope_of = [](std::string_view id) -> std::optional<ClaimScope> {
       if (id == "tcsb_at_most_1") return ClaimScope{.plain = true, .tcsb_targets = {0.5}};

@@ -2,10 +2,10 @@
 // two custom formats. The CLI tests run Google Benchmark's own compare.py on real exports when it is installed.
 #include <gtest/gtest.h>
 
+#include "report/format_registry.h"
 #include "report/gbench_export.h"
 #include "report/github_action_export.h"
 #include "report/json_report.h"
-#include "report/report_format.h"
 #include "synthetic_run.h"
 
 namespace tcsb {

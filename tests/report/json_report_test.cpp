@@ -8,7 +8,8 @@
 #include <cmath>
 #include <limits>
 
-#include "report/report_format.h"
+#include "report/format_registry.h"
+#include "report/native_json_format.h"
 #include "synthetic_run.h"
 
 namespace tcsb {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "report/format_registry.h"
 #include "report/json_report.h"
-#include "report/report_format.h"
 #include "synthetic_run.h"
 
 namespace tcsb {

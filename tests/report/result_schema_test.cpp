@@ -1,7 +1,7 @@
 // The native output conforms to results/schema/tcsb-result.schema.json: synthetic runs here (every key, diverged
 // cases, the optional sections other commands add), and the committed CI baseline — a real `tcsb run` — too. The
 // CLI tests validate a fresh run of the real binary.
-#include "report/result_schema.h"
+#include "gate/result_schema.h"
 
 #include <gtest/gtest.h>
 

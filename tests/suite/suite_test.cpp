@@ -252,6 +252,16 @@ TEST(SuiteParse, PlainEqualTakesCompressionTargetsWithoutTcsb) {
   EXPECT_EQ(s.compression, (std::vector<double>{1.0, 0.3}));
 }
 
+TEST(Suite, AnIntegerWithoutAFractionalPartIsAnInteger) {
+  // The one rule of every input (base/json_fields.h), JSON Schema's: 40.0 is 40. Suites once refused it.
+  json j = minimal();
+  j["steps"] = 40.0;
+  j["nets"][0]["width"] = 9.0;
+  const Suite s = parse_suite_text(j.dump(), "float.json");
+  EXPECT_EQ(s.steps, 40);
+  EXPECT_EQ(s.nets[0].width, 9);
+}
+
 // ---- rejections ---------------------------------------------------------------------------------------------
 
 /// Runs `parse`, expects an InputError for `file` and `field`, and returns its message.
@@ -502,7 +512,7 @@ TEST(SuiteReject, WrongTypes) {
   rejected_edit([](json& j) { j["nets"][0]["width"] = "65"; }, "nets[0].width");
   EXPECT_NE(rejected_edit([](json& j) { j["nets"][0]["width"] = 65.5; }, "nets[0].width").find("65.5"),
             std::string::npos);
-  rejected_edit([](json& j) { j["steps"] = 2.0; }, "steps");  // integers must be integer-typed JSON
+  rejected_edit([](json& j) { j["steps"] = 2.5; }, "steps");
   rejected_edit([](json& j) { j["nets"][0]["shear"] = 1; }, "nets[0].shear");
   rejected_edit([](json& j) { j["dt"] = "0.01"; }, "dt");
   rejected_edit([](json& j) { j["nets"] = json::object(); }, "nets");

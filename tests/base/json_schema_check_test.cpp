@@ -1,6 +1,6 @@
 // The JSON Schema subset: each keyword accepts what it should and names what it rejects; schemas using anything
 // else are refused instead of half-checked.
-#include "report/json_schema_check.h"
+#include "base/json_schema_check.h"
 
 #include <gtest/gtest.h>
 

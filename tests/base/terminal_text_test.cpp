@@ -1,5 +1,5 @@
 // User text on its way to a terminal: controls escaped, printable UTF-8 kept, long text cut with a count.
-#include "report/terminal_text.h"
+#include "base/terminal_text.h"
 
 #include <gtest/gtest.h>
 

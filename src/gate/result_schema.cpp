@@ -1,4 +1,4 @@
-#include "report/result_schema.h"
+#include "gate/result_schema.h"
 
 #include "result_schema_text.h"
 

@@ -1,4 +1,4 @@
-#include "report/json_schema_check.h"
+#include "base/json_schema_check.h"
 
 #include <algorithm>
 #include <cmath>

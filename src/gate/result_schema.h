@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "report/json_schema_check.h"
+#include "base/json_schema_check.h"
 
 namespace tcsb {
 
