@@ -12,12 +12,31 @@ namespace tcsb {
 
 namespace {
 
-/// Gate self-test builds only (CMake option TCSB_INJECT_STEP_DELAY_US): a real, measurable slowdown of TC-SB's
-/// step. Nothing in other builds.
-void injected_step_delay() {
-#if TCSB_INJECT_STEP_DELAY_US > 0
-  const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(TCSB_INJECT_STEP_DELAY_US);
-  while (std::chrono::steady_clock::now() < until) {
+/// Gate self-test builds only (CMake option TCSB_INJECT_STEP_PERCENT = p): TC-SB's step made p % more expensive in
+/// what the run measures, so the gates can be shown to catch a slowdown of a known fraction of the step, whatever
+/// the net. Wall time: a busy-wait of p % of the step's own time so far (t0: when the step began). Instructions
+/// (`measure_instructions`): a busy-wait would count differently in every run, so a loop of a fixed number of
+/// instructions per Bullet node and link instead, sized from TC-SB's measured instructions per node and link
+/// (docs/methodology.md, "The gates' error rates"): the count it adds is exact, and `tcsb compare` of the two builds
+/// prints it per case. Nothing in other builds: no branch, no clock read.
+void injected_step_work([[maybe_unused]] StepClock::time_point t0, [[maybe_unused]] const btSoftBody& body,
+                        [[maybe_unused]] bool measure_instructions) {
+#if TCSB_INJECT_STEP_PERCENT > 0
+  constexpr double kFraction = TCSB_INJECT_STEP_PERCENT / 100.0;
+  if (measure_instructions) {
+    // ci-instructions' TC-SB steps cost about this many instructions per Bullet node plus link (own work and
+    // Bullet's solve together); the loop below costs about kLoopInstructions per iteration.
+    constexpr double kStepInstructionsPerElement = 1.0;
+    constexpr double kLoopInstructions = 1.0;
+    const double elements = static_cast<double>(body.m_nodes.size() + body.m_links.size());
+    const auto iterations = static_cast<std::uint64_t>(kFraction * kStepInstructionsPerElement * elements / kLoopInstructions);
+    volatile std::uint64_t sink = 0;
+    for (std::uint64_t i = 0; i < iterations; ++i) sink = sink + i;
+    return;
+  }
+  const StepClock::time_point now = StepClock::now();
+  const auto until = now + std::chrono::duration_cast<StepClock::duration>((now - t0) * kFraction);
+  while (StepClock::now() < until) {
   }
 #endif
 }
@@ -27,7 +46,10 @@ class StockBody final : public CaseBody {
  public:
   StockBody(SceneWorld& world, std::unique_ptr<btSoftBody> body)
       : world_(world), body_(std::move(body)), attachment_(world.attach(*body_)) {}
-  void step(btScalar dt) override { world_.step(dt); }
+  void step(btScalar dt) override {
+    world_.step(dt);
+    end_part(StepPart::kBullet);
+  }
   const btSoftBody& bullet() const override { return *body_; }
 
  private:
@@ -48,11 +70,14 @@ class TreeCutBody final : public CaseBody {
     const StepClock::time_point t1 = StepClock::now();
     if (controller_) controller_->before_step(*body_);
     const StepClock::time_point t2 = StepClock::now();
+    end_part(StepPart::kOwn);
     world_.step(dt);
-    injected_step_delay();
+    end_part(StepPart::kBullet);
     const StepClock::time_point t3 = StepClock::now();
     if (controller_) controller_->after_step(*body_);
+    injected_step_work(t0, *body_, counting());
     const StepClock::time_point t4 = StepClock::now();
+    end_part(StepPart::kOwn);
     phases_ = {ms_between(t0, t1), ms_between(t1, t2) + ms_between(t3, t4), ms_between(t2, t3)};
   }
   const StepPhases* phases() const override { return &phases_; }

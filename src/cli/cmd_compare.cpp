@@ -49,8 +49,9 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
   cmd->add_option("new", args.next, "New result of the same suite")->required();
   cmd->add_option("--alpha", args.alpha, "Family-wise significance level of the U tests (Holm), in (0, 1)")
       ->capture_default_str();
-  cmd->add_option("--threshold", args.threshold, "Smallest relative change of a median that fails (0.05 = 5 %)")
-      ->capture_default_str();
+  cmd->add_option("--threshold", args.threshold,
+                  "Smallest relative change that fails (0.05 = 5 %): of a timing median (default 0.05), or of an "
+                  "instruction count (results of --measure instructions; default 0.005)");
   cmd->add_flag("--absolute", args.absolute, "Gate absolute step times too (only on a dedicated machine)");
   cmd->add_option("--summary", args.summary, "Write the Markdown summary to FILE (atomically) instead of stderr");
   return cmd;
@@ -60,8 +61,8 @@ int compare_command(const CompareArgs& args) {
   if (!(args.alpha > 0.0 && args.alpha < 1.0)) {
     throw UsageError("--alpha: must be in (0, 1), got " + std::to_string(args.alpha));
   }
-  if (!(args.threshold >= 0.0) || !std::isfinite(args.threshold)) {
-    throw UsageError("--threshold: must be a finite number >= 0, got " + std::to_string(args.threshold));
+  if (args.threshold && (!(*args.threshold >= 0.0) || !std::isfinite(*args.threshold))) {
+    throw UsageError("--threshold: must be a finite number >= 0, got " + std::to_string(*args.threshold));
   }
   check_out_path(args.summary, "--summary");
   check_out_is_not_input(args.summary, args.base, "--summary");
@@ -76,7 +77,8 @@ int compare_command(const CompareArgs& args) {
   }
   GateSettings settings;
   settings.alpha = args.alpha;
-  settings.threshold = args.threshold;
+  settings.threshold =
+      args.threshold.value_or(comparison.measure == "instructions" ? kInstructionThreshold : kTimeThreshold);
   const GateOutcome outcome = decide_gate(std::move(comparison), settings, args.absolute);
   // No reliable gated metric: the gate measured nothing, so it must not pass (kExitOk). Nor has it failed
   // (kExitFailed means a gate decided that something failed): that would report a regression nobody measured. The

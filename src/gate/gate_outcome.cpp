@@ -32,6 +32,16 @@ GateOutcome decide_gate(ResultComparison comparison, const GateSettings& setting
   GateOutcome out;
   out.settings = settings;
   out.absolute_gated = absolute_gated;
+  if (comparison.measure == "instructions") {
+    out.counts = true;
+    for (const InstructionPair& p : comparison.instructions) {
+      out.instruction_decisions.push_back(decide_instructions(p.case_label, p.base, p.next, settings.threshold));
+      out.regressions += out.instruction_decisions.back().regressed;
+    }
+    out.gated_metrics = out.instruction_decisions.size();
+    out.comparison = std::move(comparison);
+    return out;
+  }
   const std::vector<TimingSamples> ratios = samples_of(comparison.ratios);
   const std::vector<TimingSamples> steps = samples_of(comparison.step_ms);
   if (absolute_gated) {

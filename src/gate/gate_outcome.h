@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analysis/regression_gate.h"
+#include "gate/instruction_gate.h"
 #include "gate/result_comparison.h"
 
 namespace tcsb {
@@ -18,8 +19,12 @@ struct GateOutcome {
   bool absolute_gated = false;                  ///< --absolute: step times gate too (one Holm family with the ratios)
   std::vector<TimingDecision> ratio_decisions;  ///< parallel to comparison.ratios
   std::vector<TimingDecision> step_decisions;   ///< parallel to comparison.step_ms
-  std::size_t gated_metrics = 0;                ///< reliable metrics in the gated family (the Holm family size)
-  std::size_t regressions = 0;                  ///< gated metrics that regressed
+  /// Runs measured with `--measure instructions`: the counts gate (one decision per case with counts), the timings
+  /// (callgrind's) are neither gated nor shown.
+  bool counts = false;
+  std::vector<InstructionDecision> instruction_decisions;  ///< parallel to comparison.instructions
+  std::size_t gated_metrics = 0;  ///< reliable metrics in the gated family (the Holm family size), or counted cases
+  std::size_t regressions = 0;                  ///< gated metrics (or counted cases) that regressed
   std::size_t warnings = 0;                     ///< step times that would have regressed had they been gated
 
   /// Behaviour changed: a deterministic quantity differs, or a case or repetition is not matched one to one.

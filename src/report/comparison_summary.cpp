@@ -88,11 +88,44 @@ void change_rows(std::ostream& out, const std::vector<BehaviourChange>& changes)
   }
 }
 
+std::string count_text(std::int64_t n) { return formatted("%.0f", static_cast<double>(n)); }
+
+/// The instruction gate's rows: one per case (total, own, Bullet, change, verdict), and under each regressed case the
+/// functions whose own instructions grew most.
+void instruction_rows(std::ostream& out, const GateOutcome& o) {
+  out << "| case | base instructions | new instructions | change % | TC-SB own (base → new) | Bullet (base → new) "
+         "| verdict |\n";
+  out << "|---|---:|---:|---:|---:|---:|---|\n";
+  for (const InstructionDecision& d : o.instruction_decisions) {
+    const std::string change = d.change ? formatted("%+.3f", 100.0 * *d.change) : "–";
+    const char* verdict = d.regressed ? "**REGRESSED**" : d.improved ? "fewer" : "ok";
+    out << "| " << cell(d.case_label) << " | " << count_text(d.base.total) << " | " << count_text(d.next.total)
+        << " | " << change << " | " << count_text(d.base.own) << " → " << count_text(d.next.own) << " | "
+        << count_text(d.base.bullet) << " → " << count_text(d.next.bullet) << " | " << verdict << " |\n";
+  }
+  for (const InstructionDecision& d : o.instruction_decisions) {
+    if (d.shifts.empty()) continue;
+    out << "\nWhere `" << terminal_safe(d.case_label) << "` grew (own instructions per function, largest increase "
+        << "first):\n\n| function | base | new | change |\n|---|---:|---:|---:|\n";
+    for (const FunctionShift& f : d.shifts) {
+      out << "| " << cell(f.name) << " | " << (f.base > 0 || f.listed_in_both ? count_text(f.base) : "not listed")
+          << " | " << count_text(f.next) << " | +" << count_text(f.next - f.base) << " |\n";
+    }
+  }
+}
+
 }  // namespace
 
 std::string comparison_verdict_line(const GateOutcome& o) {
   const ResultComparison& c = o.comparison;
   std::string line = o.pass() ? "PASS: " : "FAIL: ";
+  if (o.counts) {
+    return line + plural(o.regressions, "regression", "regressions") + ", " +
+           plural(c.changes.size(), "behaviour change", "behaviour changes") + " (" +
+           plural(o.gated_metrics, "case's instruction count", "cases' instruction counts") + " gated at threshold " +
+           formatted("%g", 100.0 * o.settings.threshold) + " %" +
+           (o.timings_decided() ? "" : "; counts undecided: " + undecided_reason(o)) + ")";
+  }
   line += plural(o.regressions, "regression", "regressions") + ", " +
           plural(c.changes.size(), "behaviour change", "behaviour changes");
   line += " (" + plural(o.gated_metrics, "timing metric", "timing metrics") + " gated at alpha " +
@@ -107,6 +140,7 @@ std::string comparison_verdict_line(const GateOutcome& o) {
 }
 
 std::string undecided_reason(const GateOutcome& o) {
+  if (o.counts) return "no case has instruction counts in both runs";
   std::size_t family = o.ratio_decisions.size();
   std::size_t most = 0;  // the most samples any gated metric has on its smaller side
   const auto scan = [&](const std::vector<TimingDecision>& decisions) {
@@ -144,6 +178,23 @@ std::string comparison_summary_markdown(const GateOutcome& o, const ResultView& 
   if (o.warnings > 0) out << ", " << plural(o.warnings, "warning", "warnings");
   out << ".**\n\n";
 
+  if (o.counts) {
+    out << "How: instructions counted by callgrind (`tcsb run --measure instructions`) over every timed step, TC-SB's "
+           "own work and Bullet's step apart; a build counts the same in every run, so there is no noise to test "
+           "against: a case whose total grows by more than "
+        << formatted("%g", 100.0 * o.settings.threshold)
+        << " % regressed. Every case and repetition must be present once in each run, and the deterministic metrics "
+           "(N, L, I, operations, status, final-state hash) must match exactly. Step times under callgrind are not "
+           "compared.\n\n";
+    if (!c.changes.empty())
+      out << "Behaviour changed (rows below). If that is intended, refresh the baseline in the same commit.\n\n";
+    instruction_rows(out, o);
+    if (!c.changes.empty()) {
+      out << "\n| case | metric | base | new | change % | p-value | verdict |\n|---|---|---:|---:|---:|---:|---|\n";
+      change_rows(out, c.changes);
+    }
+    return out.str();
+  }
   out << "How: every case (by label) and repetition (by number) must be present once in each run, and their "
          "deterministic metrics (N, L, I, operations, status, final-state hash) must match exactly. Timing: a "
          "metric regresses when the one-sided Mann–Whitney U test over repetitions is significant at family-wise "
