@@ -26,8 +26,8 @@ void injected_step_work([[maybe_unused]] StepClock::time_point t0, [[maybe_unuse
   if (measure_instructions) {
     // ci-instructions' TC-SB steps cost about this many instructions per Bullet node plus link (own work and
     // Bullet's solve together); the loop below costs about kLoopInstructions per iteration.
-    constexpr double kStepInstructionsPerElement = 1.0;
-    constexpr double kLoopInstructions = 1.0;
+    constexpr double kStepInstructionsPerElement = 300.0;
+    constexpr double kLoopInstructions = 6.0;
     const double elements = static_cast<double>(body.m_nodes.size() + body.m_links.size());
     const auto iterations = static_cast<std::uint64_t>(kFraction * kStepInstructionsPerElement * elements / kLoopInstructions);
     volatile std::uint64_t sink = 0;

@@ -104,6 +104,7 @@ struct CompareArgs {
   std::optional<double> threshold;
   bool absolute = false;    ///< gate absolute step times too (dedicated machines)
   std::string summary;      ///< Markdown summary file; empty: stderr
+  std::string summary_json;  ///< JSON summary file (report/gate_summary_json.h); empty: none
 };
 
 /// Options of `tcsb tax` (defaults: the scaling target, gate/adaptivity_tax.h's TaxTarget).

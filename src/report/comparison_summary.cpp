@@ -47,6 +47,10 @@ std::string verdict_cell(const TimingDecision& d, bool gated, std::size_t min_sa
     case TimingVerdict::kRegressed: return gated ? "**REGRESSED**" : "slower (warning only)";
     case TimingVerdict::kImproved: return "faster";
     case TimingVerdict::kUnchanged: return "ok";
+    case TimingVerdict::kUndecided:
+      if (!gated) return "undecided (not gated)";
+      return d.more_repetitions ? "**undecided** (~" + std::to_string(*d.more_repetitions) + " more repetitions)"
+                                : std::string("**undecided**");
     case TimingVerdict::kUnreliable: break;
   }
   if (!d.change) return "unreliable (no data)";
@@ -57,7 +61,9 @@ void timing_rows(std::ostream& out, const std::vector<TimingSeries>& series,
                  const std::vector<TimingDecision>& decisions, bool gated, std::size_t min_samples) {
   for (std::size_t i = 0; i < series.size() && i < decisions.size(); ++i) {
     const TimingDecision& d = decisions[i];
-    const std::string change = d.change ? formatted("%+.1f", 100.0 * *d.change) : "–";
+    std::string change = d.change ? formatted("%+.1f", 100.0 * *d.change) : "–";
+    if (d.interval)
+      change += formatted(" [%+.1f, ", 100.0 * d.interval->low) + formatted("%+.1f]", 100.0 * d.interval->high);
     out << "| " << cell(series[i].case_label) << " | " << series[i].metric << " | " << or_dash(d.base_median, "%.4g")
         << " | " << or_dash(d.next_median, "%.4g") << " | " << change << " | " << or_dash(d.p_value, "%.2g") << " | "
         << verdict_cell(d, gated, min_samples) << " |\n";
@@ -114,11 +120,21 @@ void instruction_rows(std::ostream& out, const GateOutcome& o) {
   }
 }
 
+/// "PASS", "FAIL" or "UNDECIDED".
+std::string verdict_word(const GateOutcome& o) {
+  switch (o.verdict()) {
+    case Verdict::kPass: return "PASS";
+    case Verdict::kUndecided: return "UNDECIDED";
+    case Verdict::kFail: break;
+  }
+  return "FAIL";
+}
+
 }  // namespace
 
 std::string comparison_verdict_line(const GateOutcome& o) {
   const ResultComparison& c = o.comparison;
-  std::string line = o.pass() ? "PASS: " : "FAIL: ";
+  std::string line = verdict_word(o) + ": ";
   if (o.counts) {
     return line + plural(o.regressions, "regression", "regressions") + ", " +
            plural(c.changes.size(), "behaviour change", "behaviour changes") + " (" +
@@ -128,6 +144,10 @@ std::string comparison_verdict_line(const GateOutcome& o) {
   }
   line += plural(o.regressions, "regression", "regressions") + ", " +
           plural(c.changes.size(), "behaviour change", "behaviour changes");
+  if (o.undecided > 0) {
+    line += ", " + std::to_string(o.undecided) + " undecided (about " + std::to_string(o.more_repetitions()) +
+            " more repetitions per run would likely decide)";
+  }
   line += " (" + plural(o.gated_metrics, "timing metric", "timing metrics") + " gated at alpha " +
           formatted("%g", o.settings.alpha) + ", threshold " + formatted("%g", 100.0 * o.settings.threshold) + " %";
   if (const std::size_t unreliable = o.unreliable_metrics(); unreliable > 0) {
@@ -167,7 +187,7 @@ std::string undecided_reason(const GateOutcome& o) {
 std::string comparison_summary_markdown(const GateOutcome& o, const ResultView& base, const ResultView& next) {
   const ResultComparison& c = o.comparison;
   std::ostringstream out;
-  out << "## tcsb compare: " << (o.pass() ? "PASS" : "FAIL") << "\n\n";
+  out << "## tcsb compare: " << verdict_word(o) << "\n\n";
   out << "- Base: " << describe_run(base) << "\n";
   out << "- New: " << describe_run(next) << "\n";
   out << "- Suite `" << terminal_safe(c.suite_name) << "` (sha256 `" << c.suite_sha256.substr(0, 12)
@@ -197,11 +217,15 @@ std::string comparison_summary_markdown(const GateOutcome& o, const ResultView& 
   }
   out << "How: every case (by label) and repetition (by number) must be present once in each run, and their "
          "deterministic metrics (N, L, I, operations, status, final-state hash) must match exactly. Timing: a "
-         "metric regresses when the one-sided Mann–Whitney U test over repetitions is significant at family-wise "
-         "α = "
-      << formatted("%g", o.settings.alpha) << " (Holm over the " << o.gated_metrics
-      << " gated metrics; p-values below are Holm-adjusted) and its median grows by more than "
-      << formatted("%g", 100.0 * o.settings.threshold) << " %; with fewer than " << o.settings.min_samples
+         "metric's change of the median gets a bootstrap interval (in brackets; each run's repetitions resampled), "
+         "each end a one-sided test at α / m = "
+      << formatted("%g", o.settings.alpha) << " / " << o.gated_metrics << " over the gated metrics, and the threshold ("
+      << formatted("%g", 100.0 * o.settings.threshold)
+      << " %) is the margin: the whole interval above it is a regression, the whole interval at or below it is no "
+         "regression, and an interval across it is undecided (exit 4), with about how many more repetitions per run "
+         "would decide it. The p-value is the one-sided Mann–Whitney U test's, Holm-adjusted, for reference. With "
+         "fewer than "
+      << o.settings.min_samples
       << " repetitions on a side a metric is unreliable and never fails, and with no reliable gated metric the gate "
          "cannot pass. Gated: `"
       << kRatioMetric << "` (TC-SB step time / plain step time of the same net, per repetition, same run)"
