@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 #include <numeric>
+#include <random>
 #include <stdexcept>
 
 #include "analysis/claim.h"

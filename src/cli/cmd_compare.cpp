@@ -46,11 +46,10 @@ void warn_about_contexts(const LoadedResult& base, const LoadedResult& next, con
 }  // namespace
 
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
-  CLI::App* cmd =
-      app.add_subcommand("compare",
-                         "Regression gate: compare two results of the same suite and measure (exit 0 pass, 1 regression "
-                         "or changed behaviour, 2 bad input, different suites or measures or nothing to decide on, 4 "
-                         "timings undecided)");
+  CLI::App* cmd = app.add_subcommand(
+      "compare", "Regression gate: compare two results of the same suite and measure (exit 0 pass, 1 regression "
+                 "or changed behaviour, 2 bad input, different suites or measures or nothing to decide on, 4 "
+                 "timings undecided)");
   cmd->add_option("base", args.base, "Baseline result (a `tcsb run` JSON file)")->required();
   cmd->add_option("new", args.next, "New result of the same suite")->required();
   cmd->add_option("--alpha", args.alpha, "Family-wise significance level of the U tests (Holm), in (0, 1)")

@@ -141,8 +141,7 @@ int run_and_report(const Suite& suite, const RunArgs& args) {
     counts = callgrind_out_file();
   }
   RunResult result = run_on_console(suite, args.quiet, shard, measure);
-  if (measure == Measure::kInstructions)
-    attach_instruction_counts(result, read_meter_dumps(counts), counts.string());
+  if (measure == Measure::kInstructions) attach_instruction_counts(result, read_meter_dumps(counts), counts.string());
   // A shard's result carries what `tcsb merge` needs (--shard takes the native JSON only).
   return write_report(shard ? json_text(shard_json(result)) : format->render(result), args.out);
 }

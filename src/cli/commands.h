@@ -96,14 +96,14 @@ inline constexpr double kInstructionThreshold = 0.005;
 
 /// Options of `tcsb compare`.
 struct CompareArgs {
-  std::string base;         ///< baseline result file
-  std::string next;         ///< new result file
-  double alpha = 0.05;      ///< family-wise significance level (Holm over the gated metrics)
+  std::string base;     ///< baseline result file
+  std::string next;     ///< new result file
+  double alpha = 0.05;  ///< family-wise significance level (Holm over the gated metrics)
   /// Smallest relative change that fails the gate (a timing median's, or an instruction count's); absent: 5 % for
   /// times, kInstructionThreshold for counts.
   std::optional<double> threshold;
-  bool absolute = false;    ///< gate absolute step times too (dedicated machines)
-  std::string summary;      ///< Markdown summary file; empty: stderr
+  bool absolute = false;     ///< gate absolute step times too (dedicated machines)
+  std::string summary;       ///< Markdown summary file; empty: stderr
   std::string summary_json;  ///< JSON summary file (report/gate_summary_json.h); empty: none
 };
 

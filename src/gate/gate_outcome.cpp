@@ -40,7 +40,8 @@ int GateOutcome::more_repetitions() const {
   int most = 0;
   const auto scan = [&](const std::vector<TimingDecision>& decisions) {
     for (const TimingDecision& d : decisions)
-      if (d.verdict == TimingVerdict::kUndecided) most = std::max(most, d.more_repetitions.value_or(kMaxMoreRepetitions));
+      if (d.verdict == TimingVerdict::kUndecided)
+        most = std::max(most, d.more_repetitions.value_or(kMaxMoreRepetitions));
   };
   scan(ratio_decisions);
   if (absolute_gated) scan(step_decisions);

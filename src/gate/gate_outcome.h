@@ -25,9 +25,9 @@ struct GateOutcome {
   bool counts = false;
   std::vector<InstructionDecision> instruction_decisions;  ///< parallel to comparison.instructions
   std::size_t gated_metrics = 0;  ///< reliable metrics in the gated family (the Holm family size), or counted cases
-  std::size_t regressions = 0;                  ///< gated metrics (or counted cases) that regressed
-  std::size_t undecided = 0;                    ///< gated metrics whose interval straddles the threshold
-  std::size_t warnings = 0;                     ///< step times that would have regressed had they been gated
+  std::size_t regressions = 0;    ///< gated metrics (or counted cases) that regressed
+  std::size_t undecided = 0;      ///< gated metrics whose interval straddles the threshold
+  std::size_t warnings = 0;       ///< step times that would have regressed had they been gated
 
   /// Behaviour changed: a deterministic quantity differs, or a case or repetition is not matched one to one.
   bool behaviour_changed() const { return !comparison.changes.empty(); }

@@ -22,10 +22,10 @@ struct FunctionShift {
 /// One case's counts in both runs, and what the gate concludes.
 struct InstructionDecision {
   std::string case_label;
-  InstructionsView base, next;   ///< the counts as recorded (functions included)
-  std::optional<double> change;  ///< next.total / base.total - 1; nullopt when base.total is 0
-  bool regressed = false;        ///< change > threshold, or instructions where the base had none
-  bool improved = false;         ///< -change > threshold
+  InstructionsView base, next;        ///< the counts as recorded (functions included)
+  std::optional<double> change;       ///< next.total / base.total - 1; nullopt when base.total is 0
+  bool regressed = false;             ///< change > threshold, or instructions where the base had none
+  bool improved = false;              ///< -change > threshold
   std::vector<FunctionShift> shifts;  ///< the largest increases first, at most kShiftsShown (regressions only)
 };
 

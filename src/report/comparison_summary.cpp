@@ -105,8 +105,8 @@ void instruction_rows(std::ostream& out, const GateOutcome& o) {
   for (const InstructionDecision& d : o.instruction_decisions) {
     const std::string change = d.change ? formatted("%+.3f", 100.0 * *d.change) : "–";
     const char* verdict = d.regressed ? "**REGRESSED**" : d.improved ? "fewer" : "ok";
-    out << "| " << cell(d.case_label) << " | " << count_text(d.base.total) << " | " << count_text(d.next.total)
-        << " | " << change << " | " << count_text(d.base.own) << " → " << count_text(d.next.own) << " | "
+    out << "| " << cell(d.case_label) << " | " << count_text(d.base.total) << " | " << count_text(d.next.total) << " | "
+        << change << " | " << count_text(d.base.own) << " → " << count_text(d.next.own) << " | "
         << count_text(d.base.bullet) << " → " << count_text(d.next.bullet) << " | " << verdict << " |\n";
   }
   for (const InstructionDecision& d : o.instruction_decisions) {

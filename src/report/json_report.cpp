@@ -188,7 +188,8 @@ ojson case_json(const RunResult& result, std::size_t index) {
   out["repetitions"] = std::move(reps);
   if (c.instructions) {  // --measure instructions only
     ojson functions = ojson::array();
-    for (const FunctionCount& f : c.functions) functions.push_back({{"name", f.name}, {"instructions", f.instructions}});
+    for (const FunctionCount& f : c.functions)
+      functions.push_back({{"name", f.name}, {"instructions", f.instructions}});
     out["instructions"] = instructions_json(*c.instructions);
     out["instructions"]["functions"] = std::move(functions);
   }

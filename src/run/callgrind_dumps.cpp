@@ -116,8 +116,8 @@ MeterDumps parse_meter_dumps(std::istream& in, const std::string& file) {
       names.intern(l.substr(4));  // registers a compressed name first written in a call
     } else if (l.starts_with("calls=")) {
       after_calls = true;  // the next cost line is the call's inclusive cost, not the caller's own
-    } else if (!l.empty() && (std::isdigit(static_cast<unsigned char>(l[0])) || l[0] == '+' || l[0] == '-' ||
-                              l[0] == '*')) {
+    } else if (!l.empty() &&
+               (std::isdigit(static_cast<unsigned char>(l[0])) || l[0] == '+' || l[0] == '-' || l[0] == '*')) {
       if (after_calls) {
         after_calls = false;
         continue;

@@ -36,8 +36,9 @@ class GateVerdicts : public Cli {
       c["instructions"] = {{"own", o},
                            {"bullet", bullet},
                            {"total", o + bullet},
-                           {"functions", ojson::array({{{"name", "btSoftBody::PSolve_Links"}, {"instructions", bullet}},
-                                                       {{"name", "TcSoftBody::advance_blends"}, {"instructions", o}}})}};
+                           {"functions",
+                            ojson::array({{{"name", "btSoftBody::PSolve_Links"}, {"instructions", bullet}},
+                                          {{"name", "TcSoftBody::advance_blends"}, {"instructions", o}}})}};
     }
     return doc;
   }

@@ -77,9 +77,9 @@ TEST(CallgrindDumps, ReadsEachMeterDumpsSummaryAndOwnCosts) {
 }
 
 TEST(CallgrindDumps, CompressedNamesAreResolved) {
-  const MeterDumps d = parse(
-      "part: 1\ndesc: Trigger: Client Request: tcsb-part 0\npositions: line\nsummary: 7\nfn=(1) f\n0 3\n"
-      "part: 2\ndesc: Trigger: Client Request: tcsb-part 1\nsummary: 4\nfn=(1)\n0 4\n");
+  const MeterDumps d =
+      parse("part: 1\ndesc: Trigger: Client Request: tcsb-part 0\npositions: line\nsummary: 7\nfn=(1) f\n0 3\n"
+            "part: 2\ndesc: Trigger: Client Request: tcsb-part 1\nsummary: 4\nfn=(1)\n0 4\n");
   ASSERT_EQ(d.names.size(), 1u);
   EXPECT_EQ(d.names[0], "f");
   EXPECT_EQ(d.dumps[1]->functions.at(0).second, 4u);
