@@ -13,6 +13,7 @@
 
 #include "case/instruction_meter.h"
 #include "cli/cli_common.h"
+#include "cli/temporary_directory.h"
 
 namespace tcsb::cli {
 namespace {
@@ -48,26 +49,6 @@ bool on_path(const std::string& program) {
   return false;
 }
 
-/// A scratch directory, removed when this goes out of scope.
-class ScratchDirectory {
- public:
-  ScratchDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "tcsb-callgrind-XXXXXX").string();
-    if (!::mkdtemp(pattern.data())) throw std::system_error(errno, std::generic_category(), "mkdtemp " + pattern);
-    path_ = pattern;
-  }
-  ~ScratchDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchDirectory(const ScratchDirectory&) = delete;
-  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
 }  // namespace
 
 int rerun_under_callgrind() {
@@ -76,7 +57,7 @@ int rerun_under_callgrind() {
   if (!on_path("valgrind"))
     throw UsageError("--measure instructions: valgrind is not on PATH (install Debian's valgrind package)");
   const std::vector<std::string> own = own_command_line();
-  const ScratchDirectory scratch;
+  const TemporaryDirectory scratch("tcsb-callgrind", "--measure instructions");
   const std::filesystem::path out = scratch.path() / "callgrind.out";
   // One file with every dump (--combine-dumps), names written out in full (--compress-strings=no): what
   // run/callgrind_dumps.h reads. -q: callgrind's own banner would bury tcsb's messages.
