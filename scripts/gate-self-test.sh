@@ -4,7 +4,8 @@
 # TC-SB step becomes TCSB_INJECT_STEP_PERCENT % more expensive in what a run measures (src/case/case_body.cpp), a
 # known fraction of the step rather than a fixed delay. Checks that `tcsb compare`
 #   wall-time gate (suite ci, at CI's threshold):
-#   1. passes an unchanged rerun of the ci suite                                        (exit 0),
+#   1. does not fail an unchanged rerun of the ci suite (exit 0; exit 4, undecided, when the machine is too loaded
+#      for its intervals to clear the threshold),
 #   2. fails a build whose TC-SB step takes TCSB_GATE_TIME_PERCENT % longer (default 100) as a regression (exit 1),
 #   3. fails a result whose first final-state hash was edited as changed behaviour       (exit 1),
 #   4. refuses a run of a different suite (the ci suite with one more step)              (exit 2);
@@ -32,8 +33,8 @@ cmake -S . -B "$slowed" -G Ninja -DCMAKE_BUILD_TYPE=Release -DTCSB_INJECT_SLOWDO
 cmake --build "$slowed" --target tcsb
 
 failed=0
-# expect CODE PATTERN DESCRIPTION BASE NEW [FLAGS...]: runs `tcsb compare BASE NEW FLAGS`, checks the exit code and
-# that the last stderr line matches PATTERN, and prints that line.
+# expect CODES PATTERN DESCRIPTION BASE NEW [FLAGS...]: runs `tcsb compare BASE NEW FLAGS`, checks that the exit code
+# is one of CODES (e.g. "0" or "0|4") and that the last stderr line matches PATTERN, and prints that line.
 expect() {
   local want=$1 pattern=$2 what=$3 base=$4 next=$5 got
   shift 5
@@ -43,7 +44,7 @@ expect() {
   set -e
   local last
   last=$(tail -n 1 "$tmp/err")
-  if [ "$got" = "$want" ] && grep -q -- "$pattern" <<<"$last"; then
+  if grep -qxE -- "$want" <<<"$got" && grep -q -- "$pattern" <<<"$last"; then
     echo "gate-self-test: ok    $what: exit $got: $last"
   else
     echo "gate-self-test: FAIL  $what: exit $got (expected $want): $last"
@@ -52,8 +53,8 @@ expect() {
 }
 
 "$build/tcsb" run ci --quiet --out "$tmp/rerun.json"
-expect 0 "PASS: 0 regressions, 0 behaviour changes" "unchanged rerun" "$baseline" "$tmp/rerun.json" \
-       --threshold "$threshold"
+expect "0|4" "\(PASS\|UNDECIDED\): 0 regressions, 0 behaviour changes" "unchanged rerun" "$baseline" \
+       "$tmp/rerun.json" --threshold "$threshold"
 
 TCSB_INJECT_STEP_PERCENT=$time_percent "$slowed/tcsb" run ci --quiet --out "$tmp/slowed.json"
 expect 1 "FAIL: [1-9][0-9]* regressions*, 0 behaviour changes" "TC-SB's step $time_percent % longer" \
