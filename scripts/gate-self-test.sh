@@ -14,14 +14,14 @@
 #   6. fails the same build with 1 % more instructions in each TC-SB step                (exit 1),
 #   7. refuses to compare a time result with a count result                             (exit 2).
 # Usage: bash scripts/gate-self-test.sh   (TCSB_BUILD_DIR, default build; the slowed tree is build-inject;
-#        TCSB_GATE_THRESHOLD, default 0.25: keep it equal to the --threshold scripts/test.sh gates wall time with)
+#        TCSB_GATE_THRESHOLD, default 0.10: keep it equal to the --threshold scripts/test.sh gates wall time with)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${TCSB_BUILD_DIR:-build}
 slowed=build-inject
 baseline=results/baselines/ci.json
 counts=results/baselines/ci-instructions.json
-threshold=${TCSB_GATE_THRESHOLD:-0.25}
+threshold=${TCSB_GATE_THRESHOLD:-0.10}
 time_percent=${TCSB_GATE_TIME_PERCENT:-100}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
