@@ -145,8 +145,9 @@ std::string comparison_verdict_line(const GateOutcome& o) {
   line += plural(o.regressions, "regression", "regressions") + ", " +
           plural(c.changes.size(), "behaviour change", "behaviour changes");
   if (o.undecided > 0) {
-    line += ", " + std::to_string(o.undecided) + " undecided (about " + std::to_string(o.more_repetitions()) +
-            " more repetitions per run would likely decide)";
+    line += ", " + std::to_string(o.undecided) + " undecided (about " +
+            plural(static_cast<std::size_t>(o.more_repetitions()), "more repetition", "more repetitions") +
+            " per run would likely decide)";
   }
   line += " (" + plural(o.gated_metrics, "timing metric", "timing metrics") + " gated at alpha " +
           formatted("%g", o.settings.alpha) + ", threshold " + formatted("%g", 100.0 * o.settings.threshold) + " %";
