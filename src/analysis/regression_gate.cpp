@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
+#include <random>
 #include <stdexcept>
 
+#include "analysis/claim.h"
 #include "analysis/mann_whitney.h"
 #include "analysis/relative_change.h"
+#include "analysis/sequential_looks.h"
 #include "analysis/statistics.h"
 
 namespace tcsb {
@@ -27,6 +31,52 @@ std::vector<double> holm_adjust(std::span<const double> p_values) {
     adjusted[order[i]] = running;
   }
   return adjusted;
+}
+
+namespace {
+
+/// The percentile bootstrap interval of the median's relative change, each side resampled on its own.
+std::optional<Interval> change_interval(const TimingSamples& s, double one_sided_alpha, std::uint64_t seed) {
+  // Each tail rests on kReplicatesPerTail replicates, as reproduce's intervals do (analysis/sequential_looks.h).
+  const auto resamples = static_cast<std::size_t>(std::ceil(kReplicatesPerTail / one_sided_alpha - 1e-9));
+  std::mt19937_64 rng(seed);
+  std::vector<double> replicates, base(s.base.size()), next(s.next.size());
+  replicates.reserve(resamples);
+  for (std::size_t r = 0; r < resamples; ++r) {
+    const std::vector<std::size_t> b = resample_indices(s.base.size(), rng);
+    const std::vector<std::size_t> n = resample_indices(s.next.size(), rng);
+    for (std::size_t i = 0; i < b.size(); ++i) base[i] = s.base[b[i]];
+    for (std::size_t i = 0; i < n.size(); ++i) next[i] = s.next[n[i]];
+    const double mb = median(base);
+    const std::optional<double> change = safe_ratio(median(next) - mb, mb);
+    replicates.push_back(change ? *change : std::numeric_limits<double>::quiet_NaN());
+  }
+  return percentile_interval(std::move(replicates), 1.0 - 2.0 * one_sided_alpha);
+}
+
+/// The three verdicts of a claim "the change is at most the threshold" judged on its interval (analysis/claim.h):
+/// pass is no regression (or an improvement beyond the threshold), fail a regression.
+TimingVerdict interval_verdict(double change, const Interval& interval, double threshold) {
+  Claim claim = check_claim("no_regression", "", Comparison::kAtMost, threshold, 0.0, change, Evidence::kRepeated);
+  claim.interval = interval;
+  switch (verdict(claim)) {
+    case Verdict::kFail: return TimingVerdict::kRegressed;
+    case Verdict::kUndecided: return TimingVerdict::kUndecided;
+    case Verdict::kPass: break;
+  }
+  return interval.high < -threshold ? TimingVerdict::kImproved : TimingVerdict::kUnchanged;
+}
+
+}  // namespace
+
+std::optional<int> repetitions_to_decide(double change, const Interval& interval, double threshold, std::size_t n) {
+  // The end facing the threshold, and how far it must come in: it has to pass the threshold.
+  const double reach = change < threshold ? interval.high - change : change - interval.low;
+  const double room = std::abs(threshold - change);
+  if (!(room > 0.0) || !(reach > room) || n == 0) return std::nullopt;
+  const double needed = static_cast<double>(n) * (reach / room) * (reach / room);  // reach * sqrt(n / N) = room
+  const double extra = std::ceil(needed - static_cast<double>(n));
+  return static_cast<int>(std::clamp(extra, 1.0, static_cast<double>(kMaxMoreRepetitions)));
 }
 
 std::vector<TimingDecision> decide_timings(std::span<const TimingSamples> family, const GateSettings& settings) {
@@ -58,17 +108,22 @@ std::vector<TimingDecision> decide_timings(std::span<const TimingSamples> family
   }
   const std::vector<double> adj_larger = holm_adjust(p_larger);
   const std::vector<double> adj_smaller = holm_adjust(p_smaller);
+  const double one_sided_alpha = settings.alpha / static_cast<double>(std::max<std::size_t>(reliable.size(), 1));
   for (std::size_t k = 0; k < reliable.size(); ++k) {
     TimingDecision& d = decisions[reliable[k]];
     const bool larger = *d.change >= 0.0;
     d.p_value = larger ? adj_larger[k] : adj_smaller[k];
-    const bool significant = *d.p_value <= settings.alpha;
-    if (significant && larger && *d.change > settings.threshold)
-      d.verdict = TimingVerdict::kRegressed;
-    else if (significant && !larger && -*d.change > settings.threshold)
-      d.verdict = TimingVerdict::kImproved;
-    else
-      d.verdict = TimingVerdict::kUnchanged;
+    // One seed per metric, derived from its place in the family: the same files give the same verdicts.
+    d.interval = change_interval(family[reliable[k]], one_sided_alpha, settings.seed + reliable[k]);
+    if (!d.interval) {
+      d.verdict = TimingVerdict::kUnreliable;  // the change is undefined on too many resamples (a zero median)
+      continue;
+    }
+    d.confidence = 1.0 - 2.0 * one_sided_alpha;
+    d.verdict = interval_verdict(*d.change, *d.interval, settings.threshold);
+    if (d.verdict == TimingVerdict::kUndecided)
+      d.more_repetitions =
+          repetitions_to_decide(*d.change, *d.interval, settings.threshold, std::min(d.base_count, d.next_count));
   }
   return decisions;
 }
@@ -79,6 +134,7 @@ const char* verdict_name(TimingVerdict verdict) {
     case TimingVerdict::kRegressed: return "regressed";
     case TimingVerdict::kImproved: return "improved";
     case TimingVerdict::kUnreliable: return "unreliable";
+    case TimingVerdict::kUndecided: return "undecided";
   }
   return "unreliable";
 }

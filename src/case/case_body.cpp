@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "case/step_clock.h"
 #include "softbody/bullet_setup.h"
@@ -12,12 +14,53 @@ namespace tcsb {
 
 namespace {
 
-/// Gate self-test builds only (CMake option TCSB_INJECT_STEP_DELAY_US): a real, measurable slowdown of TC-SB's
-/// step. Nothing in other builds.
-void injected_step_delay() {
-#if TCSB_INJECT_STEP_DELAY_US > 0
-  const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(TCSB_INJECT_STEP_DELAY_US);
-  while (std::chrono::steady_clock::now() < until) {
+#if TCSB_INJECT_SLOWDOWN
+/// The slowdown asked for (environment variable TCSB_INJECT_STEP_PERCENT, a percentage; unset: none), read once.
+double injected_fraction() {
+  static const double fraction = [] {
+    const char* text = std::getenv("TCSB_INJECT_STEP_PERCENT");
+    if (!text || !*text) return 0.0;
+    char* end = nullptr;
+    const double percent = std::strtod(text, &end);
+    if (*end != '\0' || !(percent >= 0.0 && percent <= 1000.0)) {
+      std::fprintf(stderr, "tcsb: error: TCSB_INJECT_STEP_PERCENT: expected a percentage in [0, 1000], got \"%s\"\n",
+                   text);
+      std::exit(2);
+    }
+    return percent / 100.0;
+  }();
+  return fraction;
+}
+#endif
+
+/// Gate self-test builds only (CMake option TCSB_INJECT_SLOWDOWN): TC-SB's step made p % more expensive in what the
+/// run measures (p from TCSB_INJECT_STEP_PERCENT), so the gates can be shown to catch a slowdown of a known fraction
+/// of the step, whatever the net. Wall time: a busy-wait of p % of the step's own time so far (t0: when the step
+/// began). Instructions (`measure_instructions`): a busy-wait would count differently in every run, so a loop of a
+/// fixed number of instructions per Bullet node and link instead, sized from TC-SB's counted instructions per node
+/// and link: the count it adds is exact, and `tcsb compare` of the two builds prints it per case. Nothing in other
+/// builds: no branch, no clock read.
+void injected_step_work([[maybe_unused]] StepClock::time_point t0, [[maybe_unused]] const btSoftBody& body,
+                        [[maybe_unused]] bool measure_instructions) {
+#if TCSB_INJECT_SLOWDOWN
+  const double fraction = injected_fraction();
+  if (fraction <= 0.0) return;
+  if (measure_instructions) {
+    // ci-instructions' TC-SB steps count about 300 instructions per Bullet node plus link (own work and Bullet's
+    // step together, 268-308 over its cases), and the loop below about 6 per iteration: with 1 %, `tcsb compare`
+    // shows +0.98 to +1.12 % per TC-SB case (docs/methodology.md, "The gates' error rates").
+    constexpr double kStepInstructionsPerElement = 300.0;
+    constexpr double kLoopInstructions = 6.0;
+    const double elements = static_cast<double>(body.m_nodes.size() + body.m_links.size());
+    const auto iterations =
+        static_cast<std::uint64_t>(fraction * kStepInstructionsPerElement * elements / kLoopInstructions);
+    volatile std::uint64_t sink = 0;
+    for (std::uint64_t i = 0; i < iterations; ++i) sink = sink + i;
+    return;
+  }
+  const StepClock::time_point now = StepClock::now();
+  const auto until = now + std::chrono::duration_cast<StepClock::duration>((now - t0) * fraction);
+  while (StepClock::now() < until) {
   }
 #endif
 }
@@ -27,7 +70,10 @@ class StockBody final : public CaseBody {
  public:
   StockBody(SceneWorld& world, std::unique_ptr<btSoftBody> body)
       : world_(world), body_(std::move(body)), attachment_(world.attach(*body_)) {}
-  void step(btScalar dt) override { world_.step(dt); }
+  void step(btScalar dt) override {
+    world_.step(dt);
+    end_part(StepPart::kBullet);
+  }
   const btSoftBody& bullet() const override { return *body_; }
 
  private:
@@ -48,11 +94,14 @@ class TreeCutBody final : public CaseBody {
     const StepClock::time_point t1 = StepClock::now();
     if (controller_) controller_->before_step(*body_);
     const StepClock::time_point t2 = StepClock::now();
+    end_part(StepPart::kOwn);
     world_.step(dt);
-    injected_step_delay();
+    end_part(StepPart::kBullet);
     const StepClock::time_point t3 = StepClock::now();
     if (controller_) controller_->after_step(*body_);
+    injected_step_work(t0, *body_, counting());
     const StepClock::time_point t4 = StepClock::now();
+    end_part(StepPart::kOwn);
     phases_ = {ms_between(t0, t1), ms_between(t1, t2) + ms_between(t3, t4), ms_between(t2, t3)};
   }
   const StepPhases* phases() const override { return &phases_; }

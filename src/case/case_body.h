@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include "case/instruction_meter.h"
 #include "feedback/controller.h"
 #include "net/net.h"
 #include "scene/scene_world.h"
@@ -40,10 +41,23 @@ class CaseBody {
   virtual const StepPhases* phases() const { return nullptr; }
   /// The TC-SB body, if this is one.
   virtual TcSoftBody* tc() { return nullptr; }
+  /// Counts the parts of each step with `meter` (`tcsb run --measure instructions`); nullptr (the default): not.
+  void set_meter(InstructionMeter* meter) { meter_ = meter; }
   /// Other bodies step for a while (see Controller::pause()).
   virtual void pause() {}
   /// This body steps again (see Controller::resume()).
   virtual void resume() {}
+
+ protected:
+  /// Ends a part of the step on the meter, if the step is counted.
+  void end_part(StepPart part) {
+    if (meter_) meter_->end_part(part);
+  }
+  /// The run counts instructions (a meter is set).
+  bool counting() const { return meter_ != nullptr; }
+
+ private:
+  InstructionMeter* meter_ = nullptr;
 };
 
 /// A node budget: the compression target times the net's node count, rounded. Timed cases and fidelity subjects

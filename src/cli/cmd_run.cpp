@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "case/instruction_meter.h"
+#include "cli/callgrind_launch.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/flag_values.h"
@@ -11,6 +13,7 @@
 #include "report/json_report.h"
 #include "report/report_format.h"
 #include "report/shard_section.h"
+#include "run/instruction_counts.h"
 #include "sweep/shard_plan.h"
 
 namespace tcsb::cli {
@@ -58,6 +61,26 @@ std::optional<ShardIndex> checked_shard(const RunArgs& args) {
   return shard;
 }
 
+/// What a run with --measure instructions needs of its options and suite: counts that are the same in every run (the
+/// feedback on the simulation thread, no time budget steering the work) in the native JSON, one process.
+void check_instruction_measure(const RunArgs& args, const Suite& suite) {
+  const std::string flag = "--measure instructions: ";
+  if (args.format != "json") throw UsageError(flag + "needs --format json (the format that records the counts)");
+  if (!args.shard.empty()) throw UsageError(flag + "cannot be sharded (--shard)");
+  if (suite.feedback.parallel)
+    throw UsageError(suite.path.string() + ": feedback.parallel: " + flag +
+                     "needs false (a worker thread's instructions would depend on scheduling)");
+  if (suite.feedback.max_step_ms > 0)
+    throw UsageError(suite.path.string() + ": feedback.max_step_ms: " + flag +
+                     "needs 0 (a time budget makes the work depend on the clock)");
+}
+
+Measure checked_measure(const std::string& measure) {
+  if (measure == "time") return Measure::kTime;
+  if (measure == "instructions") return Measure::kInstructions;
+  throw UsageError("--measure: expected time or instructions, got \"" + measure + "\"");
+}
+
 }  // namespace
 
 CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
@@ -78,6 +101,10 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
                   "What --shard splits: repetitions (a net's repetitions spread over the shards, each with all the "
                   "net's cases) or nets (each net with all its repetitions in one shard)")
       ->capture_default_str();
+  run->add_option("--measure", args.measure,
+                  "What each timed step is measured in: time, or instructions (TC-SB's own and Bullet's, counted by "
+                  "Valgrind's callgrind, which tcsb starts itself; deterministic, for `tcsb compare`)")
+      ->capture_default_str();
   return run;
 }
 
@@ -95,6 +122,10 @@ int run_command(const RunArgs& args) {
     // A shard runs only its units, and the memory check counts only them: it may fit where the whole suite would not.
     if (shard) restrict_to_shard(s, *shard);
   });
+  if (checked_measure(args.measure) == Measure::kInstructions) {
+    check_instruction_measure(args, suite);
+    if (!running_on_valgrind()) return rerun_under_callgrind();
+  }
   return run_and_report(suite, args);
 }
 
@@ -103,7 +134,14 @@ int run_and_report(const Suite& suite, const RunArgs& args) {
   const std::optional<ShardIndex> shard = checked_shard(args);
   check_out_path(args.out);
   check_out_is_not_suite_input(args.out, suite);
-  const RunResult result = run_on_console(suite, args.quiet, shard);
+  const Measure measure = checked_measure(args.measure);
+  std::filesystem::path counts;
+  if (measure == Measure::kInstructions) {
+    check_instruction_measure(args, suite);
+    counts = callgrind_out_file();
+  }
+  RunResult result = run_on_console(suite, args.quiet, shard, measure);
+  if (measure == Measure::kInstructions) attach_instruction_counts(result, read_meter_dumps(counts), counts.string());
   // A shard's result carries what `tcsb merge` needs (--shard takes the native JSON only).
   return write_report(shard ? json_text(shard_json(result)) : format->render(result), args.out);
 }

@@ -27,6 +27,7 @@ struct RunArgs {
   std::optional<int> repetitions;     ///< overrides the suite's repetitions per case, when given
   std::string shard;                  ///< "K/N": run only shard K of N (sweep/shard_plan.h); empty: everything
   std::string split = "repetitions";  ///< what --shard splits: "repetitions" or "nets" (sweep/shard_plan.h)
+  std::string measure = "time";       ///< "time", or "instructions": counted under callgrind (cli/callgrind_launch.h)
 };
 
 /// Options of `tcsb merge`.
@@ -87,14 +88,23 @@ struct CalibrateArgs {
   bool quiet = false;
 };
 
+/// The default --threshold of `tcsb compare` for times (a dedicated machine) and for instruction counts: half the
+/// 1 % increase of TC-SB's step the instruction gate must catch every time (a build counts the same in every run, so
+/// an unchanged build differs by exactly 0).
+inline constexpr double kTimeThreshold = 0.05;
+inline constexpr double kInstructionThreshold = 0.005;
+
 /// Options of `tcsb compare`.
 struct CompareArgs {
-  std::string base;         ///< baseline result file
-  std::string next;         ///< new result file
-  double alpha = 0.05;      ///< family-wise significance level (Holm over the gated metrics)
-  double threshold = 0.05;  ///< smallest relative change of a median that fails the gate
-  bool absolute = false;    ///< gate absolute step times too (dedicated machines)
-  std::string summary;      ///< Markdown summary file; empty: stderr
+  std::string base;     ///< baseline result file
+  std::string next;     ///< new result file
+  double alpha = 0.05;  ///< family-wise significance level (Holm over the gated metrics)
+  /// Smallest relative change that fails the gate (a timing median's, or an instruction count's); absent: 5 % for
+  /// times, kInstructionThreshold for counts.
+  std::optional<double> threshold;
+  bool absolute = false;     ///< gate absolute step times too (dedicated machines)
+  std::string summary;       ///< Markdown summary file; empty: stderr
+  std::string summary_json;  ///< JSON summary file (report/gate_summary_json.h); empty: none
 };
 
 /// Options of `tcsb tax` (defaults: the scaling target, gate/adaptivity_tax.h's TaxTarget).

@@ -144,13 +144,14 @@ void warn_stalls(const RunResult& result, int from) {
 
 }  // namespace
 
-RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard) {
+RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard, Measure measure) {
   const Context context = gather_context();
   print_warnings(context, std::cerr);
   RunResult result;
   {
     ProgressLine line(!quiet && ::isatty(STDERR_FILENO) == 1);  // cleared before anything else is printed
     RunOptions options;
+    options.measure = measure;
     options.progress = [&line](int done, int total, const std::string& label) { line.update(done, total, label); };
     result = run_suite(suite, context, options);
     result.shard = shard;

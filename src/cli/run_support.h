@@ -49,7 +49,9 @@ void apply_repetitions(const std::optional<int>& repetitions, Suite& suite);
 /// a warning per diverged repetition (case, step, reason) and per repetition during which the machine stalled
 /// (run/stall.h).
 /// With `shard`, the result says which shard it is; the suite must be restricted to it (restrict_to_shard()).
-RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard = std::nullopt);
+/// With Measure::kInstructions the process must run under callgrind (cli/callgrind_launch.h).
+RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard = std::nullopt,
+                         Measure measure = Measure::kTime);
 
 /// The warnings run_on_console gives after a run (diverged and stalled repetitions), for the repetitions numbered
 /// `from` or later: `reproduce` gives them for the repetitions its looks added.

@@ -13,6 +13,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/result_file.h"
+#include "cli/temporary_directory.h"
 
 extern char** environ;
 
@@ -46,26 +47,6 @@ void run_process(const std::vector<std::string>& argv, const std::string& what) 
                              ")");
 }
 
-/// A temporary directory, removed with everything in it when this goes out of scope.
-class TemporaryDirectory {
- public:
-  TemporaryDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "tcsb-processes.XXXXXX").string();
-    if (!::mkdtemp(pattern.data())) throw std::runtime_error("--processes: cannot create a temporary directory");
-    path_ = pattern;
-  }
-  ~TemporaryDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TemporaryDirectory(const TemporaryDirectory&) = delete;
-  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
 }  // namespace
 
 MergedShards run_in_processes(const std::filesystem::path& suite_file, const std::optional<int>& repetitions,
@@ -74,7 +55,7 @@ MergedShards run_in_processes(const std::filesystem::path& suite_file, const std
     throw UsageError("--processes: expected 1 to the suite's " + std::to_string(suite_repetitions) +
                      " repetitions, got " + std::to_string(processes));
   const std::filesystem::path self = own_executable();
-  const TemporaryDirectory directory;
+  const TemporaryDirectory directory("tcsb-processes", "--processes");
   std::vector<ShardDocument> shards;
   for (int k = 1; k <= processes; ++k) {
     const std::string shard = std::to_string(k) + "/" + std::to_string(processes);

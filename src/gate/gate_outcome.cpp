@@ -1,5 +1,7 @@
 #include "gate/gate_outcome.h"
 
+#include <algorithm>
+
 namespace tcsb {
 namespace {
 
@@ -28,10 +30,38 @@ std::size_t GateOutcome::unreliable_metrics() const {
   return n;
 }
 
+Verdict GateOutcome::verdict() const {
+  if (behaviour_changed() || regressions > 0) return Verdict::kFail;
+  if (undecided > 0) return Verdict::kUndecided;
+  return pass() ? Verdict::kPass : Verdict::kFail;
+}
+
+int GateOutcome::more_repetitions() const {
+  int most = 0;
+  const auto scan = [&](const std::vector<TimingDecision>& decisions) {
+    for (const TimingDecision& d : decisions)
+      if (d.verdict == TimingVerdict::kUndecided)
+        most = std::max(most, d.more_repetitions.value_or(kMaxMoreRepetitions));
+  };
+  scan(ratio_decisions);
+  if (absolute_gated) scan(step_decisions);
+  return most;
+}
+
 GateOutcome decide_gate(ResultComparison comparison, const GateSettings& settings, bool absolute_gated) {
   GateOutcome out;
   out.settings = settings;
   out.absolute_gated = absolute_gated;
+  if (comparison.measure == "instructions") {
+    out.counts = true;
+    for (const InstructionPair& p : comparison.instructions) {
+      out.instruction_decisions.push_back(decide_instructions(p.case_label, p.base, p.next, settings.threshold));
+      out.regressions += out.instruction_decisions.back().regressed;
+    }
+    out.gated_metrics = out.instruction_decisions.size();
+    out.comparison = std::move(comparison);
+    return out;
+  }
   const std::vector<TimingSamples> ratios = samples_of(comparison.ratios);
   const std::vector<TimingSamples> steps = samples_of(comparison.step_ms);
   if (absolute_gated) {
@@ -43,11 +73,13 @@ GateOutcome decide_gate(ResultComparison comparison, const GateSettings& setting
     out.step_decisions.assign(all.begin() + static_cast<std::ptrdiff_t>(ratios.size()), all.end());
     out.gated_metrics = reliable(all);
     out.regressions = count(all, TimingVerdict::kRegressed);
+    out.undecided = count(all, TimingVerdict::kUndecided);
   } else {
     out.ratio_decisions = decide_timings(ratios, settings);
     out.step_decisions = decide_timings(steps, settings);
     out.gated_metrics = reliable(out.ratio_decisions);
     out.regressions = count(out.ratio_decisions, TimingVerdict::kRegressed);
+    out.undecided = count(out.ratio_decisions, TimingVerdict::kUndecided);
     out.warnings = count(out.step_decisions, TimingVerdict::kRegressed);
   }
   out.comparison = std::move(comparison);

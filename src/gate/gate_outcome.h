@@ -6,7 +6,9 @@
 #include <cstddef>
 #include <vector>
 
+#include "analysis/claim.h"
 #include "analysis/regression_gate.h"
+#include "gate/instruction_gate.h"
 #include "gate/result_comparison.h"
 
 namespace tcsb {
@@ -18,9 +20,14 @@ struct GateOutcome {
   bool absolute_gated = false;                  ///< --absolute: step times gate too (one Holm family with the ratios)
   std::vector<TimingDecision> ratio_decisions;  ///< parallel to comparison.ratios
   std::vector<TimingDecision> step_decisions;   ///< parallel to comparison.step_ms
-  std::size_t gated_metrics = 0;                ///< reliable metrics in the gated family (the Holm family size)
-  std::size_t regressions = 0;                  ///< gated metrics that regressed
-  std::size_t warnings = 0;                     ///< step times that would have regressed had they been gated
+  /// Runs measured with `--measure instructions`: the counts gate (one decision per case with counts), the timings
+  /// (callgrind's) are neither gated nor shown.
+  bool counts = false;
+  std::vector<InstructionDecision> instruction_decisions;  ///< parallel to comparison.instructions
+  std::size_t gated_metrics = 0;  ///< reliable metrics in the gated family (the Holm family size), or counted cases
+  std::size_t regressions = 0;    ///< gated metrics (or counted cases) that regressed
+  std::size_t undecided = 0;      ///< gated metrics whose interval straddles the threshold
+  std::size_t warnings = 0;       ///< step times that would have regressed had they been gated
 
   /// Behaviour changed: a deterministic quantity differs, or a case or repetition is not matched one to one.
   bool behaviour_changed() const { return !comparison.changes.empty(); }
@@ -30,8 +37,15 @@ struct GateOutcome {
   bool timings_decided() const { return gated_metrics > 0; }
   /// Gated metrics that are unreliable (too few samples on a side): reported, never decided.
   std::size_t unreliable_metrics() const;
-  /// The gate passes: the timings were decided, with no regression, and no behaviour changed.
-  bool pass() const { return timings_decided() && regressions == 0 && !behaviour_changed(); }
+  /// The gate passes: the timings were decided, with no regression and none undecided, and no behaviour changed.
+  bool pass() const { return timings_decided() && regressions == 0 && undecided == 0 && !behaviour_changed(); }
+  /// Three verdicts, as `reproduce` gives them: kFail on changed behaviour or a regression, kUndecided when neither
+  /// but some gated metric is undecided, kPass when the gate passes. (Undecided timings are not a pass: the gate
+  /// fails closed, and tcsb compare exits 4 for them.)
+  Verdict verdict() const;
+  /// The most extra repetitions per run any undecided metric would likely need (0 when none is undecided;
+  /// kMaxMoreRepetitions when one cannot say).
+  int more_repetitions() const;
 };
 
 /// Decides the timings of `comparison`. Throws std::invalid_argument on bad settings (see decide_timings).

@@ -16,6 +16,10 @@ std::string shorten(std::string text) { return text.size() > 60 ? text.substr(0,
 std::string brief(const ojson& j) { return shorten(j.dump(-1, ' ', false, ojson::error_handler_t::replace)); }
 
 void check_same_suite(const ResultView& base, const ResultView& next) {
+  if (base.measure != next.measure) {
+    throw SuiteMismatch(base.file + " measured " + base.measure + " and " + next.file + " measured " + next.measure +
+                        ": a time result and an instruction count result cannot be compared");
+  }
   if (const std::string difference = suite_difference(base, next, false); !difference.empty()) {
     throw SuiteMismatch(base.file + " and " + next.file + " are runs of different suites or settings (" + difference +
                         "); compare runs of the same suite and settings, or refresh the baseline "
@@ -190,6 +194,7 @@ std::string first_json_difference(const ojson& a, const ojson& b, const std::str
 ResultComparison compare_results(const ResultView& base, const ResultView& next) {
   check_same_suite(base, next);
   ResultComparison out;
+  out.measure = base.measure;
   const auto name = base.suite.find("name");
   const auto sha = base.suite.find("sha256");
   out.suite_name = name != base.suite.end() && name->is_string() ? name->get<std::string>() : "";
@@ -220,6 +225,7 @@ ResultComparison compare_results(const ResultView& base, const ResultView& next)
     compare_repetitions(a, b, out.deterministic, changes, out.repetitions);
 
     out.step_ms.push_back({a.label, kStepMsMetric, {ok_step_times(a), ok_step_times(b)}});
+    if (a.instructions && b.instructions) out.instructions.push_back({a.label, *a.instructions, *b.instructions});
     if (a.method != "tcsb") continue;
     const auto plain_a = plain_case_of(base, i);
     const auto plain_b = plain_case_of(next, j);

@@ -44,8 +44,15 @@ inline constexpr const char* kRatioMetric = "ratio vs plain";
 /// Absolute mean step time per repetition (ms): machine-dependent, gated only on request.
 inline constexpr const char* kStepMsMetric = "step ms";
 
+/// One case's instruction counts in both runs (runs measured with `--measure instructions`).
+struct InstructionPair {
+  std::string case_label;
+  InstructionsView base, next;
+};
+
 /// Everything the gate needs to decide, and what it tells the reader.
 struct ResultComparison {
+  std::string measure = "time";  ///< what both runs measured ("time" or "instructions")
   std::string suite_name;
   std::string suite_sha256;
   std::size_t cases = 0;        ///< cases matched one to one (by label)
@@ -57,6 +64,7 @@ struct ResultComparison {
   std::vector<BehaviourChange> changes;
   std::vector<TimingSeries> ratios;              ///< one per TC-SB case that has a plain case on its net
   std::vector<TimingSeries> step_ms;             ///< one per case
+  std::vector<InstructionPair> instructions;     ///< one per case that has counts in both runs (measure instructions)
   std::vector<std::string> machine_differences;  ///< context fields that differ, e.g. "cpu_model: \"A\" vs \"B\""
 };
 
@@ -84,7 +92,8 @@ std::vector<std::string> machine_differences(const ResultView& base, const Resul
 /// not deterministic, and only matched cases contribute timings. Throws SuiteMismatch when two cases of one label
 /// differ in net, method, compression or configuration (naming `next`'s field), or when the suite blocks differ
 /// in anything but their path (the name, the SHA-256 of the file, and every effective setting: steps, repetitions,
-/// solver, feedback, nets, methods, compression — a run may be narrowed from its file) or when the seeds differ.
+/// solver, feedback, nets, methods, compression — a run may be narrowed from its file) or when the seeds differ, and
+/// when the runs measured different things (a time result against an instruction count result).
 ResultComparison compare_results(const ResultView& base, const ResultView& next);
 
 }  // namespace tcsb

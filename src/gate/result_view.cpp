@@ -42,6 +42,25 @@ RepetitionView read_repetition(const Fields& f, const ojson& j, const std::strin
   return r;
 }
 
+/// A case's `instructions` object: counts (own + bullet = total) and the functions.
+InstructionsView read_instructions(const Fields& f, const ojson& j, const std::string& path) {
+  constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+  InstructionsView v;
+  v.own = f.integer(j, path, "own", 0, kMax);
+  v.bullet = f.integer(j, path, "bullet", 0, kMax);
+  v.total = f.integer(j, path, "total", 0, kMax);
+  if (v.own > kMax - v.bullet || v.own + v.bullet != v.total)
+    f.fail(Fields::join(path, "total"), "must be own + bullet");
+  const ojson& functions = f.array(j, path, "functions");
+  const std::string functions_path = Fields::join(path, "functions");
+  for (std::size_t i = 0; i < functions.size(); ++i) {
+    const std::string function_path = Fields::index(functions_path, i);
+    v.functions.emplace_back(f.string(functions[i], function_path, "name"),
+                             f.integer(functions[i], function_path, "instructions", 0, kMax));
+  }
+  return v;
+}
+
 CaseView read_case(const Fields& f, const ojson& j, const std::string& path) {
   f.object(j, path);
   CaseView c;
@@ -69,6 +88,8 @@ CaseView read_case(const Fields& f, const ojson& j, const std::string& path) {
     f.object(reps[i], rep_path);
     c.repetitions.push_back(read_repetition(f, reps[i], rep_path));
   }
+  if (j.contains("instructions"))
+    c.instructions = read_instructions(f, f.object(j, path, "instructions"), Fields::join(path, "instructions"));
   return c;
 }
 
@@ -96,6 +117,10 @@ ResultView read_result(const ojson& doc, const std::string& file) {
   ResultView r;
   r.file = file;
   r.schema_version = static_cast<int>(f.integer(doc, "", "schema_version", 1, std::numeric_limits<int>::max()));
+  if (doc.contains("measure")) {
+    r.measure = f.string(doc, "", "measure");
+    if (r.measure != "time" && r.measure != "instructions") f.fail("measure", "must be \"time\" or \"instructions\"");
+  }
   r.context = f.object(doc, "", "context");
   r.suite = f.object(doc, "", "suite");
   r.steps = static_cast<int>(f.integer(r.suite, "suite", "steps", 1, std::numeric_limits<int>::max()));

@@ -26,6 +26,13 @@ struct RepetitionView {
   int process = 0;  ///< the shard that measured it in a merged result (`process`); 0: the file's one process
 };
 
+/// A case's instruction counts (`tcsb run --measure instructions`): its timed steps' instructions over its ok
+/// repetitions, by part, and the functions with the most own instructions, most first.
+struct InstructionsView {
+  std::int64_t own = 0, bullet = 0, total = 0;
+  std::vector<std::pair<std::string, std::int64_t>> functions;  ///< (name, own instructions)
+};
+
 /// One case as the file records it (the fields the comparison and the exports use).
 struct CaseView {
   std::string label, net, method;  ///< e.g. "n33/tcsb@0.3", "n33", "tcsb"
@@ -40,12 +47,14 @@ struct CaseView {
   std::optional<double> stddev_step_ms;  ///< step_ms.stddev
   std::optional<double> cv_step_ms;      ///< step_ms.cv
   std::vector<RepetitionView> repetitions;
+  std::optional<InstructionsView> instructions;  ///< `instructions`, when the run counted them
 };
 
 /// A whole result file.
 struct ResultView {
   std::string file;  ///< the name used in errors
   int schema_version = 0;
+  std::string measure = "time";    ///< "time" or "instructions" (`measure`; absent in older files: time)
   nlohmann::ordered_json context;  ///< as recorded (an object)
   nlohmann::ordered_json suite;    ///< as recorded (an object)
   int steps = 0;                   ///< suite.steps: timed steps per repetition

@@ -47,6 +47,10 @@ std::string verdict_cell(const TimingDecision& d, bool gated, std::size_t min_sa
     case TimingVerdict::kRegressed: return gated ? "**REGRESSED**" : "slower (warning only)";
     case TimingVerdict::kImproved: return "faster";
     case TimingVerdict::kUnchanged: return "ok";
+    case TimingVerdict::kUndecided:
+      if (!gated) return "undecided (not gated)";
+      return d.more_repetitions ? "**undecided** (~" + std::to_string(*d.more_repetitions) + " more repetitions)"
+                                : std::string("**undecided**");
     case TimingVerdict::kUnreliable: break;
   }
   if (!d.change) return "unreliable (no data)";
@@ -57,7 +61,9 @@ void timing_rows(std::ostream& out, const std::vector<TimingSeries>& series,
                  const std::vector<TimingDecision>& decisions, bool gated, std::size_t min_samples) {
   for (std::size_t i = 0; i < series.size() && i < decisions.size(); ++i) {
     const TimingDecision& d = decisions[i];
-    const std::string change = d.change ? formatted("%+.1f", 100.0 * *d.change) : "–";
+    std::string change = d.change ? formatted("%+.1f", 100.0 * *d.change) : "–";
+    if (d.interval)
+      change += formatted(" [%+.1f, ", 100.0 * d.interval->low) + formatted("%+.1f]", 100.0 * d.interval->high);
     out << "| " << cell(series[i].case_label) << " | " << series[i].metric << " | " << or_dash(d.base_median, "%.4g")
         << " | " << or_dash(d.next_median, "%.4g") << " | " << change << " | " << or_dash(d.p_value, "%.2g") << " | "
         << verdict_cell(d, gated, min_samples) << " |\n";
@@ -88,13 +94,61 @@ void change_rows(std::ostream& out, const std::vector<BehaviourChange>& changes)
   }
 }
 
+std::string count_text(std::int64_t n) { return formatted("%.0f", static_cast<double>(n)); }
+
+/// The instruction gate's rows: one per case (total, own, Bullet, change, verdict), and under each regressed case the
+/// functions whose own instructions grew most.
+void instruction_rows(std::ostream& out, const GateOutcome& o) {
+  out << "| case | base instructions | new instructions | change % | TC-SB own (base → new) | Bullet (base → new) "
+         "| verdict |\n";
+  out << "|---|---:|---:|---:|---:|---:|---|\n";
+  for (const InstructionDecision& d : o.instruction_decisions) {
+    const std::string change = d.change ? formatted("%+.3f", 100.0 * *d.change) : "–";
+    const char* verdict = d.regressed ? "**REGRESSED**" : d.improved ? "fewer" : "ok";
+    out << "| " << cell(d.case_label) << " | " << count_text(d.base.total) << " | " << count_text(d.next.total) << " | "
+        << change << " | " << count_text(d.base.own) << " → " << count_text(d.next.own) << " | "
+        << count_text(d.base.bullet) << " → " << count_text(d.next.bullet) << " | " << verdict << " |\n";
+  }
+  for (const InstructionDecision& d : o.instruction_decisions) {
+    if (d.shifts.empty()) continue;
+    out << "\nWhere `" << terminal_safe(d.case_label) << "` grew (own instructions per function, largest increase "
+        << "first):\n\n| function | base | new | change |\n|---|---:|---:|---:|\n";
+    for (const FunctionShift& f : d.shifts) {
+      out << "| " << cell(f.name) << " | " << (f.base > 0 || f.listed_in_both ? count_text(f.base) : "not listed")
+          << " | " << count_text(f.next) << " | +" << count_text(f.next - f.base) << " |\n";
+    }
+  }
+}
+
+/// "PASS", "FAIL" or "UNDECIDED".
+std::string verdict_word(const GateOutcome& o) {
+  switch (o.verdict()) {
+    case Verdict::kPass: return "PASS";
+    case Verdict::kUndecided: return "UNDECIDED";
+    case Verdict::kFail: break;
+  }
+  return "FAIL";
+}
+
 }  // namespace
 
 std::string comparison_verdict_line(const GateOutcome& o) {
   const ResultComparison& c = o.comparison;
-  std::string line = o.pass() ? "PASS: " : "FAIL: ";
+  std::string line = verdict_word(o) + ": ";
+  if (o.counts) {
+    return line + plural(o.regressions, "regression", "regressions") + ", " +
+           plural(c.changes.size(), "behaviour change", "behaviour changes") + " (" +
+           plural(o.gated_metrics, "case's instruction count", "cases' instruction counts") + " gated at threshold " +
+           formatted("%g", 100.0 * o.settings.threshold) + " %" +
+           (o.timings_decided() ? "" : "; counts undecided: " + undecided_reason(o)) + ")";
+  }
   line += plural(o.regressions, "regression", "regressions") + ", " +
           plural(c.changes.size(), "behaviour change", "behaviour changes");
+  if (o.undecided > 0) {
+    line += ", " + std::to_string(o.undecided) + " undecided (about " +
+            plural(static_cast<std::size_t>(o.more_repetitions()), "more repetition", "more repetitions") +
+            " per run would likely decide)";
+  }
   line += " (" + plural(o.gated_metrics, "timing metric", "timing metrics") + " gated at alpha " +
           formatted("%g", o.settings.alpha) + ", threshold " + formatted("%g", 100.0 * o.settings.threshold) + " %";
   if (const std::size_t unreliable = o.unreliable_metrics(); unreliable > 0) {
@@ -107,6 +161,7 @@ std::string comparison_verdict_line(const GateOutcome& o) {
 }
 
 std::string undecided_reason(const GateOutcome& o) {
+  if (o.counts) return "no case has instruction counts in both runs";
   std::size_t family = o.ratio_decisions.size();
   std::size_t most = 0;  // the most samples any gated metric has on its smaller side
   const auto scan = [&](const std::vector<TimingDecision>& decisions) {
@@ -133,7 +188,7 @@ std::string undecided_reason(const GateOutcome& o) {
 std::string comparison_summary_markdown(const GateOutcome& o, const ResultView& base, const ResultView& next) {
   const ResultComparison& c = o.comparison;
   std::ostringstream out;
-  out << "## tcsb compare: " << (o.pass() ? "PASS" : "FAIL") << "\n\n";
+  out << "## tcsb compare: " << verdict_word(o) << "\n\n";
   out << "- Base: " << describe_run(base) << "\n";
   out << "- New: " << describe_run(next) << "\n";
   out << "- Suite `" << terminal_safe(c.suite_name) << "` (sha256 `" << c.suite_sha256.substr(0, 12)
@@ -144,13 +199,34 @@ std::string comparison_summary_markdown(const GateOutcome& o, const ResultView& 
   if (o.warnings > 0) out << ", " << plural(o.warnings, "warning", "warnings");
   out << ".**\n\n";
 
+  if (o.counts) {
+    out << "How: instructions counted by callgrind (`tcsb run --measure instructions`) over every timed step, TC-SB's "
+           "own work and Bullet's step apart; a build counts the same in every run, so there is no noise to test "
+           "against: a case whose total grows by more than "
+        << formatted("%g", 100.0 * o.settings.threshold)
+        << " % regressed. Every case and repetition must be present once in each run, and the deterministic metrics "
+           "(N, L, I, operations, status, final-state hash) must match exactly. Step times under callgrind are not "
+           "compared.\n\n";
+    if (!c.changes.empty())
+      out << "Behaviour changed (rows below). If that is intended, refresh the baseline in the same commit.\n\n";
+    instruction_rows(out, o);
+    if (!c.changes.empty()) {
+      out << "\n| case | metric | base | new | change % | p-value | verdict |\n|---|---|---:|---:|---:|---:|---|\n";
+      change_rows(out, c.changes);
+    }
+    return out.str();
+  }
   out << "How: every case (by label) and repetition (by number) must be present once in each run, and their "
          "deterministic metrics (N, L, I, operations, status, final-state hash) must match exactly. Timing: a "
-         "metric regresses when the one-sided Mann–Whitney U test over repetitions is significant at family-wise "
-         "α = "
-      << formatted("%g", o.settings.alpha) << " (Holm over the " << o.gated_metrics
-      << " gated metrics; p-values below are Holm-adjusted) and its median grows by more than "
-      << formatted("%g", 100.0 * o.settings.threshold) << " %; with fewer than " << o.settings.min_samples
+         "metric's change of the median gets a bootstrap interval (in brackets; each run's repetitions resampled), "
+         "each end a one-sided test at α / m = "
+      << formatted("%g", o.settings.alpha) << " / " << o.gated_metrics << " over the gated metrics, and the threshold ("
+      << formatted("%g", 100.0 * o.settings.threshold)
+      << " %) is the margin: the whole interval above it is a regression, the whole interval at or below it is no "
+         "regression, and an interval across it is undecided (exit 4), with about how many more repetitions per run "
+         "would decide it. The p-value is the one-sided Mann–Whitney U test's, Holm-adjusted, for reference. With "
+         "fewer than "
+      << o.settings.min_samples
       << " repetitions on a side a metric is unreliable and never fails, and with no reliable gated metric the gate "
          "cannot pass. Gated: `"
       << kRatioMetric << "` (TC-SB step time / plain step time of the same net, per repetition, same run)"

@@ -126,6 +126,10 @@ ojson step_time_json(const RepetitionResult& r, double ms) {
   return r.status != "ok" && !(ms > 0) ? ojson(nullptr) : json_number(ms);
 }
 
+ojson instructions_json(const InstructionCount& count) {
+  return {{"own", count.own}, {"bullet", count.bullet}, {"total", count.total()}};
+}
+
 ojson repetition_json(const RepetitionResult& r) {
   ojson j = {
       {"repetition", r.repetition},
@@ -145,6 +149,7 @@ ojson repetition_json(const RepetitionResult& r) {
   };
   // Merged results only: which shard (process) measured it. A run of one process writes what it always wrote.
   if (r.process > 0) j["process"] = r.process;
+  if (r.instructions) j["instructions"] = instructions_json(*r.instructions);  // --measure instructions only
   if (r.penetrations)  // scenes with colliders only: results of the paper's scene keep their bytes
     j["penetrations"] = {{"node_steps", r.penetrations->node_steps},
                          {"deepest_pct", json_number(r.penetrations->deepest_pct)}};
@@ -189,6 +194,13 @@ ojson case_json(const RunResult& result, std::size_t index) {
                               {"operations", json_number(c.breakdown.operations_ms)},
                               {"blending", json_number(c.breakdown.blending_ms)}};
   out["repetitions"] = std::move(reps);
+  if (c.instructions) {  // --measure instructions only
+    ojson functions = ojson::array();
+    for (const FunctionCount& f : c.functions)
+      functions.push_back({{"name", f.name}, {"instructions", f.instructions}});
+    out["instructions"] = instructions_json(*c.instructions);
+    out["instructions"]["functions"] = std::move(functions);
+  }
   // Only TC-SB has TreeCut operations; the key stays absent elsewhere (and in results written before it existed).
   if (c.key.method == Method::kTcsb) out["op_work"] = op_work_json(c.ops.samples);
   if (c.key.configuration < result.suite.configurations.size()) out["configuration"] = configuration_json(result, c);
@@ -291,6 +303,7 @@ ojson native_json(const RunResult& result) {
   ojson doc;
   doc["schema_version"] = kNativeJsonSchemaVersion;
   doc["tool"] = "tcsb";
+  doc["measure"] = measure_name(result.measure);
   doc["context"] = context_json(result.context, result.suite);
   doc["suite"] = suite_json(result.suite);
   doc["cases"] = std::move(cases);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/statistics.h"
+#include "case/instruction_meter.h"
 #include "fidelity/fidelity_result.h"
 #include "run/context.h"
 #include "softbody/op_sample.h"
@@ -16,6 +17,26 @@
 #include "suite/suite.h"
 
 namespace tcsb {
+
+/// What a run measured of each timed step: its wall time (always), or also its instructions (`tcsb run --measure
+/// instructions`, under callgrind: deterministic, but the step times are callgrind's, many times slower).
+enum class Measure { kTime, kInstructions };
+
+/// "time" or "instructions", as the result file records it.
+const char* measure_name(Measure measure);
+
+/// Instructions of timed steps, summed over them, by part (StepPart).
+struct InstructionCount {
+  std::uint64_t own = 0;     ///< TC-SB's own work (0 for a stock body)
+  std::uint64_t bullet = 0;  ///< Bullet's step
+  std::uint64_t total() const { return own + bullet; }
+};
+
+/// One function's own instructions over a case's timed steps (callgrind's self cost): where a count changed.
+struct FunctionCount {
+  std::string name;
+  std::uint64_t instructions = 0;
+};
 
 /// Per-step samples of one repetition (timed steps only).
 struct StepSeries {
@@ -60,6 +81,9 @@ struct RepetitionResult {
   std::string final_state_hash;              ///< FNV-1a of node count and final positions: deterministic, gateable
   double build_ms = 0;                       ///< building the body (not part of step times)
   std::optional<Penetrations> penetrations;  ///< in scenes with colliders only
+  /// The parts the instruction meter dumped (measure kInstructions), until the dumps are read into `instructions`.
+  std::vector<MeteredPart> metered;
+  std::optional<InstructionCount> instructions;  ///< over the timed steps (measure kInstructions)
   /// The process that measured it: 0 in a run of one process; in a merged result, the shard (k, 1-based). Its
   /// intervals resample processes first, then repetitions within them (analysis/bootstrap.h).
   int process = 0;
@@ -85,10 +109,18 @@ struct CaseResult {
   double mean_feedback_ms = 0, mean_feedback_total_ms = 0;
   StepBreakdown breakdown;  ///< each part's median over the ok repetitions' means (medians: the parts need not add up)
   OpRecord ops;
+  std::optional<InstructionCount> instructions;  ///< summed over the ok repetitions (measure kInstructions)
+  /// The functions with the most own instructions over the ok repetitions' timed steps, most first
+  /// (kFunctionsKept; measure kInstructions).
+  std::vector<FunctionCount> functions;
 };
+
+/// Functions a case keeps in `functions`: enough to name where a changed count went.
+inline constexpr std::size_t kFunctionsKept = 25;
 
 /// A whole run.
 struct RunResult {
+  Measure measure = Measure::kTime;
   Suite suite;
   Context context;
   std::vector<CaseResult> cases;

@@ -85,7 +85,7 @@ void add_step_breakdown(double step_ms, const StepPhases* phases, const std::vec
 class RepetitionRun {
  public:
   RepetitionRun(const Suite& suite, const CaseKey& key, int repetition, std::shared_ptr<const Net> net,
-                std::uint64_t seed, std::vector<OpSample>& op_samples)
+                std::uint64_t seed, std::vector<OpSample>& op_samples, Measure measure)
       : suite_(suite), key_(key), net_(std::move(net)), seed_(seed), world_(suite.world, suite.scene),
         op_samples_(op_samples), recorder_(op_samples), total_(static_cast<int>(steps_per_repetition(suite))),
         ops_before_(op_samples.size()) {
@@ -94,6 +94,7 @@ class RepetitionRun {
     body_ = make_case_body(suite, key, world_, net_, seed);
     rep_.build_ms = ms_between(built0, StepClock::now());
     if (TcSoftBody* tc = body_->tc()) tc->set_op_sink(&recorder_);
+    if (measure == Measure::kInstructions) body_->set_meter(&meter_.emplace());
     // Every series reserved to its final size: no reallocation inside the timed loop, and the recorder takes the
     // bytes suite_memory.cpp counts (doubling growth would leave up to twice that allocated).
     StepSeries& series = rep_.series;
@@ -104,6 +105,7 @@ class RepetitionRun {
   }
   ~RepetitionRun() {
     if (TcSoftBody* tc = body_->tc()) tc->set_op_sink(nullptr);
+    body_->set_meter(nullptr);
   }
   RepetitionRun(const RepetitionRun&) = delete;
   RepetitionRun& operator=(const RepetitionRun&) = delete;
@@ -126,6 +128,7 @@ class RepetitionRun {
   RepetitionResult finish() && {
     const StepSeries& series = rep_.series;
     rep_.operations = static_cast<std::int64_t>(op_samples_.size() - ops_before_);
+    if (meter_) rep_.metered = meter_->parts();
     if (rep_.status == "ok") rep_.final_state_hash = state_hash(body_->bullet());
     if (!series.step_ms.empty()) {
       rep_.mean_step_ms = mean(series.step_ms);
@@ -149,7 +152,9 @@ class RepetitionRun {
     recorder_.recording = timed;
     const std::size_t ops_at_step = op_samples_.size();
     const StepClock::time_point t0 = StepClock::now();
+    if (timed && meter_) meter_->begin_step();
     body_->step(static_cast<btScalar>(suite_.world.dt));
+    if (meter_) meter_->end_step();
     const StepClock::time_point t1 = StepClock::now();
     const btSoftBody& b = body_->bullet();
     if (timed) {
@@ -194,6 +199,7 @@ class RepetitionRun {
   std::vector<OpSample>& op_samples_;
   OpRecorder recorder_;
   std::unique_ptr<CaseBody> body_;
+  std::optional<InstructionMeter> meter_;  // measure kInstructions only
   // Every step the repetition takes (steps_per_repetition); an int, since a suite that runs has passed the memory
   // check, which counts a recorded sample per step.
   const int total_;
@@ -206,8 +212,8 @@ class RepetitionRun {
 /// A repetition alone: warm-up, then every timed step.
 RepetitionResult run_repetition(const Suite& suite, const CaseKey& key, int repetition,
                                 const std::shared_ptr<const Net>& net, std::uint64_t seed,
-                                std::vector<OpSample>& op_samples) {
-  RepetitionRun run(suite, key, repetition, net, seed, op_samples);
+                                std::vector<OpSample>& op_samples, Measure measure) {
+  RepetitionRun run(suite, key, repetition, net, seed, op_samples, measure);
   run.warm_up();
   run.run(suite.steps, true);
   return std::move(run).finish();
@@ -280,7 +286,7 @@ void run_plan(RunResult& result, const std::vector<PlannedRun>& plan, const std:
       c.repetitions.push_back(
           naming_out_of_memory("suite " + result.suite.name + ", case " + c.label + " (net " + c.net_name + ")", [&] {
             return run_repetition(suite, c.key, repetition_of(run), nets[c.key.net], seeds[run.case_index],
-                                  c.ops.samples);
+                                  c.ops.samples, options.measure);
           }));
       report(c);
     }
@@ -300,7 +306,8 @@ void run_plan(RunResult& result, const std::vector<PlannedRun>& plan, const std:
           for (std::size_t i = first; i < last; ++i) {
             CaseResult& c = result.cases[plan[i].case_index];
             runs.push_back(std::make_unique<RepetitionRun>(settings[c.key.configuration], c.key, repetition_of(plan[i]),
-                                                           nets[net], seeds[plan[i].case_index], c.ops.samples));
+                                                           nets[net], seeds[plan[i].case_index], c.ops.samples,
+                                                           options.measure));
           }
           run_side_by_side(runs, result.suite.interleave_steps);
           for (std::size_t i = first; i < last; ++i) {
@@ -318,6 +325,7 @@ void run_plan(RunResult& result, const std::vector<PlannedRun>& plan, const std:
 RunResult run_suite(const Suite& suite, const Context& context, const RunOptions& options) {
   const StepClock::time_point start = StepClock::now();
   RunResult result;
+  result.measure = options.measure;
   result.suite = suite;
   result.context = context;
   const std::vector<CaseKey> keys = expand_cases(suite);

@@ -10,8 +10,11 @@
 
 namespace tcsb {
 
-/// How a run reports progress; measurement itself is not configurable here (the suite says everything).
+/// How a run reports progress and what it measures besides time; how it measures is the suite's.
 struct RunOptions {
+  /// kInstructions: each timed step's parts are also counted by an InstructionMeter (the process must run under
+  /// callgrind; attach_instruction_counts reads the counts afterwards).
+  Measure measure = Measure::kTime;
   /// Called after each repetition with (done, total, label); used for the progress line on a TTY.
   std::function<void(int done, int total, const std::string& label)> progress;
 };

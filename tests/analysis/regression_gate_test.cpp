@@ -1,5 +1,6 @@
-// The gate's decision rule: significant AND beyond the threshold, Holm over the family, too few samples never
-// decide. p-values cross-checked with scipy.stats.mannwhitneyu (method='exact').
+// The gate's decision rule: a bootstrap interval of the change against the threshold as margin (regressed, no
+// regression, undecided), Bonferroni over the family, too few samples never decide. The reported p-values are
+// cross-checked with scipy.stats.mannwhitneyu (method='exact').
 #include "analysis/regression_gate.h"
 
 #include <gtest/gtest.h>
@@ -44,53 +45,64 @@ TEST(HolmAdjust, CapsAtOneAndHandlesEmpty) {
   EXPECT_THROW(holm_adjust(std::vector<double>{std::numeric_limits<double>::quiet_NaN()}), std::invalid_argument);
 }
 
-TEST(RegressionGate, SignificantAndLargeRegresses) {
-  const TimingDecision d = decide_one({kBase, kShifted});
+/// `n` values from `from` in steps of `step`: a tight sample whose median is from + 4 step (n = 9).
+std::vector<double> ramp(double from, double step, int n = 9) {
+  std::vector<double> out;
+  for (int i = 0; i < n; ++i) out.push_back(from + step * i);
+  return out;
+}
+
+TEST(RegressionGate, IntervalAboveTheThresholdRegresses) {
+  // +10 % with a spread of under 1 %: the whole interval lies above the 5 % margin.
+  const TimingDecision d = decide_one({ramp(1.0, 0.001), ramp(1.1, 0.001)});
   EXPECT_EQ(d.verdict, TimingVerdict::kRegressed);
-  ASSERT_TRUE(d.p_value.has_value());
-  EXPECT_NEAR(*d.p_value, 0.002817770464829288, 1e-12);
   ASSERT_TRUE(d.change.has_value());
-  EXPECT_NEAR(*d.change, 1.17 / 1.08 - 1.0, 1e-12);
-  EXPECT_DOUBLE_EQ(*d.base_median, 1.08);
-  EXPECT_DOUBLE_EQ(*d.next_median, 1.17);
+  EXPECT_NEAR(*d.change, 1.104 / 1.004 - 1.0, 1e-12);
+  ASSERT_TRUE(d.interval.has_value());
+  EXPECT_GT(d.interval->low, 0.05);
+  EXPECT_TRUE(d.interval->contains(*d.change));
+  EXPECT_DOUBLE_EQ(d.confidence, 0.9);  // one metric: each end a one-sided test at alpha = 0.05
+  EXPECT_FALSE(d.more_repetitions.has_value());
   EXPECT_EQ(d.base_count, 9u);
   EXPECT_EQ(d.next_count, 9u);
 }
 
 TEST(RegressionGate, SignificantButBelowThresholdPasses) {
-  // Every new value beats every base value (scipy: p = 2.0567667626491154e-05), but the median moves only 3 %.
-  std::vector<double> tight, tight_shifted;
-  for (int i = 0; i < 9; ++i) {
-    tight.push_back(1.0 + 0.001 * i);
-    tight_shifted.push_back(1.03 + 0.001 * i);
-  }
+  // Every new value beats every base value (scipy: p = 2.0567667626491154e-05), but the median moves only 3 %: the
+  // whole interval lies below the 5 % margin, so no regression; at a 2 % margin the same samples regress.
+  const std::vector<double> tight = ramp(1.0, 0.001), tight_shifted = ramp(1.03, 0.001);
   const TimingDecision d = decide_one({tight, tight_shifted});
   ASSERT_TRUE(d.p_value.has_value());
   EXPECT_NEAR(*d.p_value, 2.0567667626491154e-05, 1e-15);
   EXPECT_NEAR(*d.change, 0.029880478087649376, 1e-12);
   EXPECT_EQ(d.verdict, TimingVerdict::kUnchanged);
-  GateSettings loose;
-  loose.threshold = 0.02;
-  EXPECT_EQ(decide_one({tight, tight_shifted}, loose).verdict, TimingVerdict::kRegressed);
+  EXPECT_LE(d.interval->high, 0.05);
+  GateSettings tighter;
+  tighter.threshold = 0.02;
+  EXPECT_EQ(decide_one({tight, tight_shifted}, tighter).verdict, TimingVerdict::kRegressed);
 }
 
-TEST(RegressionGate, LargeButNotSignificantPasses) {
-  // The median grows 15 %, but the samples overlap so much that the U test cannot tell them apart (scipy:
-  // p = 0.33323735088440964).
+TEST(RegressionGate, WideIntervalAcrossTheThresholdIsUndecided) {
+  // The median grows 15 %, but the samples spread so widely that the interval holds changes on both sides of 5 %.
   const std::vector<double> base = {1, 5, 2, 6, 3, 7, 4, 8, 1.5};
   const std::vector<double> next = {1.1, 5.1, 2.1, 6.1, 4.5, 7.1, 4.6, 8.1, 1.6};
   const TimingDecision d = decide_one({base, next});
   ASSERT_TRUE(d.change.has_value());
   EXPECT_NEAR(*d.change, 0.15, 1e-12);
   EXPECT_NEAR(*d.p_value, 0.33323735088440964, 1e-12);
-  EXPECT_EQ(d.verdict, TimingVerdict::kUnchanged);
+  EXPECT_EQ(d.verdict, TimingVerdict::kUndecided);
+  ASSERT_TRUE(d.interval.has_value());
+  EXPECT_TRUE(d.interval->contains(0.05));
+  ASSERT_TRUE(d.more_repetitions.has_value());
+  EXPECT_GE(*d.more_repetitions, 1);
 }
 
-TEST(RegressionGate, ImprovementIsReportedNotFailed) {
-  const TimingDecision d = decide_one({kShifted, kBase});
+TEST(RegressionGate, ImprovementBeyondTheThresholdIsReportedNotFailed) {
+  GateSettings settings;
+  settings.threshold = 0.02;
+  const TimingDecision d = decide_one({ramp(1.03, 0.001), ramp(1.0, 0.001)}, settings);
   EXPECT_EQ(d.verdict, TimingVerdict::kImproved);
-  EXPECT_LT(*d.change, 0.0);
-  EXPECT_NEAR(*d.p_value, 0.002817770464829288, 1e-12);
+  EXPECT_LT(d.interval->high, -0.02);
 }
 
 TEST(RegressionGate, FewerThanNineSamplesAreUnreliableEvenWhenHuge) {
@@ -98,37 +110,60 @@ TEST(RegressionGate, FewerThanNineSamplesAreUnreliableEvenWhenHuge) {
   const TimingDecision d = decide_one({eight, scaled(kBase, 10.0)});
   EXPECT_EQ(d.verdict, TimingVerdict::kUnreliable);
   EXPECT_FALSE(d.p_value.has_value());
+  EXPECT_FALSE(d.interval.has_value());
   EXPECT_TRUE(d.change.has_value()) << "the change is still reported";
   EXPECT_EQ(decide_one({kBase, {}}).verdict, TimingVerdict::kUnreliable);
   EXPECT_FALSE(decide_one({kBase, {}}).next_median.has_value());
 }
 
-TEST(RegressionGate, HolmCorrectsForTheWholeFamily) {
+TEST(RegressionGate, TheFamilyWidensEveryInterval) {
+  // Each end of an interval is a one-sided test at alpha / m over the m reliable metrics: the same samples get a
+  // wider interval in a larger family, so an unchanged tree fails at most alpha however many cases the suite has.
   std::vector<TimingSamples> family = {{kBase, kShifted}};
-  for (int i = 0; i < 11; ++i) family.push_back({kBase, kBase});
-  // Twelve metrics: 0.0028 * 12 = 0.034, still below 0.05.
-  std::vector<TimingDecision> d = decide_timings(family, {});
-  EXPECT_EQ(d[0].verdict, TimingVerdict::kRegressed);
-  EXPECT_NEAR(*d[0].p_value, 0.002817770464829288 * 12, 1e-12);
-  for (std::size_t i = 1; i < d.size(); ++i) EXPECT_EQ(d[i].verdict, TimingVerdict::kUnchanged) << i;
-  // Twenty metrics: 0.0028 * 20 = 0.056: the same shift no longer fails the gate.
-  for (int i = 0; i < 8; ++i) family.push_back({kBase, kBase});
-  d = decide_timings(family, {});
-  EXPECT_EQ(d[0].verdict, TimingVerdict::kUnchanged);
-  // Unreliable metrics are not part of the family: they do not dilute it.
-  family.resize(12);
+  const TimingDecision alone = decide_timings(family, {}).at(0);
+  for (int i = 0; i < 19; ++i) family.push_back({kBase, kBase});
+  const std::vector<TimingDecision> d = decide_timings(family, {});
+  EXPECT_DOUBLE_EQ(d[0].confidence, 1.0 - 2.0 * 0.05 / 20);
+  EXPECT_LE(d[0].interval->low, alone.interval->low);
+  EXPECT_GE(d[0].interval->high, alone.interval->high);
+  EXPECT_NEAR(*d[0].p_value, 0.002817770464829288 * 20, 1e-12);  // Holm, reported beside it
+  // Unreliable metrics are not part of the family: they do not widen it.
+  family.resize(1);
   for (int i = 0; i < 8; ++i) family.push_back({{1.0}, {1.0}});
-  d = decide_timings(family, {});
-  EXPECT_EQ(d[0].verdict, TimingVerdict::kRegressed);
+  EXPECT_DOUBLE_EQ(decide_timings(family, {}).at(0).confidence, 0.9);
 }
 
-TEST(RegressionGate, IdenticalSamplesAreUnchanged) {
-  const TimingDecision d = decide_one({kBase, kBase});
-  EXPECT_EQ(d.verdict, TimingVerdict::kUnchanged);
-  EXPECT_DOUBLE_EQ(*d.change, 0.0);
+TEST(RegressionGate, TheSameSamplesGiveTheSameVerdictEveryTime) {
+  const std::vector<TimingSamples> family = {{kBase, kShifted}, {kShifted, kBase}};
+  const std::vector<TimingDecision> a = decide_timings(family, {}), b = decide_timings(family, {});
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].interval->low, b[i].interval->low);
+    EXPECT_EQ(a[i].interval->high, b[i].interval->high);
+  }
+}
+
+TEST(RegressionGate, IdenticalSamplesAreNoRegressionAtAMarginBeyondTheirSpread) {
   const TimingDecision tied = decide_one({std::vector<double>(9, 2.0), std::vector<double>(9, 2.0)});
   EXPECT_EQ(tied.verdict, TimingVerdict::kUnchanged);
   EXPECT_DOUBLE_EQ(*tied.p_value, 1.0);
+  EXPECT_DOUBLE_EQ(tied.interval->low, 0.0);
+  EXPECT_DOUBLE_EQ(tied.interval->high, 0.0);
+  GateSettings wide;
+  wide.threshold = 0.25;  // kBase spreads 16 %: its resampled medians move well within 25 %
+  const TimingDecision d = decide_one({kBase, kBase}, wide);
+  EXPECT_EQ(d.verdict, TimingVerdict::kUnchanged);
+  EXPECT_DOUBLE_EQ(*d.change, 0.0);
+}
+
+TEST(RepetitionsToDecide, TheEndFacingTheThresholdMustPassIt) {
+  // Change 10 %, interval [0 %, 20 %] from 9 repetitions, margin 5 %: the lower end reaches 10 points below the
+  // change and must come within 5: sqrt(9 / N) * 10 < 5 -> N > 36, so 27 more.
+  EXPECT_EQ(repetitions_to_decide(0.10, {0.0, 0.20}, 0.05, 9), 27);
+  // Below the margin the upper end faces it: change 0, [-0.1, 0.1], margin 0.05: N > 36 as well.
+  EXPECT_EQ(repetitions_to_decide(0.0, {-0.1, 0.1}, 0.05, 9), 27);
+  EXPECT_FALSE(repetitions_to_decide(0.05, {0.0, 0.1}, 0.05, 9).has_value()) << "on the margin: no number decides";
+  EXPECT_FALSE(repetitions_to_decide(0.10, {0.08, 0.12}, 0.05, 9).has_value()) << "already decided";
+  EXPECT_EQ(repetitions_to_decide(0.051, {-1.0, 1.0}, 0.05, 9), kMaxMoreRepetitions);
 }
 
 TEST(RegressionGate, ZeroBaseMedianHasNoChangeAndIsUnreliable) {

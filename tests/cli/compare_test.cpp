@@ -3,7 +3,7 @@
 // TC-SB time ratio grows, only a warning when every time grows (a slower machine), 2 for unusable input or runs of
 // different suites. The timings are set in the JSON, never measured against a bound, so no test here depends on
 // the speed or the load of the machine. The end-to-end check with a real slowdown (a build
-// with -DTCSB_INJECT_STEP_DELAY_US) is too slow for a unit test: scripts/gate-self-test.sh runs it.
+// with -DTCSB_INJECT_STEP_PERCENT) is too slow for a unit test: scripts/gate-self-test.sh runs it.
 #include <nlohmann/json.hpp>
 #include <string>
 

@@ -37,7 +37,9 @@ TEST(ComparisonSummary, PassHasATableRowPerMetric) {
   EXPECT_NE(s.find("| case | metric | base median | new median | change % | p-value | verdict |"), std::string::npos);
   EXPECT_EQ(count(s, "| ratio vs plain |"), 2u);
   EXPECT_EQ(count(s, "| step ms |"), 4u);
-  EXPECT_NE(s.find("| n9/tcsb@0.5 | ratio vs plain | 0.5 | 0.5 | +0.0 | 1 | ok |"), std::string::npos) << s;
+  // The change with its interval: the ratios are the same in every repetition, so the interval is a point.
+  EXPECT_NE(s.find("| n9/tcsb@0.5 | ratio vs plain | 0.5 | 0.5 | +0.0 [+0.0, +0.0] | 1 | ok |"), std::string::npos)
+      << s;
   EXPECT_NE(s.find("Deterministic metrics: identical in 4 cases and 36 repetitions."), std::string::npos) << s;
   EXPECT_NE(s.find("`base.json` (commit abc"), std::string::npos) << s;
 }
@@ -50,7 +52,7 @@ TEST(ComparisonSummary, RegressionAndChangedBehaviourAreMarked) {
   const std::string s = summary(c);
   EXPECT_TRUE(s.starts_with("## tcsb compare: FAIL\n")) << s;
   EXPECT_NE(s.find("**1 regression, 1 behaviour change, 1 warning.**"), std::string::npos) << s;
-  EXPECT_NE(s.find("| n9/tcsb@0.5 | ratio vs plain | 0.5 | 1 | +100.0 |"), std::string::npos) << s;
+  EXPECT_NE(s.find("| n9/tcsb@0.5 | ratio vs plain | 0.5 | 1 | +100.0 [+100.0, +100.0] |"), std::string::npos) << s;
   EXPECT_NE(s.find("| **REGRESSED** |"), std::string::npos) << s;
   EXPECT_NE(s.find("| n9/tcsb@0.5 | step ms |"), std::string::npos);
   EXPECT_NE(s.find("slower (warning only)"), std::string::npos) << s;

@@ -44,8 +44,9 @@ RunResult small_run() {
 
 TEST(NativeJson, TopLevelKeysInContractOrder) {
   const ojson doc = native_json(small_run());
-  EXPECT_EQ(keys(doc), (std::vector<std::string>{"schema_version", "tool", "context", "suite", "cases", "table1",
-                                                 "table2", "scaling", "status", "wall_s"}));
+  EXPECT_EQ(keys(doc), (std::vector<std::string>{"schema_version", "tool", "measure", "context", "suite", "cases",
+                                                 "table1", "table2", "scaling", "status", "wall_s"}));
+  EXPECT_EQ(doc["measure"], "time") << "what the run measured: `tcsb compare` never mixes time and counts";
   EXPECT_EQ(doc["schema_version"], kNativeJsonSchemaVersion);
   EXPECT_EQ(doc["tool"], "tcsb");
   EXPECT_EQ(doc["status"], "ok");
@@ -71,8 +72,8 @@ RunResult run_with_axes() {
 
 TEST(NativeJson, WithAxesTablesArePerConfigurationAndCasesCarryTheirs) {
   const ojson doc = native_json(run_with_axes());
-  EXPECT_EQ(keys(doc), (std::vector<std::string>{"schema_version", "tool", "context", "suite", "cases", "table1",
-                                                 "table2", "scaling", "configurations", "status", "wall_s"}));
+  EXPECT_EQ(keys(doc), (std::vector<std::string>{"schema_version", "tool", "measure", "context", "suite", "cases",
+                                                 "table1", "table2", "scaling", "configurations", "status", "wall_s"}));
   EXPECT_EQ(doc["suite"]["axes"], (ojson{{"seed", {7, 8}}}));
   EXPECT_TRUE(doc["table1"].empty());
   EXPECT_TRUE(doc["table2"].empty());

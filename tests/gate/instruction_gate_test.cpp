@@ -1,0 +1,109 @@
+// The instruction-count gate: counts are the same in every run of a build, so identical counts pass, a total that
+// grows beyond the threshold regresses and names the functions that grew, and a time result is never compared with a
+// count result.
+#include "gate/instruction_gate.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "gate/gate_outcome.h"
+#include "result_documents.h"
+
+namespace tcsb {
+namespace {
+
+using testing::ojson;
+using testing::result_doc;
+
+InstructionsView counts(std::int64_t own, std::int64_t bullet, std::int64_t step_fn = 100) {
+  return {own, bullet, own + bullet, {{"btSoftBody::PSolve_Links", bullet}, {"TcSoftBody::advance_blends", step_fn}}};
+}
+
+/// result_doc() measured in instructions: each case's counts, TC-SB's own work `own` (plain: none).
+ojson counted_doc(std::int64_t own = 1000) {
+  ojson doc = result_doc(1);
+  doc["measure"] = "instructions";
+  for (ojson& c : doc["cases"]) {
+    const bool tcsb = c["method"] == "tcsb";
+    const std::int64_t o = tcsb ? own : 0, bullet = 100000;
+    c["instructions"] = {{"own", o},
+                         {"bullet", bullet},
+                         {"total", o + bullet},
+                         {"functions", ojson::array({{{"name", "btSoftBody::PSolve_Links"}, {"instructions", bullet}},
+                                                     {{"name", "TcSoftBody::advance_blends"}, {"instructions", o}}})}};
+  }
+  return doc;
+}
+
+GateOutcome gate(const ojson& base, const ojson& next, double threshold = 0.005) {
+  GateSettings settings;
+  settings.threshold = threshold;
+  return decide_gate(compare_results(read_result(base, "base.json"), read_result(next, "new.json")), settings, false);
+}
+
+TEST(InstructionGate, IdenticalCountsPass) {
+  const InstructionDecision d = decide_instructions("n9/tcsb", counts(10, 1000), counts(10, 1000), 0.005);
+  EXPECT_FALSE(d.regressed);
+  EXPECT_FALSE(d.improved);
+  ASSERT_TRUE(d.change.has_value());
+  EXPECT_EQ(*d.change, 0.0);
+  EXPECT_TRUE(d.shifts.empty());
+}
+
+TEST(InstructionGate, OnePercentMoreRegressesAndNamesTheFunction) {
+  // 1 % more instructions in TC-SB's own work: above a 0.5 % threshold, a decided regression.
+  const InstructionDecision d = decide_instructions("n9/tcsb", counts(100, 9900), counts(200, 9900, 200), 0.005);
+  EXPECT_TRUE(d.regressed);
+  EXPECT_NEAR(*d.change, 0.01, 1e-12);
+  ASSERT_EQ(d.shifts.size(), 1u);
+  EXPECT_EQ(d.shifts[0].name, "TcSoftBody::advance_blends");
+  EXPECT_EQ(d.shifts[0].base, 100);
+  EXPECT_EQ(d.shifts[0].next, 200);
+  EXPECT_FALSE(decide_instructions("n9/tcsb", counts(100, 9900), counts(200, 9900), 0.02).regressed)
+      << "within a 2 % threshold";
+}
+
+TEST(InstructionGate, FewerInstructionsAreReportedNotFailed) {
+  const InstructionDecision d = decide_instructions("n9/tcsb", counts(200, 9900), counts(100, 9900), 0.005);
+  EXPECT_FALSE(d.regressed);
+  EXPECT_TRUE(d.improved);
+}
+
+TEST(InstructionGate, WorkWhereTheBaseCountedNoneRegresses) {
+  const InstructionDecision d = decide_instructions("n9/tcsb", counts(0, 0), counts(1, 0), 0.005);
+  EXPECT_FALSE(d.change.has_value());
+  EXPECT_TRUE(d.regressed);
+  EXPECT_THROW(decide_instructions("x", counts(0, 1), counts(0, 1), -0.1), std::invalid_argument);
+}
+
+TEST(InstructionGate, CountResultsGateOnCountsAlone) {
+  // One repetition: the timings could never be decided, the counts are.
+  const GateOutcome same = gate(counted_doc(), counted_doc());
+  EXPECT_TRUE(same.counts);
+  EXPECT_TRUE(same.pass());
+  EXPECT_EQ(same.gated_metrics, 4u);
+  const GateOutcome more = gate(counted_doc(), counted_doc(2000));  // +1000 of 101000: +0.99 %
+  EXPECT_FALSE(more.pass());
+  EXPECT_EQ(more.regressions, 2u);
+  EXPECT_EQ(more.verdict(), Verdict::kFail);
+  EXPECT_TRUE(gate(counted_doc(), counted_doc(2000), 0.01).pass());
+}
+
+TEST(InstructionGate, ATimeResultIsNeverComparedWithACountResult) {
+  EXPECT_THROW(compare_results(read_result(result_doc(1), "time.json"), read_result(counted_doc(), "counts.json")),
+               SuiteMismatch);
+}
+
+TEST(InstructionGate, TheReaderChecksTheCounts) {
+  ojson doc = counted_doc();
+  doc["cases"][1]["instructions"]["total"] = 5;
+  EXPECT_THROW(read_result(doc, "bad.json"), ResultFileError);
+  doc = counted_doc();
+  doc["measure"] = "cycles";
+  EXPECT_THROW(read_result(doc, "bad.json"), ResultFileError);
+  EXPECT_EQ(read_result(result_doc(), "old.json").measure, "time") << "a file without `measure` measured time";
+}
+
+}  // namespace
+}  // namespace tcsb
