@@ -70,7 +70,7 @@ std::uint64_t JsonFields<Json>::unsigned_integer(const Json& j, const std::strin
 }
 
 template <class Json>
-double JsonFields<Json>::number(const Json& j, const std::string& path, const Interval& range) const {
+double JsonFields<Json>::number(const Json& j, const std::string& path, const NumberRange& range) const {
   if (!j.is_number()) fail(path, "must be " + range.text() + ", got " + describe(j));
   const auto v = j.template get<double>();
   if (!range.contains(v)) fail(path, "must be " + range.text() + ", got " + j.dump());
@@ -79,7 +79,7 @@ double JsonFields<Json>::number(const Json& j, const std::string& path, const In
 
 template <class Json>
 std::optional<double> JsonFields<Json>::number_or_null(const Json& j, const std::string& path,
-                                                       const Interval& range) const {
+                                                       const NumberRange& range) const {
   if (j.is_null()) return std::nullopt;
   if (!j.is_number() || !range.contains(j.template get<double>())) {
     fail(path, "must be " + range.text() + " or null, got " + describe(j));

@@ -39,7 +39,7 @@ inline std::string index_path(const std::string& parent, std::size_t i) {
 }
 
 /// A range of real numbers for messages and checks; infinite bounds print as ">= lo" / "> lo".
-struct Interval {
+struct NumberRange {
   double lo;
   bool lo_open;
   double hi = std::numeric_limits<double>::infinity();
@@ -56,7 +56,7 @@ struct Interval {
 };
 
 /// Any finite number: what a measured value in a result may be.
-inline constexpr Interval kAnyFinite{-std::numeric_limits<double>::infinity(), true};
+inline constexpr NumberRange kAnyFinite{-std::numeric_limits<double>::infinity(), true};
 
 /// Whether an array read by JsonFields::array may be empty.
 enum class EmptyArray { kRefused, kAllowed };
@@ -79,16 +79,16 @@ class JsonFields {
   std::int64_t integer(const Json& j, const std::string& path, std::int64_t lo, std::int64_t hi) const;
   /// An integer in [0, 2^64).
   std::uint64_t unsigned_integer(const Json& j, const std::string& path) const;
-  double number(const Json& j, const std::string& path, const Interval& range) const;
+  double number(const Json& j, const std::string& path, const NumberRange& range) const;
   /// number(), or nullopt for null.
-  std::optional<double> number_or_null(const Json& j, const std::string& path, const Interval& range) const;
+  std::optional<double> number_or_null(const Json& j, const std::string& path, const NumberRange& range) const;
   bool boolean(const Json& j, const std::string& path) const;
   std::string string(const Json& j, const std::string& path) const;
   const Json& array(const Json& j, const std::string& path, EmptyArray empty = EmptyArray::kRefused) const;
   const Json& object(const Json& j, const std::string& path) const;
   /// An array of exactly `n` numbers in `range`.
   template <std::size_t n>
-  std::array<double, n> numbers(const Json& j, const std::string& path, const Interval& range) const {
+  std::array<double, n> numbers(const Json& j, const std::string& path, const NumberRange& range) const {
     if (!j.is_array() || j.size() != n) {
       fail(path, "must be an array of " + std::to_string(n) + " numbers, got " + describe(j));
     }
@@ -141,7 +141,7 @@ class JsonFields {
   }
   /// number_or_null that is also >= 0: a count or a mean of counts (N, L, I), a time or a spread is never negative.
   std::optional<double> non_negative_or_null(const Json& parent, const std::string& path, std::string_view key) const {
-    return number_or_null(member(parent, path, key), key_path(path, key), Interval{0.0, false});
+    return number_or_null(member(parent, path, key), key_path(path, key), NumberRange{0.0, false});
   }
 
  private:

@@ -50,11 +50,11 @@ InstructionsView read_instructions(const Fields& f, const ojson& j, const std::s
   v.bullet = f.integer(j, path, "bullet", 0, kMax);
   v.total = f.integer(j, path, "total", 0, kMax);
   if (v.own > kMax - v.bullet || v.own + v.bullet != v.total)
-    f.fail(Fields::join(path, "total"), "must be own + bullet");
+    f.fail(key_path(path, "total"), "must be own + bullet");
   const ojson& functions = f.array(j, path, "functions");
-  const std::string functions_path = Fields::join(path, "functions");
+  const std::string functions_path = key_path(path, "functions");
   for (std::size_t i = 0; i < functions.size(); ++i) {
-    const std::string function_path = Fields::index(functions_path, i);
+    const std::string function_path = index_path(functions_path, i);
     v.functions.emplace_back(f.string(functions[i], function_path, "name"),
                              f.integer(functions[i], function_path, "instructions", 0, kMax));
   }
@@ -89,7 +89,7 @@ CaseView read_case(const Fields& f, const ojson& j, const std::string& path) {
     c.repetitions.push_back(read_repetition(f, reps[i], rep_path));
   }
   if (j.contains("instructions"))
-    c.instructions = read_instructions(f, f.object(j, path, "instructions"), Fields::join(path, "instructions"));
+    c.instructions = read_instructions(f, f.object(j, path, "instructions"), key_path(path, "instructions"));
   return c;
 }
 

@@ -19,8 +19,8 @@ constexpr int kCalibrationVersion = 1;
 /// Bounds of a calibration file's input (it holds a few numbers).
 constexpr std::size_t kMaxCalibrationBytes = 1 << 20;
 
-const Interval kStiffness{0.0, true, 1.0, false};
-const Interval kNonNegativeNumber{0.0, false};
+const NumberRange kStiffness{0.0, true, 1.0, false};
+const NumberRange kNonNegativeNumber{0.0, false};
 
 nlohmann::ordered_json fit_json(const StiffnessFit& f, bool level) {
   nlohmann::ordered_json j;
@@ -43,7 +43,7 @@ StiffnessFit parse_fit(const Reader& r, const json& j, const std::string& path, 
   if (level)
     o.read("level", f.level, 1, 64, true);
   else
-    o.read("compression", f.compression, Interval{0.0, true, 1.0, true}, true);
+    o.read("compression", f.compression, NumberRange{0.0, true, 1.0, true}, true);
   o.read("linear_stiffness", f.linear_stiffness, kStiffness, true);
   o.read("rms_pct", f.rms_pct, kNonNegativeNumber, true);
   o.read("uncalibrated_rms_pct", f.uncalibrated_rms_pct, kNonNegativeNumber, true);

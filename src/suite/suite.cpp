@@ -132,7 +132,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
   }
 }
 
-std::array<double, 3> read_vector(const Reader& r, const Object& o, const char* key, const Interval& range,
+std::array<double, 3> read_vector(const Reader& r, const Object& o, const char* key, const NumberRange& range,
                                   std::array<double, 3> fallback) {
   const json* j = o.find(key);
   return j ? r.numbers<3>(*j, o.at(key), range) : fallback;
@@ -198,7 +198,7 @@ Camera parse_camera(const Reader& r, const json& j, const std::string& path) {
   Camera c;
   c.up = read_vector(r, o, "up", kAnyFinite, c.up);
   if (c.up == std::array<double, 3>{}) r.fail(o.at("up"), "must not be the zero vector");
-  o.read("fov_deg", c.fov_deg, Interval{0.0, true, 180.0, true});
+  o.read("fov_deg", c.fov_deg, NumberRange{0.0, true, 180.0, true});
   if (const json* image = o.find("image")) {
     if (!image->is_array() || image->size() != 2)
       r.fail(o.at("image"), "must be [width, height] in pixels, got " + describe(*image));
@@ -244,7 +244,7 @@ SceneSettings parse_scene(const Reader& r, const json& j) {
   o.read("margin", scene.margin, kPositive);
   o.read("friction", scene.friction, kUnit);
   // A voxel below a millimetre would make the SDF's cells (and their memory, clamped by Bullet) explode for nothing.
-  o.read("sdf_voxel", scene.sdf_voxel, Interval{0.001, false, 10.0, false});
+  o.read("sdf_voxel", scene.sdf_voxel, NumberRange{0.001, false, 10.0, false});
   if (const json* camera = o.find("camera")) scene.camera = parse_camera(r, *camera, o.at("camera"));
   return scene;
 }

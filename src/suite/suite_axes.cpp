@@ -32,7 +32,7 @@ const AxisSetting kAxisSettings[] = {
                               Suite& s) { s.solver.diterations = whole(r, v, at, 0, 1000); }},
     {"solver.damping",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) {
-       s.solver.damping = r.number(v, at, Interval{0.0, false, 1.0, true});
+       s.solver.damping = r.number(v, at, NumberRange{0.0, false, 1.0, true});
      }},
     {"solver.stiffness", [](const Reader& r, const json& v, const std::string& at,
                             Suite& s) { s.solver.linear_stiffness = r.number(v, at, kFraction); }},

@@ -25,15 +25,15 @@ using json = nlohmann::json;
 using tcsb::describe;
 using tcsb::fmt_number;
 using tcsb::index_path;
-using tcsb::Interval;
+using tcsb::NumberRange;
 using tcsb::kAnyFinite;
 using tcsb::key_path;
 
 /// The ranges the suite's fields share.
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
-inline constexpr Interval kPositive{0.0, true}, kNonNegative{0.0, false};
-inline constexpr Interval kFraction{0.0, true, 1.0, false};  // (0, 1]
-inline constexpr Interval kUnit{0.0, false, 1.0, false};     // [0, 1]
+inline constexpr NumberRange kPositive{0.0, true}, kNonNegative{0.0, false};
+inline constexpr NumberRange kFraction{0.0, true, 1.0, false};  // (0, 1]
+inline constexpr NumberRange kUnit{0.0, false, 1.0, false};     // [0, 1]
 
 /// Typed access to a suite's JSON (base/json_fields.h: the one reader of every input and its rules).
 using Reader = JsonFields<json>;
@@ -65,7 +65,7 @@ class Object {
   void read(const char* key, int& out, long long lo, long long hi, bool required = false) const {
     if (const json* v = find(key, required)) out = static_cast<int>(r_.integer(*v, at(key), lo, hi));
   }
-  void read(const char* key, double& out, const Interval& range, bool required = false) const {
+  void read(const char* key, double& out, const NumberRange& range, bool required = false) const {
     if (const json* v = find(key, required)) out = r_.number(*v, at(key), range);
   }
   void read(const char* key, bool& out) const {

@@ -30,7 +30,7 @@ constexpr const char* kMachineKeys[] = {"host", "cpu_model", "cores", "transpare
 /// Typed reading of one shard document; every failure names the file and the field (base/json_fields.h).
 using Reader = JsonFields<ojson>;
 
-constexpr Interval kNonNegative{0.0, false};
+constexpr NumberRange kNonNegative{0.0, false};
 
 /// A measured value as RunResult holds it: NaN where the file has null (nothing was measured), so writing the
 /// merged run gives null again.

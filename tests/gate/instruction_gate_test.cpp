@@ -98,10 +98,10 @@ TEST(InstructionGate, ATimeResultIsNeverComparedWithACountResult) {
 TEST(InstructionGate, TheReaderChecksTheCounts) {
   ojson doc = counted_doc();
   doc["cases"][1]["instructions"]["total"] = 5;
-  EXPECT_THROW(read_result(doc, "bad.json"), ResultFileError);
+  EXPECT_THROW(read_result(doc, "bad.json"), InputError);
   doc = counted_doc();
   doc["measure"] = "cycles";
-  EXPECT_THROW(read_result(doc, "bad.json"), ResultFileError);
+  EXPECT_THROW(read_result(doc, "bad.json"), InputError);
   EXPECT_EQ(read_result(result_doc(), "old.json").measure, "time") << "a file without `measure` measured time";
 }
 
