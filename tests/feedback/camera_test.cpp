@@ -8,29 +8,19 @@
 #include <stdexcept>
 
 #include "feedback/screen_projection.h"
+#include "test_camera.h"
 
 namespace tcsb {
 namespace {
 
-/// Ten metres in front of the origin, looking at it along -z, 90 degrees vertical field of view, 200 x 100 pixels:
-/// the focal length is 50 pixels.
-Camera looking_at_origin() {
-  Camera c;
-  c.pose = {{0, 0, 10}, {0, 0, 0}};
-  c.fov_deg = 90;
-  c.width_px = 200;
-  c.height_px = 100;
-  return c;
-}
-
 TEST(Camera, StandsStillWithoutAPath) {
-  const Camera c = looking_at_origin();
+  const Camera c = camera_looking_at_origin();
   EXPECT_EQ(c.pose_at(0).position, c.pose.position);
   EXPECT_EQ(c.pose_at(1e6).target, c.pose.target);
 }
 
 TEST(Camera, MovesLinearlyBetweenKeyframesAndHoldsOutside) {
-  Camera c = looking_at_origin();
+  Camera c = camera_looking_at_origin();
   c.path = {{1.0, {{0, 0, 10}, {0, 0, 0}}}, {3.0, {{4, 0, 10}, {2, 0, 0}}}, {4.0, {{4, 8, 10}, {2, 0, 0}}}};
   EXPECT_DOUBLE_EQ(c.pose_at(0.0).position[0], 0.0);  // before the first keyframe: its pose
   EXPECT_DOUBLE_EQ(c.pose_at(2.0).position[0], 2.0);
@@ -41,7 +31,7 @@ TEST(Camera, MovesLinearlyBetweenKeyframesAndHoldsOutside) {
 }
 
 TEST(ScreenProjection, ThePointLookedAtIsTheImagesCentre) {
-  const ScreenProjection view(looking_at_origin(), 0);
+  const ScreenProjection view(camera_looking_at_origin(), 0);
   const ScreenPoint p = view.project(Eigen::Vector3d(0, 0, 0));
   EXPECT_TRUE(p.in_view);
   EXPECT_DOUBLE_EQ(p.x, 100.0);
@@ -53,7 +43,7 @@ TEST(ScreenProjection, ThePointLookedAtIsTheImagesCentre) {
 }
 
 TEST(ScreenProjection, WhatIsBehindOrBesideTheImageIsNotInView) {
-  const ScreenProjection view(looking_at_origin(), 0);
+  const ScreenProjection view(camera_looking_at_origin(), 0);
   EXPECT_FALSE(view.project(Eigen::Vector3d(0, 0, 11)).in_view) << "behind the camera";
   EXPECT_FALSE(view.project(Eigen::Vector3d(0, 0, 10)).in_view) << "at the lens";
   EXPECT_FALSE(view.project(Eigen::Vector3d(25, 0, 0)).in_view) << "125 px right of the centre of a 200 px image";
@@ -62,7 +52,7 @@ TEST(ScreenProjection, WhatIsBehindOrBesideTheImageIsNotInView) {
 }
 
 TEST(ScreenProjection, PixelSpeedIsTheProjectionsDerivative) {
-  const ScreenProjection view(looking_at_origin(), 0);
+  const ScreenProjection view(camera_looking_at_origin(), 0);
   const Eigen::Vector3d x(2, -1, 3), v(0.3, 0.7, -1.1);
   const double h = 1e-6;
   const ScreenPoint a = view.project(x), b = view.project(x + h * v);
@@ -76,7 +66,7 @@ TEST(ScreenProjection, PixelSpeedIsTheProjectionsDerivative) {
 }
 
 TEST(ScreenProjection, ApparentSizeFallsWithDistance) {
-  const ScreenProjection view(looking_at_origin(), 0);
+  const ScreenProjection view(camera_looking_at_origin(), 0);
   EXPECT_DOUBLE_EQ(view.apparent_size_px(Eigen::Vector3d(0, 0, 0), 2.0), 10.0);
   EXPECT_DOUBLE_EQ(view.apparent_size_px(Eigen::Vector3d(0, 0, -10), 2.0), 5.0);
   EXPECT_EQ(view.apparent_size_px(Eigen::Vector3d(0, 0, 20), 2.0), 0.0);
@@ -84,7 +74,7 @@ TEST(ScreenProjection, ApparentSizeFallsWithDistance) {
 }
 
 TEST(ScreenProjection, FollowsThePath) {
-  Camera c = looking_at_origin();
+  Camera c = camera_looking_at_origin();
   c.path = {{0.0, {{0, 0, 10}, {0, 0, 0}}}, {1.0, {{30, 0, 10}, {30, 0, 0}}}};
   EXPECT_TRUE(ScreenProjection(c, 0.0).project(Eigen::Vector3d(0, 0, 0)).in_view);
   EXPECT_FALSE(ScreenProjection(c, 1.0).project(Eigen::Vector3d(0, 0, 0)).in_view) << "the camera moved away";
@@ -92,10 +82,10 @@ TEST(ScreenProjection, FollowsThePath) {
 }
 
 TEST(ScreenProjection, RefusesACameraWithoutADirection) {
-  Camera c = looking_at_origin();
+  Camera c = camera_looking_at_origin();
   c.pose.target = c.pose.position;
   EXPECT_THROW(ScreenProjection(c, 0), std::invalid_argument);
-  c = looking_at_origin();
+  c = camera_looking_at_origin();
   c.up = {0, 0, 1};  // along the viewing direction
   EXPECT_THROW(ScreenProjection(c, 0), std::invalid_argument);
 }

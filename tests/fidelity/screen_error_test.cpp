@@ -5,19 +5,13 @@
 
 #include <cmath>
 
+#include "../feedback/test_camera.h"
+
 namespace tcsb {
 namespace {
 
-/// Ten metres in front of the origin along +z, looking at it, 90 degrees vertical field of view, 200 x 100 pixels:
-/// one metre sideways at the origin is 5 pixels.
-ScreenProjection view() {
-  Camera c;
-  c.pose = {{0, 0, 10}, {0, 0, 0}};
-  c.fov_deg = 90;
-  c.width_px = 200;
-  c.height_px = 100;
-  return {c, 0.0};
-}
+/// One metre sideways at the origin is 5 pixels (test_camera.h).
+ScreenProjection view() { return {camera_looking_at_origin(), 0.0}; }
 
 TEST(ScreenError, IdenticalSurfacesHaveNone) {
   const std::vector<Eigen::Vector3d> x{{0, 0, 0}, {1, 1, 0}, {-2, 0, 1}};
