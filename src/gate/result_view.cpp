@@ -49,8 +49,7 @@ InstructionsView read_instructions(const Fields& f, const ojson& j, const std::s
   v.own = f.integer(j, path, "own", 0, kMax);
   v.bullet = f.integer(j, path, "bullet", 0, kMax);
   v.total = f.integer(j, path, "total", 0, kMax);
-  if (v.own > kMax - v.bullet || v.own + v.bullet != v.total)
-    f.fail(key_path(path, "total"), "must be own + bullet");
+  if (v.own > kMax - v.bullet || v.own + v.bullet != v.total) f.fail(key_path(path, "total"), "must be own + bullet");
   const ojson& functions = f.array(j, path, "functions");
   const std::string functions_path = key_path(path, "functions");
   for (std::size_t i = 0; i < functions.size(); ++i) {

@@ -25,9 +25,9 @@ using json = nlohmann::json;
 using tcsb::describe;
 using tcsb::fmt_number;
 using tcsb::index_path;
-using tcsb::NumberRange;
 using tcsb::kAnyFinite;
 using tcsb::key_path;
+using tcsb::NumberRange;
 
 /// The ranges the suite's fields share.
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
