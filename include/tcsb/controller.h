@@ -11,6 +11,10 @@
 //
 // In a btSoftRigidDynamicsWorld that the application steps with stepSimulation, a TreeCutDriver does the same
 // around every internal step from the world's pre-tick callback: examples/drape_tcsb.cpp.
+//
+// With settings.view the saliency sees through a camera (the BSWDF's view terms: motion on the image, nothing out of
+// view kept fine): pass make_controller a Spectator (feedback/camera.h: the camera, fixed or along keyframes, and the
+// step length), as make_controller(settings, target_nodes, seed, Spectator{camera, dt}).
 #pragma once
 
 #include "feedback/controller.h"         // IWYU pragma: export
