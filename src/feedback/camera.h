@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace tcsb {
@@ -14,6 +15,28 @@ struct CameraPose {
   std::array<double, 3> position{0, 0, 10};
   std::array<double, 3> target{0, 0, 0};
 };
+
+/// Why a pose gives no image, if it does not.
+enum class CameraPoseProblem {
+  kNone,
+  kNoDirection,   ///< the position equals the target: the camera looks nowhere
+  kLooksAlongUp,  ///< the viewing direction is parallel to up: the image has no up
+};
+
+/// The one rule for a usable pose, for the suite parser and ScreenProjection alike (inline: the parser's library
+/// does not link this one). Parallel means within 1e-6 of the product of the two lengths.
+inline CameraPoseProblem camera_pose_problem(const CameraPose& pose, const std::array<double, 3>& up) {
+  const std::array<double, 3> d{pose.target[0] - pose.position[0], pose.target[1] - pose.position[1],
+                                pose.target[2] - pose.position[2]};
+  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(length > 0)) return CameraPoseProblem::kNoDirection;
+  const std::array<double, 3> side{d[1] * up[2] - d[2] * up[1], d[2] * up[0] - d[0] * up[2],
+                                   d[0] * up[1] - d[1] * up[0]};
+  const double up_length = std::sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
+  if (!(std::sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]) > 1e-6 * length * up_length))
+    return CameraPoseProblem::kLooksAlongUp;
+  return CameraPoseProblem::kNone;
+}
 
 /// One keyframe of a scripted camera path: the pose at `time` seconds of simulated time.
 struct CameraKey {

@@ -13,13 +13,14 @@ Eigen::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]};
 
 ScreenProjection::ScreenProjection(const Camera& camera, double time) {
   const CameraPose pose = camera.pose_at(time);
+  switch (camera_pose_problem(pose, camera.up)) {
+    case CameraPoseProblem::kNoDirection: throw std::invalid_argument("camera: position equals target");
+    case CameraPoseProblem::kLooksAlongUp: throw std::invalid_argument("camera: up lies along the viewing direction");
+    case CameraPoseProblem::kNone: break;
+  }
   eye_ = vec(pose.position);
-  const Eigen::Vector3d view = vec(pose.target) - eye_;
-  if (!(view.norm() > 0)) throw std::invalid_argument("camera: position equals target");
-  forward_ = view.normalized();
-  const Eigen::Vector3d side = forward_.cross(vec(camera.up));
-  if (!(side.norm() > 1e-9)) throw std::invalid_argument("camera: up lies along the viewing direction");
-  right_ = side.normalized();
+  forward_ = (vec(pose.target) - eye_).normalized();
+  right_ = forward_.cross(vec(camera.up)).normalized();
   up_ = right_.cross(forward_);
   width_ = camera.width_px;
   height_ = camera.height_px;

@@ -36,11 +36,11 @@ nlohmann::ordered_json frames_json(const Suite& suite, const Context& context, c
   doc["diverged_step"] = json_integer(f.diverged_step);
   doc["diverged_reason"] = f.diverged_reason;
   const std::optional<Camera>& camera = suite.scene.camera;
+  const auto vector = [](const std::array<double, 3>& v) {
+    return nlohmann::ordered_json{json_number(v[0]), json_number(v[1]), json_number(v[2])};
+  };
   if (camera) {
     // The camera's lens and image; its pose per frame, where it stood after that many steps.
-    const auto vector = [](const std::array<double, 3>& v) {
-      return nlohmann::ordered_json{json_number(v[0]), json_number(v[1]), json_number(v[2])};
-    };
     doc["camera"] = {{"up", vector(camera->up)},
                      {"fov_deg", json_number(camera->fov_deg)},
                      {"image", {camera->width_px, camera->height_px}}};
@@ -60,9 +60,7 @@ nlohmann::ordered_json frames_json(const Suite& suite, const Context& context, c
     j["tcsb_levels"] = frame.tcsb_levels;
     if (camera) {
       const CameraPose pose = camera->pose_at(static_cast<double>(frame.step) * suite.world.dt);
-      j["camera"] = {
-          {"position", {json_number(pose.position[0]), json_number(pose.position[1]), json_number(pose.position[2])}},
-          {"target", {json_number(pose.target[0]), json_number(pose.target[1]), json_number(pose.target[2])}}};
+      j["camera"] = {{"position", vector(pose.position)}, {"target", vector(pose.target)}};
       j["uniform_nodes"] = points_json(frame.uniform_nodes);
     }
     frames.push_back(std::move(j));

@@ -181,15 +181,13 @@ CameraPose parse_camera_pose(const Reader& r, const Object& o, const std::array<
   CameraPose pose;
   pose.position = r.numbers<3>(o.need("position"), o.at("position"), kAnyFinite);
   pose.target = r.numbers<3>(o.need("target"), o.at("target"), kAnyFinite);
-  const std::array<double, 3> d{pose.target[0] - pose.position[0], pose.target[1] - pose.position[1],
-                                pose.target[2] - pose.position[2]};
-  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  if (!(length > 0)) r.fail(o.at("target"), "must differ from position (the camera must look somewhere)");
-  const std::array<double, 3> side{d[1] * up[2] - d[2] * up[1], d[2] * up[0] - d[0] * up[2],
-                                   d[0] * up[1] - d[1] * up[0]};
-  const double up_length = std::sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
-  if (!(std::sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]) > 1e-6 * length * up_length))
-    r.fail(o.at("target"), "the camera looks along its up direction, so the image has no up");
+  switch (camera_pose_problem(pose, up)) {
+    case CameraPoseProblem::kNoDirection:
+      r.fail(o.at("target"), "must differ from position (the camera must look somewhere)");
+    case CameraPoseProblem::kLooksAlongUp:
+      r.fail(o.at("target"), "the camera looks along its up direction, so the image has no up");
+    case CameraPoseProblem::kNone: break;
+  }
   return pose;
 }
 
