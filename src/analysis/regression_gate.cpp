@@ -35,18 +35,32 @@ std::vector<double> holm_adjust(std::span<const double> p_values) {
 
 namespace {
 
-/// The percentile bootstrap interval of the median's relative change, each side resampled on its own.
+/// A side's processes: as given, or one process for every sample.
+std::vector<int> processes_of(const std::vector<int>& process, std::size_t samples) {
+  return process.empty() ? std::vector<int>(samples, 0) : process;
+}
+
+/// The values at `picks`, in order.
+std::vector<double> picked(const std::vector<double>& values, const std::vector<std::size_t>& picks) {
+  std::vector<double> out;
+  out.reserve(picks.size());
+  for (const std::size_t i : picks) out.push_back(values[i]);
+  return out;
+}
+
+/// The percentile bootstrap interval of the median's relative change, each side resampled on its own: its
+/// processes, then their samples (with one process, the samples alone).
 std::optional<Interval> change_interval(const TimingSamples& s, double one_sided_alpha, std::uint64_t seed) {
   // Each tail rests on kReplicatesPerTail replicates, as reproduce's intervals do (analysis/sequential_looks.h).
   const auto resamples = static_cast<std::size_t>(std::ceil(kReplicatesPerTail / one_sided_alpha - 1e-9));
   std::mt19937_64 rng(seed);
-  std::vector<double> replicates, base(s.base.size()), next(s.next.size());
+  const std::vector<int> base_process = processes_of(s.base_process, s.base.size());
+  const std::vector<int> next_process = processes_of(s.next_process, s.next.size());
+  std::vector<double> replicates;
   replicates.reserve(resamples);
   for (std::size_t r = 0; r < resamples; ++r) {
-    const std::vector<std::size_t> b = resample_indices(s.base.size(), rng);
-    const std::vector<std::size_t> n = resample_indices(s.next.size(), rng);
-    for (std::size_t i = 0; i < b.size(); ++i) base[i] = s.base[b[i]];
-    for (std::size_t i = 0; i < n.size(); ++i) next[i] = s.next[n[i]];
+    const std::vector<double> base = picked(s.base, resample_grouped(base_process, rng));
+    const std::vector<double> next = picked(s.next, resample_grouped(next_process, rng));
     const double mb = median(base);
     const std::optional<double> change = safe_ratio(median(next) - mb, mb);
     replicates.push_back(change ? *change : std::numeric_limits<double>::quiet_NaN());
@@ -98,6 +112,12 @@ std::vector<TimingDecision> decide_timings(std::span<const TimingSamples> family
     if (count_nonfinite(s.base) > 0 || count_nonfinite(s.next) > 0) {
       throw std::invalid_argument("decide_timings: non-finite sample value");
     }
+    if ((!s.base_process.empty() && s.base_process.size() != s.base.size()) ||
+        (!s.next_process.empty() && s.next_process.size() != s.next.size())) {
+      throw std::invalid_argument("decide_timings: a process list of another length than its samples");
+    }
+    d.base_processes = std::max<std::size_t>(1, process_count(s.base_process));
+    d.next_processes = std::max<std::size_t>(1, process_count(s.next_process));
     if (!s.base.empty()) d.base_median = median(s.base);
     if (!s.next.empty()) d.next_median = median(s.next);
     if (d.base_median && d.next_median) d.change = safe_ratio(*d.next_median - *d.base_median, *d.base_median);

@@ -24,10 +24,14 @@ struct GateSettings {
   std::uint64_t seed = 1;       ///< the bootstrap's: the same samples give the same verdicts in every run
 };
 
-/// One metric's samples (one value per repetition) in the base run and in the new run.
+/// One metric's samples (one value per repetition) in the base run and in the new run, each with the process that
+/// measured it (a merged result's shard): the interval resamples a run's processes first, then their repetitions
+/// (resample_grouped), so a merged run's spread between processes enters it. Empty: one process per run.
 struct TimingSamples {
   std::vector<double> base;
   std::vector<double> next;
+  std::vector<int> base_process{};  ///< per base sample, or empty
+  std::vector<int> next_process{};  ///< per next sample, or empty
 };
 
 /// What the gate concludes about one metric.
@@ -41,16 +45,17 @@ enum class TimingVerdict {
 
 /// The decision about one metric; every number is finite.
 struct TimingDecision {
-  std::size_t base_count = 0, next_count = 0;  ///< samples on each side
-  std::optional<double> base_median;           ///< nullopt for an empty sample
+  std::size_t base_count = 0, next_count = 0;          ///< samples on each side
+  std::size_t base_processes = 1, next_processes = 1;  ///< processes that measured them, which the interval pools
+  std::optional<double> base_median;                   ///< nullopt for an empty sample
   std::optional<double> next_median;
   std::optional<double> change;  ///< next median / base median - 1; nullopt when undefined
   /// Holm-adjusted one-sided p-value in the direction of the change (larger: next > base, else next < base);
   /// compare it with alpha directly. nullopt when the metric is unreliable.
   std::optional<double> p_value;
   /// Where the change could lie had both runs been repeated: the percentile bootstrap over each side's samples
-  /// (resampled apart: the runs' repetitions are not paired), each end a one-sided test at alpha / m. nullopt when
-  /// unreliable.
+  /// (resampled apart: the runs' repetitions are not paired; a merged run's processes first), each end a one-sided
+  /// test at alpha / m. nullopt when unreliable.
   std::optional<Interval> interval;
   double confidence = 0;  ///< the interval's (two-sided) confidence, 1 - 2 alpha / m; 0 without one
   /// Undecided only: repetitions per run that would likely decide, assuming the change stays where it is and the
@@ -60,7 +65,8 @@ struct TimingDecision {
 };
 
 /// Decides every metric of `family` together (the Holm correction runs over the reliable ones). Throws
-/// std::invalid_argument on a non-finite sample value, alpha outside (0, 1) or a negative or non-finite threshold.
+/// std::invalid_argument on a non-finite sample value, a process list of another length than its samples, alpha
+/// outside (0, 1) or a negative or non-finite threshold.
 std::vector<TimingDecision> decide_timings(std::span<const TimingSamples> family, const GateSettings& settings);
 
 /// Holm–Bonferroni adjusted p-values, in input order: p_(i) * (m - i) for the i-th smallest (0-based), made

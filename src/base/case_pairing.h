@@ -3,7 +3,7 @@
 // that budget (a static body of as many nodes) — repetition by repetition: repetition r of the case with repetition r
 // of its base, both ok, so a ratio is of two measurements made in the same round of the interleaved run (and, in a
 // merged run, in the same process). One rule for the run itself (paper/paper_tables.h) and for a result file read
-// back (gate/result_view.h); each describes its cases to it through a PairingKey. In base/, the floor both stand on.
+// back (result/result_view.h); each describes its cases to it through a PairingKey. In base/, the floor both stand on.
 #pragma once
 
 #include <algorithm>

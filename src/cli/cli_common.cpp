@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "base/atomic_file.h"
 #include "base/terminal_text.h"
-#include "report/report_writer.h"
 #include "run/context.h"
 #include "run/out_of_memory.h"
 #include "suite/suite.h"

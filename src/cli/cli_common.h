@@ -59,7 +59,7 @@ void print_warning(std::string_view message);
 
 /// Runs a command, turning exceptions into one stderr line and an exit code: InputError, UsageError and running out
 /// of memory (OutOfMemoryError, std::bad_alloc: a suite too large for this machine) -> kExitUsage; WriteError
-/// (report/report_writer.h: an output the machine refused) -> kExitInternal; any other
+/// (base/atomic_file.h: an output the machine refused) -> kExitInternal; any other
 /// std::exception -> "tcsb: internal error: ..." and kExitInternal.
 int guarded(const std::function<int()>& command);
 

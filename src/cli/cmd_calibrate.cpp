@@ -7,13 +7,13 @@
 #include <iostream>
 #include <sstream>
 
+#include "base/atomic_file.h"
 #include "base/input_error.h"
 #include "base/terminal_text.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/run_support.h"
 #include "fidelity/calibration.h"
-#include "report/report_writer.h"
 #include "suite/calibration_path.h"
 
 namespace tcsb::cli {

@@ -13,15 +13,15 @@
 #include <cmath>
 #include <iostream>
 
+#include "base/atomic_file.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "cli/result_file.h"
 #include "cli/run_support.h"
 #include "gate/gate_outcome.h"
 #include "report/comparison_summary.h"
 #include "report/gate_summary_json.h"
 #include "report/json_report.h"
-#include "report/report_writer.h"
+#include "result/result_file.h"
 
 namespace tcsb::cli {
 namespace {

@@ -4,8 +4,8 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "cli/result_file.h"
 #include "cli/run_support.h"
+#include "result/result_file.h"
 
 namespace tcsb::cli {
 

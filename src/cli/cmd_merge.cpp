@@ -7,11 +7,11 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "cli/result_file.h"
 #include "cli/run_support.h"
 #include "gate/run_consistency.h"
 #include "report/console_report.h"
 #include "report/json_report.h"
+#include "result/result_file.h"
 #include "sweep/shard_merge.h"
 
 namespace tcsb::cli {
@@ -38,8 +38,9 @@ int merge_command(const MergeArgs& args) {
   // The suite and its calibration were read too (from where the shards' suite lived).
   check_out_is_not_suite_input(args.out, merged.result.suite);
   for (const std::string& warning : merged.warnings) print_warning(warning);
-  if (!args.quiet) print_console_report(merged.result, std::cerr);
-  return write_report(json_text(merged_json(merged)), args.out);
+  const RunTables tables = run_tables(merged.result);
+  if (!args.quiet) print_console_report(merged.result, tables, std::cerr);
+  return write_report(json_text(merged_json(merged, tables)), args.out);
 }
 
 }  // namespace tcsb::cli

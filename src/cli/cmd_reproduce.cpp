@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "base/atomic_file.h"
 #include "case/step_clock.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
@@ -13,7 +14,6 @@
 #include "paper/paper_claims.h"
 #include "report/console_report.h"
 #include "report/json_report.h"
-#include "report/report_writer.h"
 #include "report/reproduction_report.h"
 #include "report/text_table.h"
 
@@ -72,13 +72,13 @@ int reproduce_command(const ReproduceArgs& args) {
   RunResult result;
   std::optional<nlohmann::ordered_json> merged_context;  // with --processes: the merged shards' context block
   if (args.processes == 1) {
-    result = run_on_console(suite, args.quiet);
+    result = run_on_console(suite, args.quiet).result;  // the looks may add repetitions: tables are taken after
   } else {
     MergedShards merged = run_in_processes(suite_file, args.repetitions, args.processes, suite.repetitions);
     for (const std::string& warning : merged.warnings) print_warning(warning);
     result = std::move(merged.result);
     merged_context = std::move(merged.context);
-    if (!args.quiet) print_console_report(result, std::cerr);
+    if (!args.quiet) print_console_report(result, run_tables(result), std::cerr);
   }
 
   ReproductionOptions options;
@@ -89,7 +89,7 @@ int reproduce_command(const ReproduceArgs& args) {
   warn_repetitions(result, suite.repetitions);  // those the looks added; the run's own were warned of above
   print_reproduction(reproduction, args.targets, std::cerr);
 
-  nlohmann::ordered_json report = native_json(result);
+  nlohmann::ordered_json report = native_json(result, reproduction.tables.run);
   if (merged_context) report["context"] = *merged_context;
   report["reproduction"] = reproduction_json(reproduction);
   const int written = write_report(json_text(report), args.out);

@@ -140,10 +140,13 @@ int run_and_report(const Suite& suite, const RunArgs& args) {
     check_instruction_measure(args, suite);
     counts = callgrind_out_file();
   }
-  RunResult result = run_on_console(suite, args.quiet, shard, measure);
-  if (measure == Measure::kInstructions) attach_instruction_counts(result, read_meter_dumps(counts), counts.string());
+  FinishedRun run = run_on_console(suite, args.quiet, shard, measure);
+  // The counts change no table (they read step times), so the tables computed for the console stay the run's.
+  if (measure == Measure::kInstructions)
+    attach_instruction_counts(run.result, read_meter_dumps(counts), counts.string());
   // A shard's result carries what `tcsb merge` needs (--shard takes the native JSON only).
-  return write_report(shard ? json_text(shard_json(result)) : format->render(result), args.out);
+  return write_report(shard ? json_text(shard_json(run.result, run.tables)) : format->render(run.result, run.tables),
+                      args.out);
 }
 
 }  // namespace tcsb::cli

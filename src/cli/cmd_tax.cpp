@@ -9,7 +9,6 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "cli/result_file.h"
 #include "cli/run_support.h"
 #include "gate/result_comparison.h"
 #include "gate/run_consistency.h"
@@ -17,6 +16,7 @@
 #include "report/json_report.h"
 #include "report/tax_report.h"
 #include "report/text_table.h"
+#include "result/result_file.h"
 
 namespace tcsb::cli {
 namespace {

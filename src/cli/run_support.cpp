@@ -5,12 +5,13 @@
 #include <unistd.h>
 
 #include <iostream>
+#include <utility>
 
+#include "base/atomic_file.h"
 #include "base/terminal_text.h"
 #include "cli/cli_common.h"
 #include "report/console_report.h"
 #include "report/format_registry.h"
-#include "report/report_writer.h"
 #include "report/text_table.h"
 #include "run/context.h"
 #include "run/runner.h"
@@ -144,7 +145,7 @@ void warn_stalls(const RunResult& result, int from) {
 
 }  // namespace
 
-RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard, Measure measure) {
+FinishedRun run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard, Measure measure) {
   const Context context = gather_context();
   print_warnings(context, std::cerr);
   RunResult result;
@@ -156,9 +157,10 @@ RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<Sha
     result = run_suite(suite, context, options);
     result.shard = shard;
   }
-  if (!quiet) print_console_report(result, std::cerr);
+  RunTables tables = run_tables(result);
+  if (!quiet) print_console_report(result, tables, std::cerr);
   warn_repetitions(result, 0);
-  return result;
+  return {std::move(result), std::move(tables)};
 }
 
 void warn_repetitions(const RunResult& result, int from) {

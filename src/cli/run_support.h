@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "paper/run_tables.h"
 #include "report/report_format.h"
 #include "run/run_result.h"
 #include "suite/suite.h"
@@ -17,7 +18,7 @@ class App;
 
 namespace tcsb::cli {
 
-/// Fails now (UsageError), not after the run, if --out could not be written (report/report_writer.h's
+/// Fails now (UsageError), not after the run, if --out could not be written (base/atomic_file.h's
 /// output_problem: a missing directory, a directory, a name too long, no file can be created there). Empty `out`
 /// means stdout: nothing to check. `option` names the flag in the message.
 void check_out_path(const std::string& out, const std::string& option = "--out");
@@ -50,8 +51,13 @@ void apply_repetitions(const std::optional<int>& repetitions, Suite& suite);
 /// (run/stall.h).
 /// With `shard`, the result says which shard it is; the suite must be restricted to it (restrict_to_shard()).
 /// With Measure::kInstructions the process must run under callgrind (cli/callgrind_launch.h).
-RunResult run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard = std::nullopt,
-                         Measure measure = Measure::kTime);
+/// Returns the run with its tables (run_tables), computed once for the console and the output file.
+struct FinishedRun {
+  RunResult result;
+  RunTables tables;
+};
+FinishedRun run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard = std::nullopt,
+                           Measure measure = Measure::kTime);
 
 /// The warnings run_on_console gives after a run (diverged and stalled repetitions), for the repetitions numbered
 /// `from` or later: `reproduce` gives them for the repetitions its looks added.

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "cli/cli_common.h"
-#include "cli/result_file.h"
 #include "cli/temporary_directory.h"
+#include "result/result_file.h"
 
 extern char** environ;
 

@@ -10,8 +10,8 @@
 #include <streambuf>
 #include <string>
 
+#include "base/atomic_file.h"
 #include "cli/cli_common.h"
-#include "report/report_writer.h"
 
 namespace tcsb::cli {
 namespace {

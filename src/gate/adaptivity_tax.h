@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "analysis/claim.h"
-#include "gate/result_view.h"
+#include "result/result_view.h"
 
 namespace tcsb {
 

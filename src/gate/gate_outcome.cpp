@@ -48,6 +48,19 @@ int GateOutcome::more_repetitions() const {
   return most;
 }
 
+std::pair<std::size_t, std::size_t> GateOutcome::processes() const {
+  std::pair<std::size_t, std::size_t> most{1, 1};
+  const auto scan = [&](const std::vector<TimingDecision>& decisions) {
+    for (const TimingDecision& d : decisions) {
+      most.first = std::max(most.first, d.base_processes);
+      most.second = std::max(most.second, d.next_processes);
+    }
+  };
+  scan(ratio_decisions);
+  if (absolute_gated) scan(step_decisions);
+  return most;
+}
+
 GateOutcome decide_gate(ResultComparison comparison, const GateSettings& settings, bool absolute_gated) {
   GateOutcome out;
   out.settings = settings;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "analysis/claim.h"
@@ -46,6 +47,9 @@ struct GateOutcome {
   /// The most extra repetitions per run any undecided metric would likely need (0 when none is undecided;
   /// kMaxMoreRepetitions when one cannot say).
   int more_repetitions() const;
+  /// The most processes any gated interval pooled in the base and in the new run: more than 1 only for a merged
+  /// result, whose intervals resample its shards first.
+  std::pair<std::size_t, std::size_t> processes() const;
 };
 
 /// Decides the timings of `comparison`. Throws std::invalid_argument on bad settings (see decide_timings).

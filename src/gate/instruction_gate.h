@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "gate/result_view.h"
+#include "result/result_view.h"
 
 namespace tcsb {
 

@@ -1,6 +1,7 @@
 #include "gate/result_comparison.h"
 
 #include <charconv>
+#include <utility>
 
 #include "gate/one_to_one_match.h"
 
@@ -122,6 +123,11 @@ void check_same_placement(const ResultView& base, std::size_t i, const ResultVie
   if (a.configuration != b.configuration) refuse("configuration.label", brief(a.configuration), brief(b.configuration));
 }
 
+/// A metric's samples in both runs, each with the process that measured it (a merged result's shard).
+TimingSamples timing_samples(MeasuredValues base, MeasuredValues next) {
+  return {std::move(base.values), std::move(next.values), std::move(base.process), std::move(next.process)};
+}
+
 }  // namespace
 
 std::vector<std::string> machine_differences(const ResultView& base, const ResultView& next) {
@@ -224,14 +230,15 @@ ResultComparison compare_results(const ResultView& base, const ResultView& next)
     }
     compare_repetitions(a, b, out.deterministic, changes, out.repetitions);
 
-    out.step_ms.push_back({a.label, kStepMsMetric, {ok_step_times(a), ok_step_times(b)}});
+    out.step_ms.push_back({a.label, kStepMsMetric, timing_samples(ok_step_time_values(a), ok_step_time_values(b))});
     if (a.instructions && b.instructions) out.instructions.push_back({a.label, *a.instructions, *b.instructions});
     if (a.method != "tcsb") continue;
     const auto plain_a = plain_case_of(base, i);
     const auto plain_b = plain_case_of(next, j);
     if (!plain_a || !plain_b) continue;
     out.ratios.push_back(
-        {a.label, kRatioMetric, {paired_step_ratios(base, i, *plain_a), paired_step_ratios(next, j, *plain_b)}});
+        {a.label, kRatioMetric,
+         timing_samples(paired_step_ratio_values(base, i, *plain_a), paired_step_ratio_values(next, j, *plain_b))});
   }
   return out;
 }

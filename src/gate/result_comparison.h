@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "analysis/regression_gate.h"
-#include "gate/result_view.h"
+#include "result/result_view.h"
 
 namespace tcsb {
 

@@ -4,7 +4,7 @@
 // schema and read_result() check each field alone; this checks the fields against each other and the suite block.
 #pragma once
 
-#include "gate/result_view.h"
+#include "result/result_view.h"
 
 namespace tcsb {
 

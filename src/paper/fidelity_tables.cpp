@@ -280,4 +280,15 @@ std::vector<Claim> fidelity_targets(const std::vector<FidelityRow>& rows) {
   return targets;
 }
 
+FidelityTables fidelity_tables(const FidelityResult& result) {
+  FidelityTables t;
+  t.rows = fidelity_rows(result);
+  t.sweep = pareto_sweep(t.rows);
+  t.max_compression = max_compression(t.sweep, result.rms_threshold_pct);
+  t.calibrated_sweep = pareto_sweep(t.rows, "tcsb_calibrated");
+  t.calibrated_max_compression = max_compression(t.calibrated_sweep, result.rms_threshold_pct);
+  t.targets = fidelity_targets(t.rows);
+  return t;
+}
+
 }  // namespace tcsb

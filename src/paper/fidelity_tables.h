@@ -76,4 +76,18 @@ MaxCompression max_compression(const std::vector<ParetoPoint>& sweep, double thr
 /// most 0.7 x the calibrated uniform grid's. A target with no measurement fails.
 std::vector<Claim> fidelity_targets(const std::vector<FidelityRow>& rows);
 
+/// A fidelity pass as every report shows it, computed once: the rows, TC-SB's sweep and maximal compression (and
+/// calibrated TC-SB's, with a calibration), and the targets.
+struct FidelityTables {
+  std::vector<FidelityRow> rows;
+  std::vector<ParetoPoint> sweep;             ///< TC-SB's
+  MaxCompression max_compression;             ///< over `sweep`, at the pass's threshold
+  std::vector<ParetoPoint> calibrated_sweep;  ///< calibrated TC-SB's; empty without a calibration
+  MaxCompression calibrated_max_compression;  ///< over `calibrated_sweep` (meaningful only when it is not empty)
+  std::vector<Claim> targets;
+};
+
+/// The fidelity tables of a pass, its maximal compressions at the pass's rms_threshold_pct.
+FidelityTables fidelity_tables(const FidelityResult& result);
+
 }  // namespace tcsb

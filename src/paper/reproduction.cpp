@@ -23,12 +23,9 @@ TrackedClaim untracked(Claim c) {
 
 ReproductionTables reproduction_tables(const RunResult& result) {
   ReproductionTables t;
-  t.table1 = table1(result);
-  t.table2 = table2(result);
+  t.run = run_tables(result);
   t.plain_fit = step_fit_of_method(result, Method::kPlain);
   t.tcsb_fit = step_fit_of_method(result, Method::kTcsb);
-  t.has_fidelity = result.fidelity.has_value();
-  if (result.fidelity) t.fidelity = fidelity_rows(*result.fidelity);
   return t;
 }
 
@@ -84,8 +81,8 @@ Reproduction check_reproduction(RunResult& result, PaperReference paper, const R
   r.wall_s = result.wall_s + r.bootstrap_s;  // result.wall_s includes the extra repetitions
   r.targets.push_back(untracked(wall_time_target(r.wall_s)));
   r.tables = reproduction_tables(result);
-  if (r.tables.has_fidelity) {  // reported beside the speed targets; like them, they do not gate the exit code
-    for (Claim& c : fidelity_targets(r.tables.fidelity)) r.targets.push_back(untracked(std::move(c)));
+  if (r.tables.run.fidelity) {  // reported beside the speed targets; like them, they do not gate the exit code
+    for (const Claim& c : r.tables.run.fidelity->targets) r.targets.push_back(untracked(c));
   }
   return r;
 }

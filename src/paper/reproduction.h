@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "analysis/claim.h"
-#include "paper/fidelity_tables.h"
 #include "paper/paper_reference.h"
 #include "paper/paper_tables.h"
+#include "paper/run_tables.h"
 #include "paper/sequential_claims.h"
 #include "run/run_result.h"
 
@@ -30,12 +30,9 @@ struct ReproductionOptions {
 
 /// The paper's tables of one state of a run, computed once, for the renderers.
 struct ReproductionTables {
-  std::vector<Table1Row> table1;
-  std::vector<Table2Row> table2;
+  RunTables run;      ///< the run's tables, which its native JSON renders too
   StepFit plain_fit;  ///< Figure 5's line of plain Bullet (reported, not claimed)
   StepFit tcsb_fit;   ///< Figure 5's line of TC-SB (all budgets)
-  bool has_fidelity = false;
-  std::vector<FidelityRow> fidelity;  ///< the fidelity pass's rows; empty without one
 };
 
 /// The tables of `result` as it stands.

@@ -64,6 +64,8 @@ void timing_rows(std::ostream& out, const std::vector<TimingSeries>& series,
     std::string change = d.change ? formatted("%+.1f", 100.0 * *d.change) : "–";
     if (d.interval)
       change += formatted(" [%+.1f, ", 100.0 * d.interval->low) + formatted("%+.1f]", 100.0 * d.interval->high);
+    if (d.interval && (d.base_processes > 1 || d.next_processes > 1))  // a merged result: its shards drawn first
+      change += " (" + std::to_string(d.base_processes) + "/" + std::to_string(d.next_processes) + " processes)";
     out << "| " << cell(series[i].case_label) << " | " << series[i].metric << " | " << or_dash(d.base_median, "%.4g")
         << " | " << or_dash(d.next_median, "%.4g") << " | " << change << " | " << or_dash(d.p_value, "%.2g") << " | "
         << verdict_cell(d, gated, min_samples) << " |\n";

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "gate/gate_outcome.h"
-#include "gate/result_view.h"
+#include "result/result_view.h"
 
 namespace tcsb {
 

@@ -7,7 +7,6 @@
 #include "paper/paper_tables.h"
 #include "report/fidelity_console.h"
 #include "report/text_table.h"
-#include "run/configuration_result.h"
 
 namespace tcsb {
 namespace {
@@ -29,9 +28,10 @@ Penetrations worst_penetrations(const CaseResult& c) {
   return worst;
 }
 
-void print_cases(const RunResult& r, std::ostream& out) {
-  bool any_equal = false;
-  for (std::size_t i = 0; i < r.cases.size() && !any_equal; ++i) any_equal = equal_plain_case_for(r, i).has_value();
+void print_cases(const RunResult& r, const RunTables& tables, const std::vector<std::size_t>& cases,
+                 std::ostream& out) {
+  const bool any_equal = std::any_of(cases.begin(), cases.end(),
+                                     [&tables](std::size_t i) { return tables.case_ratios[i].has_equal_plain; });
   const bool scene = r.suite.scene.has_colliders();
   std::vector<TextTable::Column> columns = {
       {"case", Align::kLeft}, {"status", Align::kLeft}, {"N"}, {"L"}, {"I"}, {"median ms"}, {"CV %"}, {"vs plain"}};
@@ -42,11 +42,9 @@ void print_cases(const RunResult& r, std::ostream& out) {
   }
   columns.push_back({"reps", Align::kRight});
   TextTable t(columns);
-  for (std::size_t i = 0; i < r.cases.size(); ++i) {
+  for (const std::size_t i : cases) {
     const CaseResult& c = r.cases[i];
-    std::optional<double> ratio, equal_ratio;
-    if (const auto plain = plain_case_for(r, i)) ratio = paired_ratio(r, i, *plain);
-    if (const auto equal = equal_plain_case_for(r, i)) equal_ratio = paired_ratio(r, i, *equal);
+    const CaseRatios& ratios = tables.case_ratios[i];
     const bool ok = c.status == "ok";
     std::string status = c.status;
     if (c.step_ms.unstable) status += " (unstable)";
@@ -57,8 +55,8 @@ void print_cases(const RunResult& r, std::ostream& out) {
                                     fixed(ok ? std::optional(c.mean_interpolations) : std::nullopt, 1),
                                     general(measured(c.step_ms, c.step_ms.median), 4),
                                     fixed(measured(c.step_ms, 100.0 * c.step_ms.cv), 1),
-                                    fixed(ratio, 3)};
-    if (any_equal) row.push_back(fixed(equal_ratio, 3));
+                                    fixed(ratios.vs_plain, 3)};
+    if (any_equal) row.push_back(fixed(ratios.vs_equal_plain, 3));
     if (scene) {
       const Penetrations worst = worst_penetrations(c);
       row.push_back(std::to_string(worst.node_steps));
@@ -76,7 +74,7 @@ void print_cases(const RunResult& r, std::ostream& out) {
   t.print(out);
 }
 
-void print_table1(const RunResult& r, std::ostream& out) {
+void print_table1(const std::vector<Table1Row>& rows, std::ostream& out) {
   TextTable t({{"operation", Align::kLeft},
                {"N"},
                {"L"},
@@ -88,7 +86,6 @@ void print_table1(const RunResult& r, std::ostream& out) {
                {"p50 us"},
                {"p99 us"},
                {"count"}});
-  const std::vector<Table1Row> rows = table1(r);
   const bool none = std::all_of(rows.begin(), rows.end(), [](const Table1Row& row) { return row.count == 0; });
   for (const Table1Row& row : none ? std::vector<Table1Row>{} : rows) {
     const bool any = row.count > 0;
@@ -105,8 +102,7 @@ void print_table1(const RunResult& r, std::ostream& out) {
     t.print(out);
 }
 
-void print_table2(const RunResult& r, std::ostream& out) {
-  const std::vector<Table2Row> rows = table2(r);
+void print_table2(const std::vector<Table2Row>& rows, std::ostream& out) {
   const bool equal_plain = std::any_of(rows.begin(), rows.end(),
                                        [](const Table2Row& row) { return row.time_ratio_vs_equal_plain.has_value(); });
   std::vector<TextTable::Column> columns{{"method", Align::kLeft},
@@ -141,14 +137,14 @@ void print_table2(const RunResult& r, std::ostream& out) {
   t.print(out);
 }
 
-void print_fits(const RunResult& r, std::ostream& out) {
+void print_fits(const TableSet& set, std::ostream& out) {
   TextTable steps({{"method", Align::kLeft},
                    {"compression", Align::kLeft},
                    {"slope ms/node"},
                    {"intercept ms"},
                    {"R2"},
                    {"points"}});
-  for (const StepFit& f : step_ms_vs_nodes(r)) {
+  for (const StepFit& f : set.step_fits) {
     steps.add_row({f.method, compression_label(f.compression), general(f.slope_ms_per_node, 4),
                    fixed(f.intercept_ms, 4), fixed(f.r2, 4), std::to_string(f.points.size())});
   }
@@ -159,7 +155,7 @@ void print_fits(const RunResult& r, std::ostream& out) {
     steps.print(out);
 
   TextTable ops({{"operation", Align::kLeft}, {"slope ms/node"}, {"intercept ms"}, {"R2"}, {"flatness"}, {"points"}});
-  for (const OpFit& f : op_ms_vs_nodes(r)) {
+  for (const OpFit& f : set.op_fits) {
     ops.add_row({f.operation, general(f.slope_ms_per_node, 4), general(f.intercept_ms, 4), fixed(f.r2, 4),
                  fixed(f.flatness, 3), std::to_string(f.points.size())});
   }
@@ -168,38 +164,38 @@ void print_fits(const RunResult& r, std::ostream& out) {
 }
 
 /// The cases, Table 1, Table 2 and the fits of one run (or one configuration's share of it).
-void print_tables(const RunResult& r, std::ostream& out) {
-  print_cases(r, out);
+void print_tables(const RunResult& r, const RunTables& tables, const TableSet& set, std::ostream& out) {
+  print_cases(r, tables, set.cases, out);
   out << '\n';
-  print_table1(r, out);
+  print_table1(set.table1, out);
   out << '\n';
-  print_table2(r, out);
+  print_table2(set.table2, out);
   out << '\n';
-  print_fits(r, out);
+  print_fits(set, out);
 }
 
 }  // namespace
 
-void print_console_report(const RunResult& result, std::ostream& out) {
+void print_console_report(const RunResult& result, const RunTables& tables, std::ostream& out) {
   out << "Suite " << terminal_safe(result.suite.name) << " (" << terminal_safe(result.suite.path.string()) << "), "
       << result.cases.size() << " cases, ";
   if (!result.suite.configurations.empty()) out << result.suite.configurations.size() << " configurations, ";
   out << result.suite.repetitions << " repetitions x " << result.suite.steps << " steps, wall "
       << fixed(result.wall_s, 2) << " s\n\n";
   if (result.suite.configurations.empty()) {
-    print_tables(result, out);
+    print_tables(result, tables, tables.whole, out);
   } else {
     // Grouped by configuration: each one's cases, tables and fits, as if it had run alone.
     const std::size_t count = result.suite.configurations.size();
     for (std::size_t c = 0; c < count; ++c) {
       out << (c == 0 ? "" : "\n") << "== Configuration " << c + 1 << " of " << count << ": "
           << terminal_safe(result.suite.configurations[c].label) << " ==\n\n";
-      print_tables(configuration_result(result, c), out);
+      print_tables(result, tables, tables.configurations[c], out);
     }
   }
   if (result.fidelity) {
     out << '\n';
-    print_fidelity_report(result, out);
+    print_fidelity_report(result, tables, out);
   }
 }
 

@@ -2,7 +2,6 @@
 
 #include <ostream>
 
-#include "paper/fidelity_tables.h"
 #include "paper/paper_tables.h"
 #include "report/claims_console.h"
 #include "report/text_table.h"
@@ -136,10 +135,10 @@ void print_sweep(const char* title, const std::vector<ParetoPoint>& sweep, const
 
 }  // namespace
 
-void print_fidelity_report(const RunResult& result, std::ostream& out) {
-  if (!result.fidelity) return;
-  const std::vector<FidelityRow> rows = fidelity_rows(*result.fidelity);
-  print_rows(rows, out);
+void print_fidelity_report(const RunResult& result, const RunTables& tables, std::ostream& out) {
+  if (!result.fidelity || !tables.fidelity) return;
+  const FidelityTables& computed = *tables.fidelity;
+  print_rows(computed.rows, out);
   out << '\n';
   if (!result.fidelity->floors.empty()) {
     print_floors(result.fidelity->floors, result.suite.compression, out);
@@ -149,15 +148,13 @@ void print_fidelity_report(const RunResult& result, std::ostream& out) {
     print_screen(*result.fidelity, out);
     out << '\n';
   }
-  const double threshold = result.fidelity->rms_threshold_pct;
-  const std::vector<ParetoPoint> sweep = pareto_sweep(rows);
-  print_sweep("TC-SB", sweep, max_compression(sweep, threshold), out);
+  print_sweep("TC-SB", computed.sweep, computed.max_compression, out);
   out << '\n';
-  if (const std::vector<ParetoPoint> calibrated = pareto_sweep(rows, "tcsb_calibrated"); !calibrated.empty()) {
-    print_sweep("Calibrated TC-SB", calibrated, max_compression(calibrated, threshold), out);
+  if (!computed.calibrated_sweep.empty()) {
+    print_sweep("Calibrated TC-SB", computed.calibrated_sweep, computed.calibrated_max_compression, out);
     out << '\n';
   }
-  print_claims("Fidelity targets (reported, not gating):", fidelity_targets(rows), out);
+  print_claims("Fidelity targets (reported, not gating):", computed.targets, out);
   out << "Fidelity pass: " << fixed(result.fidelity->wall_s, 1) << " s\n";
 }
 

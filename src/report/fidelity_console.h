@@ -4,11 +4,12 @@
 
 #include <iosfwd>
 
+#include "paper/run_tables.h"
 #include "run/run_result.h"
 
 namespace tcsb {
 
-/// Prints the fidelity tables when the run has a fidelity pass; prints nothing otherwise.
-void print_fidelity_report(const RunResult& result, std::ostream& out);
+/// Prints the fidelity tables (computed in `tables`) when the run has a fidelity pass; prints nothing otherwise.
+void print_fidelity_report(const RunResult& result, const RunTables& tables, std::ostream& out);
 
 }  // namespace tcsb

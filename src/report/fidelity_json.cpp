@@ -98,7 +98,7 @@ ojson floors_json(const FidelityFloors& f) {
 
 /// A method's time-versus-error sweep (`points`, from pareto_sweep) as JSON (`sweep`) and its maximal compression
 /// (`best`); `label` names the method in the definition.
-void add_sweep(const std::vector<ParetoPoint>& points, const std::string& label, double threshold_pct, ojson& sweep,
+void add_sweep(const std::vector<ParetoPoint>& points, const MaxCompression& m, const std::string& label, ojson& sweep,
                ojson& best) {
   sweep = ojson::array();
   for (const ParetoPoint& p : points) {
@@ -109,7 +109,6 @@ void add_sweep(const std::vector<ParetoPoint>& points, const std::string& label,
                      {"worst_net_rms_pct", json_number(p.worst_net_rms_pct)},
                      {"on_front", p.on_front}});
   }
-  const MaxCompression m = max_compression(points, threshold_pct);
   best = {{"threshold_pct", json_number(m.threshold_pct)},
           {"compression", json_number(m.compression)},
           {"worst_net_rms_pct", json_number(m.rms_pct)},
@@ -125,17 +124,18 @@ void add_sweep(const std::vector<ParetoPoint>& points, const std::string& label,
 
 }  // namespace
 
-void add_fidelity_json(const RunResult& result, nlohmann::ordered_json& doc) {
-  if (!result.fidelity) return;
+void add_fidelity_json(const RunResult& result, const RunTables& tables, nlohmann::ordered_json& doc) {
+  if (!result.fidelity || !tables.fidelity) return;
   const FidelityResult& f = *result.fidelity;
   const FidelitySettings& settings = result.suite.fidelity;
-  const std::vector<FidelityRow> rows = fidelity_rows(f);
-  ojson row_list = ojson::array(), cases = ojson::array(), targets = ojson::array(), targets_list = ojson::array();
+  const FidelityTables& computed = *tables.fidelity;
+  const std::vector<FidelityRow>& rows = computed.rows;
+  ojson row_list = ojson::array(), cases = ojson::array(), targets = ojson::array();
   for (const FidelityRow& r : rows) row_list.push_back(row_json(r));
   for (const FidelityCase& c : f.cases) cases.push_back(case_json(c));
   ojson floors = ojson::array();
   for (const FidelityFloors& n : f.floors) floors.push_back(floors_json(n));
-  for (const Claim& c : fidelity_targets(rows)) targets.push_back(claim_json(c));
+  for (const Claim& c : computed.targets) targets.push_back(claim_json(c));
   ojson pareto_targets = ojson::array();
   for (const double t : settings.pareto_targets) pareto_targets.push_back(json_number(t));
   doc["fidelity"] = {
@@ -161,10 +161,10 @@ void add_fidelity_json(const RunResult& result, nlohmann::ordered_json& doc) {
       {"wall_s", json_number(f.wall_s)},
   };
   // The sweep of TC-SB, and with a calibration that of calibrated TC-SB (written only then: older results lack it).
-  add_sweep(pareto_sweep(rows), "TC-SB", settings.rms_threshold_pct, doc["pareto"], doc["max_compression"]);
-  if (const std::vector<ParetoPoint> calibrated = pareto_sweep(rows, "tcsb_calibrated"); !calibrated.empty())
-    add_sweep(calibrated, "calibrated TC-SB", settings.rms_threshold_pct, doc["pareto_calibrated"],
-              doc["max_compression_calibrated"]);
+  add_sweep(computed.sweep, computed.max_compression, "TC-SB", doc["pareto"], doc["max_compression"]);
+  if (!computed.calibrated_sweep.empty())
+    add_sweep(computed.calibrated_sweep, computed.calibrated_max_compression, "calibrated TC-SB",
+              doc["pareto_calibrated"], doc["max_compression_calibrated"]);
 }
 
 }  // namespace tcsb

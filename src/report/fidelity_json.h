@@ -4,11 +4,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "paper/run_tables.h"
 #include "run/run_result.h"
 
 namespace tcsb {
 
-/// Adds the three top-level keys to `doc` when the run has a fidelity pass; leaves `doc` alone otherwise.
-void add_fidelity_json(const RunResult& result, nlohmann::ordered_json& doc);
+/// Adds the three top-level keys to `doc` when the run has a fidelity pass (its tables computed in `tables`); leaves
+/// `doc` alone otherwise.
+void add_fidelity_json(const RunResult& result, const RunTables& tables, nlohmann::ordered_json& doc);
 
 }  // namespace tcsb

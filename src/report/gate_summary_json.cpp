@@ -17,6 +17,9 @@ nlohmann::ordered_json gate_summary_json(const GateOutcome& o, int exit_code, co
   j["alpha"] = o.counts ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(o.settings.alpha);
   j["base"] = base_file;
   j["new"] = next_file;
+  // A merged result's intervals resample its processes (shards) first: how many each side's widest interval pooled.
+  const auto [base_processes, next_processes] = o.processes();
+  j["processes"] = {{"base", base_processes}, {"new", next_processes}};
   return j;
 }
 

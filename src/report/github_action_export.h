@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gate/result_view.h"
 #include "report/report_format.h"
+#include "result/result_view.h"
 
 namespace tcsb {
 

@@ -5,7 +5,6 @@
 #include "paper/paper_tables.h"
 #include "report/fidelity_json.h"
 #include "report/op_work_json.h"
-#include "run/configuration_result.h"
 #include "suite/suite_axes.h"
 
 namespace tcsb {
@@ -162,10 +161,8 @@ ojson configuration_json(const RunResult& result, const CaseResult& c) {
           {"axes", configuration_values(result.suite, c.key.configuration)}};
 }
 
-ojson case_json(const RunResult& result, std::size_t index) {
+ojson case_json(const RunResult& result, const CaseRatios& ratios, std::size_t index) {
   const CaseResult& c = result.cases[index];
-  std::optional<double> ratio;
-  if (const auto plain = plain_case_for(result, index)) ratio = paired_ratio(result, index, *plain);
   ojson reps = ojson::array();
   for (const RepetitionResult& r : c.repetitions) reps.push_back(repetition_json(r));
   ojson out = {
@@ -183,12 +180,11 @@ ojson case_json(const RunResult& result, std::size_t index) {
       {"mean_feedback_ms", json_number(c.mean_feedback_ms)},
       {"mean_feedback_total_ms", json_number(c.mean_feedback_total_ms)},
       {"step_ms", summary_json(c.step_ms)},
-      {"ratio_vs_plain", json_number(ratio)},
+      {"ratio_vs_plain", json_number(ratios.vs_plain)},
   };
   // TC-SB against the static plain grid of its budget, paired as ratio_vs_plain is: the per-net tax of adaptivity
   // (Table 2's time_ratio_vs_equal_plain averages the nets). Only where the run has that grid.
-  if (const auto equal = equal_plain_case_for(result, index))
-    out["ratio_vs_equal_plain"] = json_number(paired_ratio(result, index, *equal));
+  if (ratios.has_equal_plain) out["ratio_vs_equal_plain"] = json_number(ratios.vs_equal_plain);
   out["step_breakdown_ms"] = {{"bullet", json_number(c.breakdown.bullet_ms)},
                               {"feedback", json_number(c.breakdown.feedback_ms)},
                               {"operations", json_number(c.breakdown.operations_ms)},
@@ -207,9 +203,9 @@ ojson case_json(const RunResult& result, std::size_t index) {
   return out;
 }
 
-ojson table1_json(const RunResult& result) {
+ojson table1_json(const std::vector<Table1Row>& table) {
   ojson rows = ojson::array();
-  for (const Table1Row& r : table1(result)) {
+  for (const Table1Row& r : table) {
     rows.push_back({{"operation", r.operation},
                     {"N", json_number(r.N)},
                     {"L", json_number(r.L)},
@@ -225,9 +221,9 @@ ojson table1_json(const RunResult& result) {
   return rows;
 }
 
-ojson table2_json(const RunResult& result) {
+ojson table2_json(const std::vector<Table2Row>& table) {
   ojson rows = ojson::array();
-  for (const Table2Row& r : table2(result)) {
+  for (const Table2Row& r : table) {
     rows.push_back({{"method", r.method},
                     {"compression", json_number(r.compression)},
                     {"compression_label", r.compression_label},
@@ -252,9 +248,9 @@ ojson points_json(const std::vector<ScalingPoint>& points) {
   return out;
 }
 
-ojson scaling_json(const RunResult& result) {
+ojson scaling_json(const TableSet& set) {
   ojson steps = ojson::array();
-  for (const StepFit& f : step_ms_vs_nodes(result)) {
+  for (const StepFit& f : set.step_fits) {
     steps.push_back({{"method", f.method},
                      {"compression", json_number(f.compression)},
                      {"valid", f.valid},
@@ -264,7 +260,7 @@ ojson scaling_json(const RunResult& result) {
                      {"points", points_json(f.points)}});
   }
   ojson ops = ojson::array();
-  for (const OpFit& f : op_ms_vs_nodes(result)) {
+  for (const OpFit& f : set.op_fits) {
     ops.push_back({{"operation", f.operation},
                    {"valid", f.valid},
                    {"slope_ms_per_node", json_number(f.slope_ms_per_node)},
@@ -277,27 +273,27 @@ ojson scaling_json(const RunResult& result) {
 }
 
 /// One entry per configuration: its label, axis values, case count and its own Table 1, Table 2 and fits.
-ojson configurations_json(const RunResult& result) {
+ojson configurations_json(const RunResult& result, const RunTables& tables) {
   ojson out = ojson::array();
   for (std::size_t c = 0; c < result.suite.configurations.size(); ++c) {
-    const RunResult view = configuration_result(result, c);
+    const TableSet& set = tables.configurations[c];
     out.push_back({{"label", result.suite.configurations[c].label},
                    {"axes", configuration_values(result.suite, c)},
-                   {"cases", view.cases.size()},
-                   {"table1", table1_json(view)},
-                   {"table2", table2_json(view)},
-                   {"scaling", scaling_json(view)}});
+                   {"cases", set.cases.size()},
+                   {"table1", table1_json(set.table1)},
+                   {"table2", table2_json(set.table2)},
+                   {"scaling", scaling_json(set)}});
   }
   return out;
 }
 
 }  // namespace
 
-ojson native_json(const RunResult& result) {
+ojson native_json(const RunResult& result, const RunTables& tables) {
   ojson cases = ojson::array();
   bool diverged = false;
   for (std::size_t i = 0; i < result.cases.size(); ++i) {
-    cases.push_back(case_json(result, i));
+    cases.push_back(case_json(result, tables.case_ratios[i], i));
     diverged = diverged || result.cases[i].status != "ok";
   }
   ojson doc;
@@ -308,18 +304,19 @@ ojson native_json(const RunResult& result) {
   doc["suite"] = suite_json(result.suite);
   doc["cases"] = std::move(cases);
   if (result.suite.configurations.empty()) {
-    doc["table1"] = table1_json(result);
-    doc["table2"] = table2_json(result);
-    doc["scaling"] = scaling_json(result);
+    doc["table1"] = table1_json(tables.whole.table1);
+    doc["table2"] = table2_json(tables.whole.table2);
+    doc["scaling"] = scaling_json(tables.whole);
   } else {
     // With axes the tables and fits are per configuration (a mean over configurations would mix settings): they
     // are in `configurations`, and the run-wide ones stay empty rather than mislead.
     doc["table1"] = ojson::array();
     doc["table2"] = ojson::array();
     doc["scaling"] = {{"step_ms_vs_nodes", ojson::array()}, {"op_ms_vs_nodes", ojson::array()}};
-    doc["configurations"] = configurations_json(result);
+    doc["configurations"] = configurations_json(result, tables);
   }
-  add_fidelity_json(result, doc);  // fidelity, pareto, max_compression (and calibrated): only with a fidelity pass
+  add_fidelity_json(result, tables,
+                    doc);  // fidelity, pareto, max_compression (and calibrated): only with a fidelity pass
   doc["status"] = diverged ? "diverged" : "ok";
   doc["wall_s"] = json_number(result.wall_s);
   return doc;

@@ -8,15 +8,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "paper/run_tables.h"
 #include "report/json_number.h"
+#include "result/result_schema.h"
 #include "run/run_result.h"
 
 namespace tcsb {
-
-/// Version of the native JSON layout. Bumped whenever the layout changes (a key added, removed, renamed or changing
-/// meaning), together with results/schema/tcsb-result.schema.json, which pins it in its schema_version enum; tests
-/// validate real runs against that schema. 2: first version with a schema.
-inline constexpr int kNativeJsonSchemaVersion = 2;
 
 /// A JSON document as output text: indented by `indent` (-1: all on one line), newline-terminated; invalid UTF-8 in
 /// recorded strings (a host name, say) is replaced, not thrown on.
@@ -35,6 +32,7 @@ nlohmann::ordered_json suite_json(const Suite& suite);
 /// max_compression_calibrated when it has calibrated TC-SB], status, wall_s — in that
 /// order); with axes every case has its `configuration` {label, axes} and the suite block its `axes`;
 /// a shard's run is written by shard_json (report/shard_section.h), which adds what `tcsb merge` needs.
-nlohmann::ordered_json native_json(const RunResult& result);
+/// `tables` are run_tables(result): the document renders them and computes nothing.
+nlohmann::ordered_json native_json(const RunResult& result, const RunTables& tables);
 
 }  // namespace tcsb

@@ -4,6 +4,8 @@
 
 namespace tcsb {
 
-std::string ReportFormat::render(const RunResult& result) const { return render_native(native_json(result)); }
+std::string ReportFormat::render(const RunResult& result, const RunTables& tables) const {
+  return render_native(native_json(result, tables));
+}
 
 }  // namespace tcsb

@@ -84,9 +84,9 @@ nlohmann::ordered_json fit_json(const StepFit& f) {
 }
 
 /// The fidelity row of TC-SB at a Table 2 row's target, when the run has a fidelity pass.
-const FidelityRow* fidelity_row(const std::vector<FidelityRow>& rows, const Table2Row& row) {
-  if (row.method != "tcsb" || !row.compression) return nullptr;
-  for (const FidelityRow& f : rows)
+const FidelityRow* fidelity_row(const RunTables& tables, const Table2Row& row) {
+  if (!tables.fidelity || row.method != "tcsb" || !row.compression) return nullptr;
+  for (const FidelityRow& f : tables.fidelity->rows)
     if (f.method == "tcsb" && same_compression(f.compression, *row.compression) && f.nets > 0) return &f;
   return nullptr;
 }
@@ -125,7 +125,7 @@ void print_looks(const Reproduction& reproduction, std::ostream& out) {
 nlohmann::ordered_json reproduction_json(const Reproduction& reproduction) {
   const ReproductionTables& tables = reproduction.tables;
   nlohmann::ordered_json t2 = nlohmann::ordered_json::array();
-  for (const Table2Row& row : tables.table2) {
+  for (const Table2Row& row : tables.run.whole.table2) {
     const PaperTable2Row* p = paper_row(reproduction.paper, row);
     nlohmann::ordered_json paper = nullptr;
     if (p)
@@ -149,7 +149,7 @@ nlohmann::ordered_json reproduction_json(const Reproduction& reproduction) {
       t2.back()["ours"]["time_ratio_vs_equal_plain"] = json_number(row.time_ratio_vs_equal_plain);
     // What the speed costs, from the fidelity pass (the `fidelity` section has every statistic).
     nlohmann::ordered_json error = nullptr;
-    if (const FidelityRow* f = fidelity_row(tables.fidelity, row))
+    if (const FidelityRow* f = fidelity_row(tables.run, row))
       error = {{"rms_pct", json_number(f->rms_pct.mean)},
                {"max_pct", json_number(f->max_pct.max)},
                {"weighted_rms_pct", json_number(f->weighted_rms_pct.mean)},
@@ -158,7 +158,7 @@ nlohmann::ordered_json reproduction_json(const Reproduction& reproduction) {
     t2.back()["ours"]["fidelity"] = error;
   }
   nlohmann::ordered_json t1 = nlohmann::ordered_json::array();
-  for (const Table1Row& row : tables.table1) {
+  for (const Table1Row& row : tables.run.whole.table1) {
     const PaperTable1Row* p = paper_row(reproduction.paper, row.operation);
     nlohmann::ordered_json paper = nullptr;
     if (p)
@@ -225,12 +225,12 @@ void print_reproduction(const Reproduction& reproduction, bool with_targets, std
                                          {"ours ms"},
                                          {"paper ratio"},
                                          {"ours ratio"}};
-  const std::vector<Table2Row>& rows = tables.table2;
+  const std::vector<Table2Row>& rows = tables.run.whole.table2;
   const bool equal_plain =
       std::any_of(rows.begin(), rows.end(), [](const Table2Row& r) { return r.time_ratio_vs_equal_plain.has_value(); });
   // Beyond the paper: TC-SB against a static body of the nodes it simulates.
   if (equal_plain) columns.push_back({"ours/equal"});
-  if (tables.has_fidelity) {  // the paper reports no error; ours, beside the speed it buys
+  if (tables.run.fidelity) {  // the paper reports no error; ours, beside the speed it buys
     columns.push_back({"RMS %"});
     columns.push_back({"max %"});
     columns.push_back({"pop max %"});
@@ -254,7 +254,7 @@ void print_reproduction(const Reproduction& reproduction, bool with_targets, std
                                    fixed(paper_ratio, 3),
                                    fixed(row.time_ratio_vs_plain, 3)};
     if (equal_plain) cells.push_back(fixed(row.time_ratio_vs_equal_plain, 3));
-    if (const FidelityRow* f = fidelity_row(tables.fidelity, row)) {
+    if (const FidelityRow* f = fidelity_row(tables.run, row)) {
       cells.push_back(fixed(f->rms_pct.mean, 3));
       cells.push_back(fixed(f->max_pct.max, 3));
       cells.push_back(fixed(f->popping_pct.max, 3));
@@ -264,7 +264,7 @@ void print_reproduction(const Reproduction& reproduction, bool with_targets, std
   out << "Table 2 beside the paper's (paper: " << reproduction.paper.hardware << "; ratios are to plain Bullet";
   if (equal_plain)
     out << "; ours/equal: TC-SB's time over plain_equal's, a static plain grid of the budget's node count, same run";
-  if (tables.has_fidelity)
+  if (tables.run.fidelity)
     out << "; RMS: error against full-resolution plain Bullet in % of the net's extent, mean over steps and nets; "
            "max and pop: max over steps and nets";
   out << "):\n";
@@ -280,7 +280,7 @@ void print_reproduction(const Reproduction& reproduction, bool with_targets, std
                 {"paper node %"},
                 {"ours node %"},
                 {"count"}});
-  for (const Table1Row& row : tables.table1) {
+  for (const Table1Row& row : tables.run.whole.table1) {
     const PaperTable1Row* p = paper_row(reproduction.paper, row.operation);
     const auto pv = [&](double x) { return p ? std::optional(x) : std::nullopt; };
     const auto ov = [&](double x) { return row.count > 0 ? std::optional(x) : std::nullopt; };

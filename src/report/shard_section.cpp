@@ -40,8 +40,8 @@ ojson merge_data_json(const RunResult& result) {
   return {{"suite_file", result.suite.source}, {"op_samples", std::move(samples)}, {"breakdown_ms", breakdowns}};
 }
 
-ojson shard_json(const RunResult& result) {
-  ojson doc = native_json(result);
+ojson shard_json(const RunResult& result, const RunTables& tables) {
+  ojson doc = native_json(result, tables);
   if (result.shard) {
     doc["context"]["shard"] = {
         {"k", result.shard->k}, {"n", result.shard->n}, {"split", split_name(result.shard->split)}};

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "paper/run_tables.h"
 #include "run/run_result.h"
 
 namespace tcsb {
@@ -25,8 +26,8 @@ inline constexpr const char* kMergeBreakdownParts[] = {"bullet", "feedback", "op
 /// The `merge_data` section of a shard's result.
 nlohmann::ordered_json merge_data_json(const RunResult& result);
 
-/// A shard's result (result.shard set): native_json(result) with context.shard {k, n, split} and, last,
+/// A shard's result (result.shard set): native_json(result, tables) with context.shard {k, n, split} and, last,
 /// merge_data_json(result).
-nlohmann::ordered_json shard_json(const RunResult& result);
+nlohmann::ordered_json shard_json(const RunResult& result, const RunTables& tables);
 
 }  // namespace tcsb

@@ -539,8 +539,8 @@ MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
   return merged;
 }
 
-ojson merged_json(const MergedShards& merged) {
-  ojson doc = native_json(merged.result);
+ojson merged_json(const MergedShards& merged, const RunTables& tables) {
+  ojson doc = native_json(merged.result, tables);
   doc["context"] = merged.context;
   return doc;
 }

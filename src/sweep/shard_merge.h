@@ -12,12 +12,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gate/result_view.h"
+#include "paper/run_tables.h"
+#include "result/result_view.h"
 #include "run/run_result.h"
 
 namespace tcsb {
 
-/// One shard result as read from its file (cli/result_file.h has checked it against the schema).
+/// One shard result as read from its file (result/result_file.h has checked it against the schema).
 struct ShardDocument {
   std::string file;                 ///< the name used in errors
   nlohmann::ordered_json document;  ///< the parsed result
@@ -38,7 +39,7 @@ struct MergedShards {
 /// same-shard ratio stays valid.
 MergedShards merge_shards(const std::vector<ShardDocument>& shards);
 
-/// The merged native JSON document: native_json(merged.result) with merged.context as its context block.
-nlohmann::ordered_json merged_json(const MergedShards& merged);
+/// The merged native JSON document: native_json(merged.result, tables) with merged.context as its context block.
+nlohmann::ordered_json merged_json(const MergedShards& merged, const RunTables& tables);
 
 }  // namespace tcsb

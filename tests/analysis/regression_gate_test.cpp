@@ -186,6 +186,34 @@ TEST(RegressionGate, RejectsBadInput) {
   EXPECT_THROW(decide_one({kBase, with_nan}), std::invalid_argument);
 }
 
+TEST(RegressionGate, AMergedRunsIntervalDrawsItsProcessesFirst) {
+  // The new run merged from 4 shards whose levels differ (a ratio moves between processes more than within one):
+  // its interval must be at least as wide as the one that treats its 12 repetitions as one process's.
+  std::vector<double> next;
+  std::vector<int> process;
+  for (int k = 0; k < 4; ++k) {
+    for (int r = 0; r < 3; ++r) {
+      next.push_back(1.0 + 0.06 * k + 0.001 * r);
+      process.push_back(k + 1);
+    }
+  }
+  const std::vector<double> base = ramp(1.0, 0.001, 12);
+  const TimingDecision one = decide_one({base, next});
+  const TimingDecision merged = decide_one({base, next, {}, process});
+  ASSERT_TRUE(one.interval && merged.interval);
+  EXPECT_EQ(one.next_processes, 1u);
+  EXPECT_EQ(merged.next_processes, 4u);
+  EXPECT_EQ(merged.base_processes, 1u);
+  EXPECT_LE(merged.interval->low, one.interval->low);
+  EXPECT_GE(merged.interval->high, one.interval->high);
+  EXPECT_GT(merged.interval->high - merged.interval->low, one.interval->high - one.interval->low);
+  // One process named explicitly is the plain bootstrap, draw for draw.
+  const TimingDecision named = decide_one({base, next, std::vector<int>(base.size(), 7), std::vector<int>(12, 7)});
+  EXPECT_EQ(named.interval->low, one.interval->low);
+  EXPECT_EQ(named.interval->high, one.interval->high);
+  EXPECT_THROW(decide_one({base, next, {}, {1, 2}}), std::invalid_argument) << "a process list of another length";
+}
+
 TEST(RegressionGate, VerdictNames) {
   EXPECT_STREQ(verdict_name(TimingVerdict::kRegressed), "regressed");
   EXPECT_STREQ(verdict_name(TimingVerdict::kUnreliable), "unreliable");

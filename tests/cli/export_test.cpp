@@ -4,7 +4,7 @@
 #include <string>
 
 #include "cli_fixture.h"
-#include "gate/result_schema.h"
+#include "result/result_schema.h"
 
 namespace {
 

@@ -181,5 +181,22 @@ TEST(FidelityTargets, FailWhenNothingWasMeasured) {
   EXPECT_FALSE(targets[0].measured);
 }
 
+TEST(FidelityTables, HoldEveryPieceAtThePassThreshold) {
+  FidelityResult r;
+  r.rms_threshold_pct = 1.5;
+  r.cases = {make(0, FidelityMethod::kTcsb, 1.0, 0.0, 2.0), make(0, FidelityMethod::kTcsb, 0.5, 1.0, 1.0),
+             make(0, FidelityMethod::kTcsb, 0.3, 2.0, 0.5), make(0, FidelityMethod::kTcsbCalibrated, 0.5, 0.5, 1.0)};
+  const FidelityTables t = fidelity_tables(r);
+  const std::vector<FidelityRow> rows = fidelity_rows(r);
+  ASSERT_EQ(t.rows.size(), rows.size());
+  EXPECT_EQ(t.sweep.size(), pareto_sweep(rows).size());
+  EXPECT_EQ(t.max_compression.threshold_pct, 1.5);
+  EXPECT_EQ(t.max_compression.compression, max_compression(pareto_sweep(rows), 1.5).compression);
+  EXPECT_EQ(t.max_compression.compression, 0.5);  // 0.3 errs 2 % > 1.5 %
+  ASSERT_EQ(t.calibrated_sweep.size(), 1u);
+  EXPECT_EQ(t.calibrated_max_compression.compression, 0.5);
+  EXPECT_EQ(t.targets.size(), fidelity_targets(rows).size());
+}
+
 }  // namespace
 }  // namespace tcsb

@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "render_run.h"
 #include "report/text_table.h"
 #include "synthetic_run.h"
 
@@ -44,7 +45,7 @@ TEST(ConsoleReport, HasEverySection) {
              make_case(r.suite, 1, Method::kTcsb, 0.5, 200, 400, 3, 1.5)};
   diverge(r.cases[3], 5);
   std::ostringstream out;
-  print_console_report(r, out);
+  testing::print_console_report_of(r, out);
   const std::string text = out.str();
   for (const char* part : {"n0/plain", "n1/tcsb@0.5", "diverged", "Table 1", "Table 2", "partial", "50%",
                            "Step time vs nodes", "Operation time vs nodes", "refine", "end-coarse"}) {
@@ -60,12 +61,12 @@ TEST(ConsoleReport, TheVsEqualColumnAppearsOnlyWithPlainEqual) {
   r.cases = {make_case(r.suite, 0, Method::kPlain, std::nullopt, 100, 200, 0, 1.0, {1.0, 1.0}),
              make_case(r.suite, 0, Method::kTcsb, 0.5, 50, 100, 3, 0.5, {0.5, 0.66})};
   std::ostringstream without;
-  print_console_report(r, without);
+  testing::print_console_report_of(r, without);
   EXPECT_EQ(without.str().find("vs equal"), std::string::npos);
   r.suite.methods.push_back(Method::kPlainEqual);
   r.cases.push_back(make_case(r.suite, 0, Method::kPlainEqual, 0.5, 50, 90, 0, 0.5, {0.5, 0.6}));
   std::ostringstream with;
-  print_console_report(r, with);
+  testing::print_console_report_of(r, with);
   const std::string text = with.str();
   ASSERT_NE(text.find("vs equal"), std::string::npos);
   // The TC-SB row: vs plain 0.580 (median of 0.5 and 0.66), vs equal 1.050 (median of 1.0 and 1.1), 2 of 2 reps.

@@ -2,6 +2,7 @@
 // two custom formats. The CLI tests run Google Benchmark's own compare.py on real exports when it is installed.
 #include <gtest/gtest.h>
 
+#include "render_run.h"
 #include "report/format_registry.h"
 #include "report/gbench_export.h"
 #include "report/github_action_export.h"
@@ -39,7 +40,7 @@ RunResult two_net_run() {
   return r;
 }
 
-ResultView view_of(const RunResult& r) { return read_result(native_json(r), "result"); }
+ResultView view_of(const RunResult& r) { return read_result(testing::native_json_of(r), "result"); }
 
 std::vector<ojson> named(const ojson& benchmarks, const std::string& name) {
   std::vector<ojson> out;
@@ -101,7 +102,7 @@ TEST(GbenchExport, NoAggregatesForOneRepetitionAndNothingForDivergedOnes) {
   EXPECT_EQ(named(b, "n1/plain").size(), 1u);
   EXPECT_TRUE(named(b, "n1/plain_mean").empty());
   EXPECT_TRUE(named(b, "n1/tcsb@0.5").empty()) << "its only repetition diverged: no NaN time";
-  const std::string text = GbenchFormat().render(two_net_run());
+  const std::string text = testing::render_of(GbenchFormat(), two_net_run());
   for (const char* bad : {"NaN", "nan", "Infinity", "null"}) EXPECT_EQ(text.find(bad), std::string::npos) << bad;
 }
 
@@ -128,12 +129,12 @@ TEST(GithubActionExport, BiggerIsBetterSpeedups) {
 
 TEST(ExportFormats, AreRegisteredAndRenderFromAResultFileAsFromARun) {
   const RunResult r = two_net_run();
-  const ojson native = native_json(r);
+  const ojson native = testing::native_json_of(r);
   for (const char* name : {"json", "gbench", "github-action-smaller", "github-action-bigger"}) {
     const std::unique_ptr<ReportFormat> format = make_format(name);
     ASSERT_NE(format, nullptr) << name;
     EXPECT_EQ(format->name(), name);
-    const std::string text = format->render(r);
+    const std::string text = testing::render_of(*format, r);
     EXPECT_EQ(text, format->render_native(native)) << name;
     EXPECT_TRUE(ojson::accept(text)) << name;
     EXPECT_EQ(text.back(), '\n');

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "render_run.h"
 #include "report/console_report.h"
 #include "report/fidelity_console.h"
 #include "report/json_report.h"
@@ -66,11 +67,11 @@ bool has_nan_or_inf(const ojson& j) {
 
 TEST(FidelityJson, CalibratedTcsbHasItsOwnSweepOnlyWhenItRan) {
   RunResult r = run_with_fidelity();
-  EXPECT_FALSE(native_json(r).contains("pareto_calibrated"));
-  EXPECT_FALSE(native_json(r).contains("max_compression_calibrated"));
+  EXPECT_FALSE(testing::native_json_of(r).contains("pareto_calibrated"));
+  EXPECT_FALSE(testing::native_json_of(r).contains("max_compression_calibrated"));
   r.fidelity->cases.push_back(fidelity_case(FidelityMethod::kTcsbCalibrated, 0.5, 0.8));
   r.fidelity->cases.push_back(fidelity_case(FidelityMethod::kTcsbCalibrated, 0.3, 1.2));
-  const ojson doc = native_json(r);
+  const ojson doc = testing::native_json_of(r);
   ASSERT_EQ(doc["pareto_calibrated"].size(), 2u);
   EXPECT_EQ(doc["pareto_calibrated"][0]["compression"], 0.3);
   EXPECT_EQ(doc["pareto_calibrated"][1]["rms_pct"], 0.8);
@@ -79,21 +80,21 @@ TEST(FidelityJson, CalibratedTcsbHasItsOwnSweepOnlyWhenItRan) {
   EXPECT_EQ(doc["max_compression"]["compression"], 1.0) << "TC-SB's own sweep is unchanged";
   EXPECT_EQ(doc["pareto"].size(), 2u);
   std::ostringstream console;
-  print_fidelity_report(r, console);
+  testing::print_fidelity_report_of(r, console);
   EXPECT_NE(console.str().find("Calibrated TC-SB time versus error"), std::string::npos) << console.str();
 }
 
 TEST(FidelityJson, AbsentWithoutAFidelityPass) {
   RunResult r = run_with_fidelity();
   r.fidelity.reset();
-  const ojson doc = native_json(r);
+  const ojson doc = testing::native_json_of(r);
   EXPECT_FALSE(doc.contains("fidelity"));
   EXPECT_FALSE(doc.contains("pareto"));
   EXPECT_FALSE(doc.contains("max_compression"));
 }
 
 TEST(FidelityJson, RowsParetoAndMaxCompression) {
-  const ojson doc = native_json(run_with_fidelity());
+  const ojson doc = testing::native_json_of(run_with_fidelity());
   ASSERT_TRUE(doc.contains("fidelity"));
   const ojson& f = doc["fidelity"];
   ASSERT_EQ(f["rows"].size(), 4u);
@@ -122,7 +123,7 @@ TEST(FidelityJson, RowsParetoAndMaxCompression) {
 }
 
 TEST(FidelityJson, FloorsPerNetAndBesideEveryRow) {
-  const ojson doc = native_json(run_with_fidelity());
+  const ojson doc = testing::native_json_of(run_with_fidelity());
   const ojson& f = doc["fidelity"];
   ASSERT_EQ(f["floors"].size(), 1u);
   EXPECT_EQ(f["floors"][0]["net"], "n0");
@@ -135,7 +136,7 @@ TEST(FidelityJson, FloorsPerNetAndBesideEveryRow) {
   EXPECT_EQ(f["rows"][1]["interpolation_floor_pct"], 0.0);   // tcsb@1: the full grid
   RunResult unmeasured = run_with_fidelity();
   unmeasured.fidelity->floors[0].noise_rms_pct = {};  // the perturbed reference diverged
-  const ojson u = native_json(unmeasured);
+  const ojson u = testing::native_json_of(unmeasured);
   EXPECT_TRUE(u["fidelity"]["floors"][0]["noise_floor_pct"].is_null());
   EXPECT_TRUE(u["fidelity"]["rows"][0]["noise_floor_pct"].is_null());
   EXPECT_FALSE(has_nan_or_inf(u));
@@ -145,7 +146,7 @@ TEST(FidelityJson, UnmeasuredMetricsAreNull) {
   RunResult r = run_with_fidelity();
   r.fidelity->cases[0].status = "diverged";
   r.fidelity->cases[0].rms_pct = {};
-  const ojson doc = native_json(r);
+  const ojson doc = testing::native_json_of(r);
   EXPECT_TRUE(doc["fidelity"]["cases"][0]["rms_pct"]["mean"].is_null());
   EXPECT_TRUE(doc["fidelity"]["rows"][0]["rms_pct"]["mean"].is_null());
   EXPECT_EQ(doc["fidelity"]["rows"][0]["status"], "diverged");
@@ -154,7 +155,7 @@ TEST(FidelityJson, UnmeasuredMetricsAreNull) {
 
 TEST(FidelityConsole, PrintsRowsSweepAndTargets) {
   std::ostringstream out;
-  print_console_report(run_with_fidelity(), out);
+  testing::print_console_report_of(run_with_fidelity(), out);
   const std::string text = out.str();
   for (const char* expected :
        {"Fidelity against full-resolution", "uniform_grid", "switch_body", "Pareto sweep", "Maximal compression",
@@ -163,7 +164,7 @@ TEST(FidelityConsole, PrintsRowsSweepAndTargets) {
   std::ostringstream none;
   RunResult r = run_with_fidelity();
   r.fidelity.reset();
-  print_fidelity_report(r, none);
+  testing::print_fidelity_report_of(r, none);
   EXPECT_TRUE(none.str().empty());
 }
 

@@ -7,9 +7,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
+#include "paper/run_tables.h"
+#include "render_run.h"
+#include "report/console_report.h"
 #include "report/format_registry.h"
 #include "report/native_json_format.h"
+#include "run/configuration_result.h"
 #include "synthetic_run.h"
 
 namespace tcsb {
@@ -43,7 +48,7 @@ RunResult small_run() {
 }
 
 TEST(NativeJson, TopLevelKeysInContractOrder) {
-  const ojson doc = native_json(small_run());
+  const ojson doc = testing::native_json_of(small_run());
   EXPECT_EQ(keys(doc), (std::vector<std::string>{"schema_version", "tool", "measure", "context", "suite", "cases",
                                                  "table1", "table2", "scaling", "status", "wall_s"}));
   EXPECT_EQ(doc["measure"], "time") << "what the run measured: `tcsb compare` never mixes time and counts";
@@ -71,7 +76,7 @@ RunResult run_with_axes() {
 }
 
 TEST(NativeJson, WithAxesTablesArePerConfigurationAndCasesCarryTheirs) {
-  const ojson doc = native_json(run_with_axes());
+  const ojson doc = testing::native_json_of(run_with_axes());
   EXPECT_EQ(keys(doc), (std::vector<std::string>{"schema_version", "tool", "measure", "context", "suite", "cases",
                                                  "table1", "table2", "scaling", "configurations", "status", "wall_s"}));
   EXPECT_EQ(doc["suite"]["axes"], (ojson{{"seed", {7, 8}}}));
@@ -95,18 +100,63 @@ TEST(NativeJson, WithAxesTablesArePerConfigurationAndCasesCarryTheirs) {
   EXPECT_EQ(doc["configurations"][0]["table2"][1]["nets"], 2);
   // The configuration's tables are those of its cases run alone.
   RunResult alone = small_run();
-  EXPECT_EQ(doc["configurations"][0]["table2"], native_json(alone)["table2"]);
+  EXPECT_EQ(doc["configurations"][0]["table2"], testing::native_json_of(alone)["table2"]);
+}
+
+TEST(RunTables, OfARunWithoutAxesAreItsPaperTablesAndPairedRatios) {
+  const RunResult r = small_run();
+  const RunTables t = run_tables(r);
+  EXPECT_TRUE(t.configurations.empty());
+  EXPECT_EQ(t.whole.cases, (std::vector<std::size_t>{0, 1, 2, 3}));
+  ASSERT_EQ(t.whole.table2.size(), table2(r).size());
+  for (std::size_t i = 0; i < t.whole.table2.size(); ++i)
+    EXPECT_EQ(t.whole.table2[i].total_ms, table2(r)[i].total_ms) << i;
+  EXPECT_EQ(t.whole.table1.size(), table1(r).size());
+  EXPECT_EQ(t.whole.step_fits.size(), step_ms_vs_nodes(r).size());
+  EXPECT_EQ(t.whole.op_fits.size(), op_ms_vs_nodes(r).size());
+  ASSERT_EQ(t.case_ratios.size(), r.cases.size());
+  EXPECT_DOUBLE_EQ(*t.case_ratios[1].vs_plain, *paired_ratio(r, 1, 0));
+  EXPECT_DOUBLE_EQ(*t.case_ratios[0].vs_plain, 1.0);  // plain against itself
+  EXPECT_FALSE(t.case_ratios[1].has_equal_plain);     // the run has no plain_equal
+  EXPECT_FALSE(t.fidelity.has_value());
+}
+
+TEST(RunTables, WithAxesOneSetPerConfigurationOverItsOwnCases) {
+  const RunResult r = run_with_axes();
+  const RunTables t = run_tables(r);
+  EXPECT_TRUE(t.whole.table2.empty());
+  EXPECT_TRUE(t.whole.cases.empty());
+  ASSERT_EQ(t.configurations.size(), 2u);
+  EXPECT_EQ(t.configurations[1].cases, (std::vector<std::size_t>{4, 5, 6, 7}));
+  const std::vector<Table2Row> alone = table2(configuration_result(r, 1));
+  ASSERT_EQ(t.configurations[1].table2.size(), alone.size());
+  EXPECT_EQ(t.configurations[1].table2[1].total_ms, alone[1].total_ms);
+  EXPECT_DOUBLE_EQ(*t.case_ratios[5].vs_plain, 1.0);  // paired within its configuration
+}
+
+TEST(NativeJson, RendersTheTablesItIsGivenAndComputesNone) {
+  const RunResult r = small_run();
+  RunTables t = run_tables(r);
+  t.whole.table2.front().total_ms = 123.5;  // not what the run gives: a renderer that recomputed would not show it
+  t.case_ratios[1].vs_plain = 0.125;
+  const ojson doc = native_json(r, t);
+  EXPECT_EQ(doc["table2"][0]["total_ms"], 123.5);
+  EXPECT_EQ(doc["cases"][1]["ratio_vs_plain"], 0.125);
+  std::ostringstream console;
+  print_console_report(r, t, console);
+  EXPECT_NE(console.str().find("123.5"), std::string::npos) << console.str();
+  EXPECT_NE(console.str().find("0.125"), std::string::npos) << console.str();
 }
 
 TEST(NativeJson, WithoutAxesNoConfigurationKeys) {
-  const ojson doc = native_json(small_run());
+  const ojson doc = testing::native_json_of(small_run());
   EXPECT_FALSE(doc.contains("configurations"));
   EXPECT_FALSE(doc["suite"].contains("axes"));
   for (const ojson& c : doc["cases"]) EXPECT_FALSE(c.contains("configuration"));
 }
 
 TEST(NativeJson, ContextCarriesTheSuiteHashAndSeed) {
-  const ojson context = native_json(small_run())["context"];
+  const ojson context = testing::native_json_of(small_run())["context"];
   for (const char* key : {"date_utc", "host", "cpu_model", "compiler", "bullet_version", "git_commit"}) {
     EXPECT_TRUE(context.contains(key)) << key;
   }
@@ -119,7 +169,7 @@ TEST(NativeJson, ContextCarriesTheSuiteHashAndSeed) {
 }
 
 TEST(NativeJson, SuiteBlock) {
-  const ojson suite = native_json(small_run())["suite"];
+  const ojson suite = testing::native_json_of(small_run())["suite"];
   EXPECT_EQ(keys(suite), (std::vector<std::string>{"name", "description", "path", "sha256", "steps", "warmup_steps",
                                                    "repetitions", "interleave_steps", "dt", "gravity", "solver", "tcsb",
                                                    "feedback", "nets", "methods", "compression"}));
@@ -135,29 +185,29 @@ TEST(NativeJson, TheCandidateChargesAreWrittenOnlyWhenSet) {
   // Absent at 0, so a suite without it writes what it wrote before the setting existed and its results still
   // compare with older baselines.
   RunResult run = small_run();
-  EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("popping_charge"));
+  EXPECT_FALSE(testing::native_json_of(run)["suite"]["feedback"].contains("popping_charge"));
   run.suite.feedback.popping_charge = 2.5;
-  EXPECT_EQ(native_json(run)["suite"]["feedback"]["popping_charge"], 2.5);
-  EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("interface_charge"));
+  EXPECT_EQ(testing::native_json_of(run)["suite"]["feedback"]["popping_charge"], 2.5);
+  EXPECT_FALSE(testing::native_json_of(run)["suite"]["feedback"].contains("interface_charge"));
   run.suite.feedback.interface_charge = 3;
-  EXPECT_EQ(native_json(run)["suite"]["feedback"]["interface_charge"], 3.0);
-  EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("interface_tension"));
+  EXPECT_EQ(testing::native_json_of(run)["suite"]["feedback"]["interface_charge"], 3.0);
+  EXPECT_FALSE(testing::native_json_of(run)["suite"]["feedback"].contains("interface_tension"));
   run.suite.feedback.interface_tension = 0.5;
-  EXPECT_EQ(native_json(run)["suite"]["feedback"]["interface_tension"], 0.5);
-  EXPECT_FALSE(native_json(run)["suite"]["feedback"].contains("pin_level_pull"));
+  EXPECT_EQ(testing::native_json_of(run)["suite"]["feedback"]["interface_tension"], 0.5);
+  EXPECT_FALSE(testing::native_json_of(run)["suite"]["feedback"].contains("pin_level_pull"));
   run.suite.feedback.pin_level_pull = 8;
-  EXPECT_EQ(native_json(run)["suite"]["feedback"]["pin_level_pull"], 8.0);
-  EXPECT_FALSE(native_json(run)["suite"]["tcsb"].contains("rebuild_dbvt"));
+  EXPECT_EQ(testing::native_json_of(run)["suite"]["feedback"]["pin_level_pull"], 8.0);
+  EXPECT_FALSE(testing::native_json_of(run)["suite"]["tcsb"].contains("rebuild_dbvt"));
   run.suite.tcsb.rebuild_dbvt = false;
-  EXPECT_EQ(native_json(run)["suite"]["tcsb"]["rebuild_dbvt"], false);
+  EXPECT_EQ(testing::native_json_of(run)["suite"]["tcsb"]["rebuild_dbvt"], false);
 }
 
 TEST(NativeJson, TcsbCasesCarryTheirPairedRatioToTheGridOfTheirBudget) {
   RunResult r = small_run();
-  EXPECT_FALSE(native_json(r)["cases"][1].contains("ratio_vs_equal_plain"));  // no plain_equal in the run
+  EXPECT_FALSE(testing::native_json_of(r)["cases"][1].contains("ratio_vs_equal_plain"));  // no plain_equal in the run
   r.suite.methods.push_back(Method::kPlainEqual);
   r.cases.insert(r.cases.begin() + 2, make_case(r.suite, 0, Method::kPlainEqual, 0.3, 30, 55, 0, 0.5, {0.5, 0.4}));
-  const ojson doc = native_json(r);
+  const ojson doc = testing::native_json_of(r);
   const ojson& tcsb = doc["cases"][1];
   const std::vector<std::string> k = keys(tcsb);
   const auto at = std::find(k.begin(), k.end(), "ratio_vs_equal_plain");
@@ -170,7 +220,7 @@ TEST(NativeJson, TcsbCasesCarryTheirPairedRatioToTheGridOfTheirBudget) {
 }
 
 TEST(NativeJson, CaseAndRepetitionKeys) {
-  const ojson doc = native_json(small_run());
+  const ojson doc = testing::native_json_of(small_run());
   ASSERT_EQ(doc["cases"].size(), 4u);
   const ojson& c = doc["cases"][1];
   EXPECT_EQ(keys(c), (std::vector<std::string>{"label", "net", "method", "compression", "target_nodes", "net_nodes",
@@ -200,7 +250,7 @@ TEST(NativeJson, OpWorkPerOperationAndCount) {
   a.work = {.nodes = 10, .links = 20, .tree_records = 60, .dbvt_leaves = 1, .dbvt_ancestors = 3, .interior = true};
   b.work = {.nodes = 8, .links = 15, .tree_records = 50, .dbvt_leaves = 1, .dbvt_ancestors = 0};
   r.cases[1].ops.samples = {a, b, op(OpKind::kRefine, 1000, 500, 30, 60)};
-  const ojson work = native_json(r)["cases"][1]["op_work"];
+  const ojson work = testing::native_json_of(r)["cases"][1]["op_work"];
   EXPECT_EQ(keys(work), (std::vector<std::string>{"refine", "end-refine", "coarse", "end-coarse"}));
   EXPECT_EQ(keys(work["coarse"]),
             (std::vector<std::string>{"calls", "interior_calls", "nodes", "links", "tree_records", "dbvt_leaves",
@@ -221,7 +271,7 @@ TEST(NativeJson, OpWorkPerOperationAndCount) {
 }
 
 TEST(NativeJson, TablesAndFits) {
-  const ojson doc = native_json(small_run());
+  const ojson doc = testing::native_json_of(small_run());
   ASSERT_EQ(doc["table1"].size(), 4u);
   EXPECT_EQ(keys(doc["table1"][0]),
             (std::vector<std::string>{"operation", "N", "L", "node_ops_ms", "link_ops_ms", "complete_ms",
@@ -253,12 +303,12 @@ TEST(NativeJson, NonFiniteBecomesNullNeverNaN) {
   r.cases[0].repetitions[1].build_ms = -inf;
   r.wall_s = nan;
   r.context.mhz = nan;
-  const ojson doc = native_json(r);
+  const ojson doc = testing::native_json_of(r);
   EXPECT_TRUE(doc["cases"][0]["mean_links"].is_null());
   EXPECT_TRUE(doc["cases"][0]["mean_feedback_ms"].is_null());
   EXPECT_TRUE(doc["cases"][0]["repetitions"][1]["build_ms"].is_null());
   EXPECT_TRUE(doc["wall_s"].is_null());
-  const std::string text = NativeJsonFormat().render(r);
+  const std::string text = testing::render_of(NativeJsonFormat(), r);
   for (const char* bad : {"NaN", "nan", "Infinity", "inf,", "inf\n"}) {
     EXPECT_EQ(text.find(bad), std::string::npos) << bad;
   }
@@ -272,7 +322,7 @@ TEST(NativeJson, NonFiniteBecomesNullNeverNaN) {
 TEST(NativeJson, DivergedRunIsReportedNotHidden) {
   RunResult r = small_run();
   diverge(r.cases[3], 42);
-  const ojson doc = native_json(r);
+  const ojson doc = testing::native_json_of(r);
   EXPECT_EQ(doc["status"], "diverged");
   const ojson& c = doc["cases"][3];
   EXPECT_EQ(c["status"], "diverged");
@@ -284,7 +334,7 @@ TEST(NativeJson, DivergedRunIsReportedNotHidden) {
 TEST(NativeJson, EmptyStepSummaryIsNull) {
   RunResult r = small_run();
   r.cases[2].step_ms = Summary{};
-  const ojson s = native_json(r)["cases"][2]["step_ms"];
+  const ojson s = testing::native_json_of(r)["cases"][2]["step_ms"];
   EXPECT_EQ(s["count"], 0);
   EXPECT_TRUE(s["median"].is_null());
   EXPECT_EQ(s["unstable"], false);
@@ -294,10 +344,10 @@ TEST(ReportFormat, RegistryKnowsJson) {
   const std::unique_ptr<ReportFormat> json = make_format("json");
   ASSERT_NE(json, nullptr);
   EXPECT_EQ(json->name(), "json");
-  const std::string text = json->render(small_run());
+  const std::string text = testing::render_of(*json, small_run());
   ASSERT_FALSE(text.empty());
   EXPECT_EQ(text.back(), '\n');
-  EXPECT_EQ(ojson::parse(text), native_json(small_run()));
+  EXPECT_EQ(ojson::parse(text), testing::native_json_of(small_run()));
   EXPECT_EQ(make_format("nope"), nullptr);
   const std::vector<std::string> names = format_names();
   EXPECT_NE(std::find(names.begin(), names.end(), "json"), names.end());

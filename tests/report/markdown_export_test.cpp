@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "render_run.h"
 #include "report/format_registry.h"
 #include "report/json_report.h"
 #include "synthetic_run.h"
@@ -34,7 +35,7 @@ RunResult synthetic_run() {
   return r;
 }
 
-ojson synthetic_document() { return native_json(synthetic_run()); }
+ojson synthetic_document() { return testing::native_json_of(synthetic_run()); }
 
 bool has_line(const std::string& text, const std::string& line) {
   return ("\n" + text).find("\n" + line + "\n") != std::string::npos;
@@ -59,7 +60,7 @@ TEST(MarkdownExport, IsARegisteredFormat) {
   const std::unique_ptr<ReportFormat> format = make_format("markdown");
   ASSERT_NE(format, nullptr);
   EXPECT_EQ(format->name(), "markdown");
-  EXPECT_EQ(format->render(synthetic_run()), markdown_report(synthetic_document()));
+  EXPECT_EQ(testing::render_of(*format, synthetic_run()), markdown_report(synthetic_document()));
 }
 
 TEST(MarkdownExport, HeadingAndSourceLineComeFromTheDocument) {
@@ -75,7 +76,7 @@ TEST(MarkdownExport, HeadingAndSourceLineComeFromTheDocument) {
 TEST(MarkdownExport, ADirtyBuildSaysSo) {
   RunResult run = synthetic_run();
   run.context.git_commit = "abcdef0123456789-dirty";
-  const std::string md = markdown_report(native_json(run));
+  const std::string md = markdown_report(testing::native_json_of(run));
   EXPECT_EQ(md.substr(0, md.find('\n')), "## Run: suite `synthetic`, 2026-01-02, abcdef0-dirty");
   EXPECT_TRUE(contains(md, " · commit abcdef0-dirty · ")) << md;
 }
@@ -102,7 +103,7 @@ TEST(MarkdownExport, Table2ShowsTheRatioToEqualPlainWhenTheRunHasIt) {
   r.suite.methods.push_back(Method::kPlainEqual);
   r.cases.insert(r.cases.begin() + 2, testing::make_case(r.suite, 0, Method::kPlainEqual, 0.5, 49, 84, 0, 0.4));
   r.cases.push_back(testing::make_case(r.suite, 1, Method::kPlainEqual, 0.5, 196, 364, 0, 1.6));
-  const std::string md = markdown_report(native_json(r));
+  const std::string md = markdown_report(testing::native_json_of(r));
   EXPECT_TRUE(has_line(
       md, "| method | compression | N | L | I | ms | ratio | node ratio | ratio to equal plain | nets | status |"))
       << md;
@@ -298,7 +299,7 @@ TEST(MarkdownExport, ARunWithAxesHasEachConfigurationsTables) {
     r.cases.back().key.configuration = 1;
   }
   for (CaseResult& c : r.cases) c.label = case_label(r.suite, c.key);
-  const std::string md = markdown_report(native_json(r));
+  const std::string md = markdown_report(testing::native_json_of(r));
   const std::size_t first = md.find("### Configuration piterations=2");
   const std::size_t second = md.find("### Configuration piterations=8");
   ASSERT_NE(first, std::string::npos) << md;

@@ -39,23 +39,24 @@ TEST(Reproduction, TablesAreThoseOfTheRunAfterItsLastLook) {
   options.budget_s = 0;  // the first look only: the run's own repetitions
   const Reproduction r = check_reproduction(run, paper(), options);
   const std::vector<Table2Row> rows = table2(run);
-  ASSERT_EQ(r.tables.table2.size(), rows.size());
+  ASSERT_EQ(r.tables.run.whole.table2.size(), rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    EXPECT_EQ(r.tables.table2[i].method, rows[i].method);
-    EXPECT_EQ(r.tables.table2[i].total_ms, rows[i].total_ms);
-    EXPECT_EQ(r.tables.table2[i].time_ratio_vs_plain, rows[i].time_ratio_vs_plain);
+    EXPECT_EQ(r.tables.run.whole.table2[i].method, rows[i].method);
+    EXPECT_EQ(r.tables.run.whole.table2[i].total_ms, rows[i].total_ms);
+    EXPECT_EQ(r.tables.run.whole.table2[i].time_ratio_vs_plain, rows[i].time_ratio_vs_plain);
   }
-  EXPECT_EQ(r.tables.table1.size(), table1(run).size());
+  EXPECT_EQ(r.tables.run.whole.table1.size(), table1(run).size());
   EXPECT_EQ(r.tables.tcsb_fit.points.size(), step_fit_of_method(run, Method::kTcsb).points.size());
-  EXPECT_FALSE(r.tables.has_fidelity);
+  EXPECT_FALSE(r.tables.run.fidelity.has_value());
   for (const TrackedClaim& t : r.targets) EXPECT_EQ(t.claim.id.rfind("fidelity_", 0), std::string::npos) << t.claim.id;
 }
 
 TEST(Reproduction, TheRenderersShowTheTablesTheyAreGiven) {
   RunResult run = small_run();
   Reproduction r = check_reproduction(run, paper());
-  ASSERT_FALSE(r.tables.table2.empty());
-  r.tables.table2.front().total_ms = 123.5;  // not what the run gives: a renderer that recomputed would not show it
+  ASSERT_FALSE(r.tables.run.whole.table2.empty());
+  r.tables.run.whole.table2.front().total_ms =
+      123.5;  // not what the run gives: a renderer that recomputed would not show it
   const nlohmann::ordered_json doc = reproduction_json(r);
   EXPECT_EQ(doc["table2"][0]["ours"]["total_ms"], 123.5);
   std::ostringstream console;

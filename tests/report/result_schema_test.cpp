@@ -1,13 +1,14 @@
 // The native output conforms to results/schema/tcsb-result.schema.json: synthetic runs here (every key, diverged
 // cases, the optional sections other commands add), and the committed CI baseline — a real `tcsb run` — too. The
 // CLI tests validate a fresh run of the real binary.
-#include "gate/result_schema.h"
+#include "result/result_schema.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
+#include "render_run.h"
 #include "report/json_report.h"
 #include "synthetic_run.h"
 
@@ -55,15 +56,15 @@ TEST(ResultSchema, PinsTheCurrentSchemaVersion) {
   EXPECT_EQ(result_schema()["properties"]["schema_version"]["enum"], ojson::array({kNativeJsonSchemaVersion}));
 }
 
-TEST(ResultSchema, NativeJsonConforms) { EXPECT_EQ(problems(native_json(run_with_cases())), Lines{}); }
+TEST(ResultSchema, NativeJsonConforms) { EXPECT_EQ(problems(testing::native_json_of(run_with_cases())), Lines{}); }
 
 TEST(ResultSchema, DivergedAndEmptyRunsConform) {
   RunResult r = run_with_cases();
   testing::diverge(r.cases[3], 17);
   r.cases[2].step_ms = Summary{};
-  EXPECT_EQ(problems(native_json(r)), Lines{});
+  EXPECT_EQ(problems(testing::native_json_of(r)), Lines{});
   r.cases.clear();
-  EXPECT_EQ(problems(native_json(r)), Lines{});
+  EXPECT_EQ(problems(testing::native_json_of(r)), Lines{});
 }
 
 TEST(ResultSchema, ARunWithAxesConforms) {
@@ -75,7 +76,7 @@ TEST(ResultSchema, ARunWithAxesConforms) {
     r.cases.back().key.configuration = 1;
   }
   for (CaseResult& c : r.cases) c.label = case_label(r.suite, c.key);
-  ojson doc = native_json(r);
+  ojson doc = testing::native_json_of(r);
   ASSERT_TRUE(doc.contains("configurations"));
   EXPECT_EQ(problems(doc), Lines{});
   doc["cases"][0]["configuration"].erase("label");
@@ -85,7 +86,7 @@ TEST(ResultSchema, ARunWithAxesConforms) {
 }
 
 TEST(ResultSchema, OptionalSectionsOfOtherCommandsConform) {
-  ojson doc = native_json(run_with_cases());
+  ojson doc = testing::native_json_of(run_with_cases());
   doc["reproduction"] = {{"pass", true}};
   doc["fidelity"] = ojson::object();
   doc["pareto"] = ojson::array();
@@ -98,7 +99,7 @@ TEST(ResultSchema, OptionalSectionsOfOtherCommandsConform) {
 }
 
 TEST(ResultSchema, FidelityFloorsArePinned) {
-  ojson doc = native_json(run_with_cases());
+  ojson doc = testing::native_json_of(run_with_cases());
   doc["fidelity"] = {{"rows", ojson::array({{{"method", "tcsb"}, {"noise_floor_pct", 0.01}}})},
                      {"floors",
                       ojson::array({{{"net", "n0"},
@@ -112,7 +113,7 @@ TEST(ResultSchema, FidelityFloorsArePinned) {
 }
 
 TEST(ResultSchema, AReproductionVerdictIsOneOfThree) {
-  ojson doc = native_json(run_with_cases());
+  ojson doc = testing::native_json_of(run_with_cases());
   doc["reproduction"] = {{"verdict", "maybe"}, {"claims", ojson::array({{{"id", "a"}, {"verdict", true}}})}};
   const Lines p = problems(doc);
   ASSERT_EQ(p.size(), 2u) << ::testing::PrintToString(p);
@@ -121,7 +122,7 @@ TEST(ResultSchema, AReproductionVerdictIsOneOfThree) {
 }
 
 TEST(ResultSchema, OpWorkIsOptionalButPinnedWhenPresent) {
-  ojson doc = native_json(run_with_cases());
+  ojson doc = testing::native_json_of(run_with_cases());
   ASSERT_TRUE(doc["cases"][1].contains("op_work"));
   ojson without = doc;
   without["cases"][1].erase("op_work");  // a result written before op_work existed
@@ -133,7 +134,7 @@ TEST(ResultSchema, OpWorkIsOptionalButPinnedWhenPresent) {
 }
 
 TEST(ResultSchema, RejectsWhatIsNotANativeResult) {
-  ojson doc = native_json(run_with_cases());
+  ojson doc = testing::native_json_of(run_with_cases());
   doc["schema_version"] = 1;
   doc["cases"][1]["repetitions"][0].erase("final_state_hash");
   doc["cases"][0]["status"] = "fine";

@@ -1,4 +1,4 @@
-#include "report/report_writer.h"
+#include "base/atomic_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>

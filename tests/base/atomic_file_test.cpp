@@ -1,6 +1,6 @@
 // Atomic report writing: the target is replaced whole or not at all, a symlink survives, and a pipe or device is
 // written into rather than replaced (renaming over /dev/null would turn it into a regular file).
-#include "report/report_writer.h"
+#include "base/atomic_file.h"
 
 #include <fcntl.h>
 #include <gtest/gtest.h>

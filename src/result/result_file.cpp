@@ -1,11 +1,10 @@
-#include "cli/result_file.h"
+#include "result/result_file.h"
 
 #include "base/input_error.h"
 #include "base/json_file.h"
-#include "gate/result_schema.h"
-#include "report/json_report.h"
+#include "result/result_schema.h"
 
-namespace tcsb::cli {
+namespace tcsb {
 
 LoadedResult load_result_file(const std::string& path) {
   LoadedResult result;
@@ -35,4 +34,4 @@ LoadedResult load_result_file(const std::string& path) {
   return result;
 }
 
-}  // namespace tcsb::cli
+}  // namespace tcsb

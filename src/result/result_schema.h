@@ -11,6 +11,11 @@
 
 namespace tcsb {
 
+/// Version of the native JSON layout. Bumped whenever the layout changes (a key added, removed, renamed or changing
+/// meaning), together with results/schema/tcsb-result.schema.json, which pins it in its schema_version enum; tests
+/// validate real runs against that schema. 2: first version with a schema.
+inline constexpr int kNativeJsonSchemaVersion = 2;
+
 /// The schema as parsed JSON (parsed once; the text is embedded at configure time).
 const nlohmann::ordered_json& result_schema();
 

@@ -91,15 +91,24 @@ struct PairedStepTimes {
 /// time, in the case's repetition order.
 std::vector<PairedStepTimes> paired_step_times(const ResultView& result, std::size_t index, std::size_t base_index);
 
-/// case_ms / base_ms of each pair whose ratio is finite (a non-zero base), in order.
-std::vector<double> step_ratios(const std::vector<PairedStepTimes>& pairs);
+/// Values of one case, one per repetition, each with the process that measured it (RepetitionView::process).
+struct MeasuredValues {
+  std::vector<double> values;
+  std::vector<int> process;  ///< per value
+};
 
 /// Same-run ratios of cases[index] to `base_index`, one per repetition number that is ok in both with finite
 /// times and a non-zero base: case.mean_step_ms[r] / base.mean_step_ms[r], in the case's repetition order
-/// (step_ratios of paired_step_times).
+/// (the pairs of paired_step_times), with their processes.
+MeasuredValues paired_step_ratio_values(const ResultView& result, std::size_t index, std::size_t base_index);
+
+/// paired_step_ratio_values' values alone.
 std::vector<double> paired_step_ratios(const ResultView& result, std::size_t index, std::size_t base_index);
 
-/// The mean step times of the ok repetitions of cases[index], in repetition order.
+/// The mean step times of the ok repetitions of cases[index], in repetition order, with their processes.
+MeasuredValues ok_step_time_values(const CaseView& c);
+
+/// ok_step_time_values' values alone.
 std::vector<double> ok_step_times(const CaseView& c);
 
 }  // namespace tcsb

@@ -1,9 +1,9 @@
 // Reading result files back: every field the readers use is checked, and a bad one is named with its file.
-#include "gate/result_view.h"
+#include "result/result_view.h"
 
 #include <gtest/gtest.h>
 
-#include "result_documents.h"
+#include "../gate/result_documents.h"
 
 namespace tcsb {
 namespace {

@@ -1,4 +1,4 @@
-#include "gate/result_schema.h"
+#include "result/result_schema.h"
 
 #include "result_schema_text.h"
 

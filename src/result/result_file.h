@@ -7,9 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gate/result_view.h"
+#include "result/result_view.h"
 
-namespace tcsb::cli {
+namespace tcsb {
 
 /// A result file, checked and read.
 struct LoadedResult {
@@ -21,4 +21,4 @@ struct LoadedResult {
 /// schema_version, or breaks the schema (the first violation is named, the others counted).
 LoadedResult load_result_file(const std::string& path);
 
-}  // namespace tcsb::cli
+}  // namespace tcsb

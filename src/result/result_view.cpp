@@ -1,4 +1,4 @@
-#include "gate/result_view.h"
+#include "result/result_view.h"
 
 #include <cmath>
 #include <limits>
@@ -148,24 +148,32 @@ std::vector<PairedStepTimes> paired_step_times(const ResultView& result, std::si
   return pairs;
 }
 
-std::vector<double> step_ratios(const std::vector<PairedStepTimes>& pairs) {
-  std::vector<double> ratios;
-  for (const PairedStepTimes& p : pairs) {
-    if (const auto q = safe_ratio(p.case_ms, p.base_ms)) ratios.push_back(*q);
+MeasuredValues paired_step_ratio_values(const ResultView& result, std::size_t index, std::size_t base_index) {
+  MeasuredValues out;
+  for (const PairedStepTimes& p : paired_step_times(result, index, base_index)) {
+    if (const auto q = safe_ratio(p.case_ms, p.base_ms)) {
+      out.values.push_back(*q);
+      out.process.push_back(p.process);
+    }
   }
-  return ratios;
+  return out;
 }
 
 std::vector<double> paired_step_ratios(const ResultView& result, std::size_t index, std::size_t base_index) {
-  return step_ratios(paired_step_times(result, index, base_index));
+  return paired_step_ratio_values(result, index, base_index).values;
 }
 
-std::vector<double> ok_step_times(const CaseView& c) {
-  std::vector<double> times;
+MeasuredValues ok_step_time_values(const CaseView& c) {
+  MeasuredValues out;
   for (const RepetitionView& r : c.repetitions) {
-    if (r.status == "ok" && r.mean_step_ms) times.push_back(*r.mean_step_ms);
+    if (r.status == "ok" && r.mean_step_ms) {
+      out.values.push_back(*r.mean_step_ms);
+      out.process.push_back(r.process);
+    }
   }
-  return times;
+  return out;
 }
+
+std::vector<double> ok_step_times(const CaseView& c) { return ok_step_time_values(c).values; }
 
 }  // namespace tcsb
