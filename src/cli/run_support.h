@@ -45,17 +45,19 @@ void add_repetitions_option(CLI::App& command, std::optional<int>& repetitions);
 /// Applies --repetitions to the suite, within the bounds the suite file itself has (UsageError otherwise).
 void apply_repetitions(const std::optional<int>& repetitions, Suite& suite);
 
+/// A finished run and its tables (paper/run_tables.h), which every rendering of it shows.
+struct FinishedRun {
+  RunResult result;
+  RunTables tables;
+};
+
 /// Runs the suite as `run` and `reproduce` do, talking on stderr: the machine's warnings (run/context.h), a
 /// single updating progress line when stderr is a terminal and not `quiet`, the console report unless `quiet`, then
 /// a warning per diverged repetition (case, step, reason) and per repetition during which the machine stalled
 /// (run/stall.h).
 /// With `shard`, the result says which shard it is; the suite must be restricted to it (restrict_to_shard()).
 /// With Measure::kInstructions the process must run under callgrind (cli/callgrind_launch.h).
-/// Returns the run with its tables (run_tables), computed once for the console and the output file.
-struct FinishedRun {
-  RunResult result;
-  RunTables tables;
-};
+/// Returns the run with its tables, computed once for the console and the output file.
 FinishedRun run_on_console(const Suite& suite, bool quiet, const std::optional<ShardIndex>& shard = std::nullopt,
                            Measure measure = Measure::kTime);
 
