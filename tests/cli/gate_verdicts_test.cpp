@@ -128,7 +128,7 @@ TEST_F(GateVerdicts, MeasuringInstructionsNeedsDeterministicWork) {
   EXPECT_FALSE(fs::exists(dir_ / "p.json"));
 }
 
-TEST_F(GateVerdicts, TwoInstructionCountsOfOneBuildAreEqual) {
+TEST_F(GateVerdicts, TwoInstructionCountsOfOneBuildAgreeBeyondBulletsAddressOrder) {
   if (kAddressSanitized) GTEST_SKIP() << "valgrind does not run AddressSanitizer builds";
   if (shell("command -v valgrind").exit_code != 0) GTEST_SKIP() << "valgrind is not installed";
   write_file(dir_ / "tiny.json", nine_by_nine_suite("tiny", 1));
@@ -139,10 +139,19 @@ TEST_F(GateVerdicts, TwoInstructionCountsOfOneBuildAreEqual) {
   const ojson ra = ojson::parse(read_file(dir_ / "a.json")), rb = ojson::parse(read_file(dir_ / "b.json"));
   EXPECT_EQ(ra["measure"], "instructions");
   ASSERT_EQ(ra["cases"].size(), 3u);
+  // Equal up to Bullet's DBVT rotations: btDbvt::optimizeIncremental, which every soft body's predictMotion calls,
+  // rotates the tree where a parent's address is above its child's (btDbvt.cpp, sort: `if (p > n)`), so where the
+  // allocator happened to put the nodes can move a run's count by a few dozen instructions in a million (seen: 37 in
+  // 1.08 M, in about one run in twenty); the gate's threshold is 0.5 %.
   for (std::size_t i = 0; i < ra["cases"].size(); ++i) {
-    const ojson& ca = ra["cases"][i];
-    EXPECT_GT(ca["instructions"]["bullet"].get<std::int64_t>(), 0) << ca["label"];
-    EXPECT_EQ(ca["instructions"], rb["cases"][i]["instructions"]) << ca["label"];
+    const ojson& ca = ra["cases"][i]["instructions"];
+    const ojson& cb = rb["cases"][i]["instructions"];
+    EXPECT_GT(ca["bullet"].get<std::int64_t>(), 0) << ra["cases"][i]["label"];
+    for (const char* part : {"own", "bullet", "total"}) {
+      const auto a_count = static_cast<double>(ca[part].get<std::int64_t>());
+      const auto b_count = static_cast<double>(cb[part].get<std::int64_t>());
+      EXPECT_LE(std::abs(a_count - b_count), 1e-4 * std::max(a_count, 1.0)) << ra["cases"][i]["label"] << " " << part;
+    }
   }
   EXPECT_GT(ra["cases"][2]["instructions"]["own"].get<std::int64_t>(), 0) << "TC-SB at 50 % does its own work";
   const Outcome c = tcsb("compare a.json b.json");
