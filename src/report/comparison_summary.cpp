@@ -220,8 +220,8 @@ std::string comparison_summary_markdown(const GateOutcome& o, const ResultView& 
   }
   out << "How: every case (by label) and repetition (by number) must be present once in each run, and their "
          "deterministic metrics (N, L, I, operations, status, final-state hash) must match exactly. Timing: a "
-         "metric's change of the median gets a bootstrap interval (in brackets; each run's repetitions resampled), "
-         "each end a one-sided test at α / m = "
+         "metric's change of the median gets a bootstrap interval (in brackets; each run's repetitions resampled, a "
+         "merged run's processes first), each end a one-sided test at α / m = "
       << formatted("%g", o.settings.alpha) << " / " << o.gated_metrics << " over the gated metrics, and the threshold ("
       << formatted("%g", 100.0 * o.settings.threshold)
       << " %) is the margin: the whole interval above it is a regression, the whole interval at or below it is no "

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "../gate/result_documents.h"
 
 namespace tcsb {
@@ -42,6 +44,20 @@ TEST(ComparisonSummary, PassHasATableRowPerMetric) {
       << s;
   EXPECT_NE(s.find("Deterministic metrics: identical in 4 cases and 36 repetitions."), std::string::npos) << s;
   EXPECT_NE(s.find("`base.json` (commit abc"), std::string::npos) << s;
+}
+
+TEST(ComparisonSummary, AMergedResultsIntervalsNameTheirProcesses) {
+  ojson merged = result_doc();
+  for (ojson& c : merged["cases"]) {
+    int r = 0;
+    for (ojson& rep : c["repetitions"]) rep["process"] = 1 + r++ % 3;  // three shards measured it
+  }
+  const Compared c = compare(result_doc(), merged);
+  EXPECT_EQ(c.outcome.processes(), (std::pair<std::size_t, std::size_t>{1, 3}));
+  const std::string s = summary(c);
+  EXPECT_NE(s.find("| n9/tcsb@0.5 | ratio vs plain | 0.5 | 0.5 | +0.0 [+0.0, +0.0] (1/3 processes) | 1 | ok |"),
+            std::string::npos)
+      << s;
 }
 
 TEST(ComparisonSummary, RegressionAndChangedBehaviourAreMarked) {
