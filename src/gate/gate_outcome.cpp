@@ -22,11 +22,19 @@ std::size_t reliable(const std::vector<TimingDecision>& decisions) {
   return decisions.size() - count(decisions, TimingVerdict::kUnreliable);
 }
 
+/// Calls `fn` with every gated timing decision: the ratios, and the step times when --absolute gates them too.
+template <class Fn>
+void for_each_gated(const GateOutcome& o, Fn fn) {
+  for (const TimingDecision& d : o.ratio_decisions) fn(d);
+  if (o.absolute_gated)
+    for (const TimingDecision& d : o.step_decisions) fn(d);
+}
+
 }  // namespace
 
 std::size_t GateOutcome::unreliable_metrics() const {
-  std::size_t n = count(ratio_decisions, TimingVerdict::kUnreliable);
-  if (absolute_gated) n += count(step_decisions, TimingVerdict::kUnreliable);
+  std::size_t n = 0;
+  for_each_gated(*this, [&n](const TimingDecision& d) { n += d.verdict == TimingVerdict::kUnreliable; });
   return n;
 }
 
@@ -38,26 +46,18 @@ Verdict GateOutcome::verdict() const {
 
 int GateOutcome::more_repetitions() const {
   int most = 0;
-  const auto scan = [&](const std::vector<TimingDecision>& decisions) {
-    for (const TimingDecision& d : decisions)
-      if (d.verdict == TimingVerdict::kUndecided)
-        most = std::max(most, d.more_repetitions.value_or(kMaxMoreRepetitions));
-  };
-  scan(ratio_decisions);
-  if (absolute_gated) scan(step_decisions);
+  for_each_gated(*this, [&most](const TimingDecision& d) {
+    if (d.verdict == TimingVerdict::kUndecided) most = std::max(most, d.more_repetitions.value_or(kMaxMoreRepetitions));
+  });
   return most;
 }
 
 std::pair<std::size_t, std::size_t> GateOutcome::processes() const {
   std::pair<std::size_t, std::size_t> most{1, 1};
-  const auto scan = [&](const std::vector<TimingDecision>& decisions) {
-    for (const TimingDecision& d : decisions) {
-      most.first = std::max(most.first, d.base_processes);
-      most.second = std::max(most.second, d.next_processes);
-    }
-  };
-  scan(ratio_decisions);
-  if (absolute_gated) scan(step_decisions);
+  for_each_gated(*this, [&most](const TimingDecision& d) {
+    most.first = std::max(most.first, d.base_processes);
+    most.second = std::max(most.second, d.next_processes);
+  });
   return most;
 }
 

@@ -17,13 +17,6 @@ TableSet table_set(const RunResult& run, std::vector<std::size_t> cases) {
   return t;
 }
 
-std::vector<std::size_t> cases_of_configuration(const RunResult& result, std::size_t configuration) {
-  std::vector<std::size_t> cases;
-  for (std::size_t i = 0; i < result.cases.size(); ++i)
-    if (result.cases[i].key.configuration == configuration) cases.push_back(i);
-  return cases;
-}
-
 }  // namespace
 
 RunTables run_tables(const RunResult& result) {
@@ -39,12 +32,10 @@ RunTables run_tables(const RunResult& result) {
     t.case_ratios.push_back(r);
   }
   if (result.suite.configurations.empty()) {
-    std::vector<std::size_t> all(result.cases.size());
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-    t.whole = table_set(result, std::move(all));
+    t.whole = table_set(result, configuration_cases(result, 0));
   } else {
     for (std::size_t c = 0; c < result.suite.configurations.size(); ++c)
-      t.configurations.push_back(table_set(configuration_result(result, c), cases_of_configuration(result, c)));
+      t.configurations.push_back(table_set(configuration_result(result, c), configuration_cases(result, c)));
   }
   if (result.fidelity) t.fidelity = fidelity_tables(*result.fidelity);
   return t;

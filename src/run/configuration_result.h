@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "run/run_result.h"
 
@@ -13,5 +14,9 @@ namespace tcsb {
 /// and keys as in the whole run), the whole run's context, wall time and shard. Without axes (configuration 0), a
 /// copy of the run.
 RunResult configuration_result(const RunResult& result, std::size_t configuration);
+
+/// The indices of the run's cases that configuration_result(result, configuration) holds, in run order (every case
+/// without axes).
+std::vector<std::size_t> configuration_cases(const RunResult& result, std::size_t configuration);
 
 }  // namespace tcsb
