@@ -52,11 +52,40 @@ void FeedbackWorkers::post(std::function<void()> job) {
     job_pending_ = true;
     parked_.store(false, std::memory_order_release);
     pending_.store(true, std::memory_order_release);
+    available_.store(true, std::memory_order_release);
   }
   wake_.notify_all();
 }
 
+std::function<void()> FeedbackWorkers::take_job() {
+  std::function<void()> job = std::move(job_);
+  job_ = nullptr;
+  available_.store(false, std::memory_order_release);
+  return job;
+}
+
+void FeedbackWorkers::finish_job() {
+  job_pending_ = false;
+  pending_.store(false, std::memory_order_release);
+  done_.notify_all();
+}
+
 void FeedbackWorkers::wait() {
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (std::function<void()> job = take_job()) {
+      taken_back_.fetch_add(1, std::memory_order_relaxed);
+      lock.unlock();
+      job();
+      lock.lock();
+      finish_job();
+      return;
+    }
+  }
+  wait_for_worker();
+}
+
+void FeedbackWorkers::wait_for_worker() {
   if (spin_until([this] { return !pending_.load(std::memory_order_acquire); })) return;
   std::unique_lock<std::mutex> lock(mutex_);
   done_.wait(lock, [this] { return !job_pending_; });
@@ -64,28 +93,27 @@ void FeedbackWorkers::wait() {
 
 void FeedbackWorkers::wake() {
   post([] {});
-  wait();
+  wait_for_worker();  // not wait(): the point is that thread 0 runs it and so is awake
 }
 
 void FeedbackWorkers::coordinator_loop() {
-  std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
-    lock.unlock();
-    spin_until([this] {
-      return stopping_.load(std::memory_order_acquire) || pending_.load(std::memory_order_acquire) ||
+    const bool ready = spin_until([this] {
+      return stopping_.load(std::memory_order_acquire) || available_.load(std::memory_order_acquire) ||
              parked_.load(std::memory_order_acquire);
     });
-    lock.lock();
-    wake_.wait(lock, [this] { return stop_ || (job_pending_ && job_); });
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (!stop_ && !job_) {
+      // A job seen while spinning but taken back by wait() before this thread got the lock: spin for the next one.
+      if (ready && !parked_.load(std::memory_order_acquire)) continue;
+      wake_.wait(lock, [this] { return stop_ || job_; });
+    }
     if (stop_) return;
-    std::function<void()> job = std::move(job_);
-    job_ = nullptr;
+    std::function<void()> job = take_job();
     lock.unlock();
     job();
     lock.lock();
-    job_pending_ = false;
-    pending_.store(false, std::memory_order_release);
-    done_.notify_all();
+    finish_job();
   }
 }
 

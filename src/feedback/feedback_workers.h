@@ -7,6 +7,12 @@
 // started so late that the simulation thread then waited for it — the parallel mode's critical-path cost was no
 // lower than evaluating on the simulation thread. Jobs come every few steps (milliseconds), so a short spin keeps
 // the worker awake between them at the price of one busy core while a TC-SB body runs.
+//
+// A job the worker has not begun when wait() is called is taken back and run by the waiting thread. On a shared VM
+// the worker's vCPU is now and then away for milliseconds; the simulation thread, which would otherwise spin idle
+// until it returns, does the job itself (measured on the Intel VM: compressed TC-SB repetitions whose mean step was
+// 1.3-5x their median, the excess in the feedback stage's wait; docs/investigations/reproduction-verdicts.md). The
+// job is the same function of the same inputs whichever thread runs it, so results do not depend on who did.
 #pragma once
 
 #include <atomic>
@@ -29,7 +35,8 @@ class FeedbackWorkers {
 
   /// Hands a job to thread 0. At most one job is pending: call wait() before posting the next.
   void post(std::function<void()> job);
-  /// Blocks until the posted job (if any) has finished.
+  /// Returns once the posted job (if any) has finished: runs it on the calling thread if thread 0 has not begun it,
+  /// else waits for thread 0.
   void wait();
   /// No job will come for a while: thread 0 stops spinning and sleeps until the next post().
   void park() { parked_.store(true, std::memory_order_release); }
@@ -39,6 +46,8 @@ class FeedbackWorkers {
   /// From inside a job: runs fn(chunk) for every chunk in [0, chunks) over all threads; returns when all are done.
   void parallel_for(int chunks, const std::function<void(int)>& fn);
   int threads() const { return static_cast<int>(helpers_.size()) + 1; }
+  /// How many posted jobs wait() ran on the calling thread because thread 0 had not begun them.
+  long taken_back() const { return taken_back_.load(std::memory_order_relaxed); }
 
  private:
   void coordinator_loop();
@@ -46,6 +55,12 @@ class FeedbackWorkers {
   /// Tells every started thread to stop and joins it (the destructor, and a constructor that failed half-way).
   void stop_and_join();
   void run_chunks();
+  /// Returns once the pending job has finished, without taking it back.
+  void wait_for_worker();
+  /// Takes the posted job that nobody has begun (empty if there is none); the caller holds mutex_.
+  std::function<void()> take_job();
+  /// Marks the pending job finished and wakes its waiter; the caller holds mutex_.
+  void finish_job();
   /// Spins (pausing the core) until `ready()` or kSpin has passed; returns ready().
   template <class Ready>
   static bool spin_until(Ready ready);
@@ -53,10 +68,12 @@ class FeedbackWorkers {
 
   std::mutex mutex_;
   std::condition_variable wake_, done_;
-  std::function<void()> job_;
-  bool job_pending_ = false, stop_ = false;
-  std::atomic<bool> pending_{false}, stopping_{false};  // lock-free mirrors of job_pending_ and stop_, for spinning
-  std::atomic<bool> parked_{false};                     // park() was called since the last post()
+  std::function<void()> job_;                // posted and not yet begun by anyone
+  bool job_pending_ = false, stop_ = false;  // posted and not yet finished
+  // Lock-free mirrors for spinning: of job_pending_, of a non-empty job_, and of stop_.
+  std::atomic<bool> pending_{false}, available_{false}, stopping_{false};
+  std::atomic<bool> parked_{false};  // park() was called since the last post()
+  std::atomic<long> taken_back_{0};
   // parallel_for state
   const std::function<void(int)>* chunk_fn_ = nullptr;
   std::atomic<int> chunk_count_{0};

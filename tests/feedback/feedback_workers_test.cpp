@@ -1,5 +1,6 @@
-// FeedbackWorkers: jobs run on the worker and wait() returns only after they finished, whether the worker was
-// spinning for the job or sleeping (parked, or spun out); parallel_for covers every chunk once.
+// FeedbackWorkers: every posted job runs exactly once and wait() returns only after it finished, whether the worker
+// was spinning for the job or sleeping (parked, or spun out), or wait() took it back; parallel_for covers every
+// chunk once.
 #include "feedback/feedback_workers.h"
 
 #include <gtest/gtest.h>
@@ -12,18 +13,22 @@
 namespace tcsb {
 namespace {
 
-/// Posts a job that records its thread and sleeps briefly, waits, and checks it ran to the end off this thread.
-void post_and_check(FeedbackWorkers& workers) {
+/// Posts a job that counts its runs and sleeps briefly, waits, and checks it ran once and to the end. Returns whether
+/// it ran on this thread (wait() took it back).
+bool post_and_check(FeedbackWorkers& workers) {
+  std::atomic<int> runs{0};
   std::atomic<bool> done{false};
   std::thread::id ran_on;
   workers.post([&] {
+    ++runs;
     ran_on = std::this_thread::get_id();
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
     done = true;
   });
   workers.wait();
   EXPECT_TRUE(done.load());
-  EXPECT_NE(ran_on, std::this_thread::get_id());
+  EXPECT_EQ(runs.load(), 1);
+  return ran_on == std::this_thread::get_id();
 }
 
 TEST(FeedbackWorkers, WaitReturnsAfterTheJobFinished) {
@@ -54,6 +59,37 @@ TEST(FeedbackWorkers, AWorkerThatSpunOutWakesForTheNextJob) {
   FeedbackWorkers workers(1);
   post_and_check(workers);
   std::this_thread::sleep_for(std::chrono::milliseconds(40));  // longer than the spin: it sleeps on the condition
+  post_and_check(workers);
+}
+
+TEST(FeedbackWorkers, WaitTakesBackAJobTheWorkerHasNotBegun) {
+  // A worker asleep (parked) needs far longer to wake than wait() needs to take the lock, so wait() runs the job;
+  // one in fifty is enough to show the path works (a wake-up winning the race every time would be a scheduler
+  // that runs a woken thread before the one that woke it returns from notify).
+  FeedbackWorkers workers(1);
+  int taken = 0;
+  for (int i = 0; i < 50; ++i) {
+    workers.park();
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (post_and_check(workers)) ++taken;
+  }
+  EXPECT_GT(taken, 0);
+  EXPECT_EQ(workers.taken_back(), taken);
+}
+
+TEST(FeedbackWorkers, EveryJobRunsOnceWhoeverRunsIt) {
+  // Back to back with no gap, the worker and wait() race for every job: neither may run one twice or lose one.
+  FeedbackWorkers workers(1);
+  std::atomic<int> runs{0};
+  constexpr int kJobs = 20000;
+  for (int i = 0; i < kJobs; ++i) {
+    workers.post([&] { ++runs; });
+    workers.wait();
+    ASSERT_EQ(runs.load(), i + 1);
+  }
+  // A wake() after a take-back still reaches the worker (it runs wake's empty job itself).
+  workers.park();
+  workers.wake();
   post_and_check(workers);
 }
 
