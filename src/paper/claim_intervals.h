@@ -22,7 +22,10 @@ inline constexpr std::size_t kMinRepetitionsForIntervals = 5;
 /// One bootstrap resample of a run's repetitions. For each net, repetition indices are drawn once — the processes
 /// that measured them first (RepetitionResult::process: a merged result's shards), then repetitions within them, by
 /// resample_grouped(); with one process simply repetitions with replacement — and used for every case of that net,
-/// so runs measured side by side (plain and TC-SB of one repetition) stay paired; each case keeps the drawn
+/// so runs measured side by side (plain and TC-SB of one repetition) stay paired. With Suite::interleave_across_nets
+/// every net's cases of a repetition ran together, so the indices are drawn once for all nets — when every case has
+/// its repetitions in the same processes, as the runner and the split by repetition give; otherwise per net. Each
+/// case keeps the drawn
 /// repetitions, renumbered 0..R-1, with their operation samples, and its summary is recomputed. Step series and the
 /// fidelity pass are not carried over (nothing the tables or claims read). Throws std::logic_error if a net's cases
 /// differ in repetition count or processes, or a case's operation samples do not add up to its repetitions' counts (the

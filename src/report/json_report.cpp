@@ -44,6 +44,7 @@ ojson suite_json(const Suite& s) {
       {"warmup_steps", s.warmup_steps},
       {"repetitions", s.repetitions},
       {"interleave_steps", s.interleave_steps},
+      {"interleave_across_nets", s.interleave_across_nets},
       {"dt", json_number(s.world.dt)},
       {"gravity", json_number(s.world.gravity)},
       {"solver",

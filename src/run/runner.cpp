@@ -293,29 +293,32 @@ void run_plan(RunResult& result, const std::vector<PlannedRun>& plan, const std:
     return;
   }
   // Side by side: a group is the plan's consecutive runs of one net in one repetition of the plan (interleaved_plan
-  // keeps a net's cases of a repetition together, every configuration's).
+  // keeps a net's cases of a repetition together, every configuration's), or of every net with
+  // interleave_across_nets (the plan keeps a repetition's runs together).
+  const bool across_nets = result.suite.interleave_across_nets;
   for (std::size_t first = 0; first < plan.size();) {
     const std::size_t net = result.cases[plan[first].case_index].key.net;
     std::size_t last = first + 1;
     while (last < plan.size() && plan[last].repetition == plan[first].repetition &&
-           result.cases[plan[last].case_index].key.net == net)
+           (across_nets || result.cases[plan[last].case_index].key.net == net))
       ++last;
-    naming_out_of_memory(
-        "suite " + result.suite.name + ", net " + result.cases[plan[first].case_index].net_name + " side by side", [&] {
-          std::vector<std::unique_ptr<RepetitionRun>> runs;
-          for (std::size_t i = first; i < last; ++i) {
-            CaseResult& c = result.cases[plan[i].case_index];
-            runs.push_back(std::make_unique<RepetitionRun>(settings[c.key.configuration], c.key, repetition_of(plan[i]),
-                                                           nets[net], seeds[plan[i].case_index], c.ops.samples,
-                                                           options.measure));
-          }
-          run_side_by_side(runs, result.suite.interleave_steps);
-          for (std::size_t i = first; i < last; ++i) {
-            CaseResult& c = result.cases[plan[i].case_index];
-            c.repetitions.push_back(std::move(*runs[i - first]).finish());
-            report(c);
-          }
-        });
+    const std::string group = across_nets ? "repetition " + std::to_string(repetition_of(plan[first]) + 1)
+                                          : "net " + result.cases[plan[first].case_index].net_name;
+    naming_out_of_memory("suite " + result.suite.name + ", " + group + " side by side", [&] {
+      std::vector<std::unique_ptr<RepetitionRun>> runs;
+      for (std::size_t i = first; i < last; ++i) {
+        CaseResult& c = result.cases[plan[i].case_index];
+        runs.push_back(std::make_unique<RepetitionRun>(settings[c.key.configuration], c.key, repetition_of(plan[i]),
+                                                       nets[c.key.net], seeds[plan[i].case_index], c.ops.samples,
+                                                       options.measure));
+      }
+      run_side_by_side(runs, result.suite.interleave_steps);
+      for (std::size_t i = first; i < last; ++i) {
+        CaseResult& c = result.cases[plan[i].case_index];
+        c.repetitions.push_back(std::move(*runs[i - first]).finish());
+        report(c);
+      }
+    });
     first = last;
   }
 }

@@ -291,8 +291,8 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
   const Object root(r, doc, "",
                     {"name", "description", "nets", "methods", "compression", "dt", "gravity", "steps", "warmup_steps",
-                     "repetitions", "interleave_steps", "seed", "solver", "tcsb", "feedback", "fidelity", "axes",
-                     "scene"});
+                     "repetitions", "interleave_steps", "interleave_across_nets", "seed", "solver", "tcsb", "feedback",
+                     "fidelity", "axes", "scene"});
   Suite s;
   s.path = file;
   s.sha256 = sha256_hex(text);
@@ -350,6 +350,9 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   read_axis_setting(r, root, "warmup_steps", s, true);
   root.read("repetitions", s.repetitions, 1, kMaxRepetitions, true);
   root.read("interleave_steps", s.interleave_steps, 0, INT_MAX);
+  root.read("interleave_across_nets", s.interleave_across_nets);
+  if (s.interleave_across_nets && s.interleave_steps == 0)
+    r.fail("interleave_across_nets", "needs interleave_steps above 0 (the cases take turns only side by side)");
   read_axis_setting(r, root, "seed", s, true);
   parse_settings(r, root, s);
   if (const json* scene = root.find("scene")) s.scene = parse_scene(r, *scene);

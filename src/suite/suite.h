@@ -82,6 +82,11 @@ struct Suite {
   /// side, each stepping in turn one untimed step (its data back into the caches) and then k timed steps, so every
   /// case of the net meets the same moments of the machine (docs/methodology.md, "Side by side").
   int interleave_steps = 0;
+  /// With interleave_steps set: every net's cases of one repetition take turns together, not one net's at a time, so
+  /// the nets too meet the same moments of the machine and a repetition is one sample of every net. Fits across the
+  /// nets (Figure 5's line) then keep little of the drift, and the bootstrap draws a repetition for all nets at once
+  /// (paper/claim_intervals.h). Every net's bodies are alive at once.
+  bool interleave_across_nets = false;
   std::uint64_t seed = 1;
   SolverSettings solver;
   TcSettings tcsb;

@@ -81,6 +81,17 @@ std::vector<bool> shard_units(const Suite& suite, const ShardIndex& shard) {
 std::vector<bool> shard_repetitions(const Suite& suite, const ShardIndex& shard) {
   const std::vector<double> units = unit_costs(suite);
   const auto repetitions = static_cast<std::size_t>(std::max(suite.repetitions, 0));
+  if (suite.interleave_across_nets) {
+    // Every net's cases of a repetition take turns together: the repetition is what a shard takes, whole, so the
+    // nets of each repetition stay in one process as unsharded (and the bootstrap can still draw them together).
+    const double each = std::accumulate(units.begin(), units.end(), 0.0) / static_cast<double>(repetitions);
+    const std::vector<bool> mine_of_repetition = greedy_split(std::vector<double>(repetitions, each), shard);
+    std::vector<bool> mine;
+    mine.reserve(units.size() * repetitions);
+    for (std::size_t u = 0; u < units.size(); ++u)
+      mine.insert(mine.end(), mine_of_repetition.begin(), mine_of_repetition.end());
+    return mine;
+  }
   std::vector<double> cost;
   cost.reserve(units.size() * repetitions);
   for (const double unit : units)

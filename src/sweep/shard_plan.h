@@ -38,7 +38,9 @@ std::vector<bool> shard_units(const Suite& suite, const ShardIndex& shard);
 /// The split by repetition: which repetitions shard `shard` runs, indexed like Suite::run_repetitions (unit x
 /// suite.repetitions + repetition), whatever shard.split says. The same greedy rule as shard_units over (unit,
 /// repetition) pairs, a pair costing its unit's cost over the repetitions (ties: unit order, then repetition), so a
-/// net's repetitions go round the shards. Every repetition of every unit is in exactly one of the n shards.
+/// net's repetitions go round the shards. With Suite::interleave_across_nets the items are whole repetitions (every
+/// unit's repetition r in the same shard), as they run together. Every repetition of every unit is in exactly one of
+/// the n shards.
 std::vector<bool> shard_repetitions(const Suite& suite, const ShardIndex& shard);
 
 /// Restricts `suite` to what shard `shard` runs, by its split: Suite::run_units, and with the split by repetition

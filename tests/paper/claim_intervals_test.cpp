@@ -88,6 +88,30 @@ TEST(ClaimIntervals, ResampleDrawsOneSetOfRepetitionsPerNetAndCarriesTheirOperat
   EXPECT_TRUE(some_repeat);  // drawn with replacement
 }
 
+/// Over 20 resamples: whether both nets drew the same repetitions every time.
+bool nets_always_draw_alike(const RunResult& run) {
+  std::mt19937_64 rng(7);
+  for (int trial = 0; trial < 20; ++trial) {
+    const RunResult s = resample_repetitions(run, rng);
+    for (std::size_t i = 0; i < static_cast<std::size_t>(kReps); ++i)
+      if (rep_of(s.cases[0].repetitions[i].mean_step_ms) != rep_of(s.cases[2].repetitions[i].mean_step_ms))
+        return false;
+  }
+  return true;
+}
+
+TEST(ClaimIntervals, NetsSideBySideAcrossNetsDrawTheirRepetitionsTogether) {
+  RunResult run = two_nets();
+  EXPECT_FALSE(nets_always_draw_alike(run));  // each net's own draw
+  run.suite.interleave_steps = 8;
+  run.suite.interleave_across_nets = true;  // repetition r of both nets ran together: one draw for both
+  EXPECT_TRUE(nets_always_draw_alike(run));
+  // Merged from shards that measured the nets' repetitions in different processes: each net draws its own again.
+  for (RepetitionResult& r : run.cases[2].repetitions) r.process = 1;
+  for (RepetitionResult& r : run.cases[3].repetitions) r.process = 1;
+  EXPECT_FALSE(nets_always_draw_alike(run));
+}
+
 TEST(ClaimIntervals, ResampleRejectsOperationCountsThatDoNotAddUp) {
   RunResult run = two_nets();
   run.cases[1].ops.samples.pop_back();

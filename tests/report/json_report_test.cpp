@@ -170,9 +170,10 @@ TEST(NativeJson, ContextCarriesTheSuiteHashAndSeed) {
 
 TEST(NativeJson, SuiteBlock) {
   const ojson suite = testing::native_json_of(small_run())["suite"];
-  EXPECT_EQ(keys(suite), (std::vector<std::string>{"name", "description", "path", "sha256", "steps", "warmup_steps",
-                                                   "repetitions", "interleave_steps", "dt", "gravity", "solver", "tcsb",
-                                                   "feedback", "nets", "methods", "compression"}));
+  EXPECT_EQ(keys(suite),
+            (std::vector<std::string>{"name", "description", "path", "sha256", "steps", "warmup_steps", "repetitions",
+                                      "interleave_steps", "interleave_across_nets", "dt", "gravity", "solver", "tcsb",
+                                      "feedback", "nets", "methods", "compression"}));
   EXPECT_EQ(keys(suite["solver"]),
             (std::vector<std::string>{"piterations", "viterations", "diterations", "damping", "stiffness"}));
   EXPECT_EQ(keys(suite["tcsb"]),

@@ -68,9 +68,8 @@ TEST(Runner, StepsPerRepetitionCountTheUntimedStepOpeningEachBlock) {
   EXPECT_EQ(steps_per_repetition(s), 2LL * INT_MAX + 1);
 }
 
-TEST(Runner, SideBySideStepsEachCaseAsItWouldStepAlone) {
-  Suite side = two_nets();
-  side.interleave_steps = 4;
+/// Runs `side` (interleave_steps set) and checks every case steps as it would alone, extra repetitions included.
+void expect_steps_as_alone(const Suite& side) {
   RunResult run = run_suite(side, Context{});
   run_more_repetitions(run, {0, 2}, 1);  // side by side too: plain and TC-SB at 0.5 of net a
   // Alone, with as many steps in all: the same final states, so stepping beside other bodies changes nothing.
@@ -90,6 +89,19 @@ TEST(Runner, SideBySideStepsEachCaseAsItWouldStepAlone) {
     }
     EXPECT_EQ(c.ops.samples.size(), ops) << c.label;
   }
+}
+
+TEST(Runner, SideBySideStepsEachCaseAsItWouldStepAlone) {
+  Suite side = two_nets();
+  side.interleave_steps = 4;
+  expect_steps_as_alone(side);
+}
+
+TEST(Runner, SideBySideAcrossNetsStepsEachCaseAsItWouldStepAlone) {
+  Suite side = two_nets();
+  side.interleave_steps = 4;
+  side.interleave_across_nets = true;  // both nets' cases of a repetition take turns together
+  expect_steps_as_alone(side);
 }
 
 TEST(Runner, PlainEqualIsAStaticGridOfTheBudgetsNodeCount) {

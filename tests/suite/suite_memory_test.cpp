@@ -44,6 +44,24 @@ TEST(SuiteMemory, SideBySideCountsEveryCasesBody) {
   EXPECT_GT(estimate_peak_bytes(s), one_at_a_time + 2 * 129ull * 129ull * 256ull);
 }
 
+TEST(SuiteMemory, SideBySideAcrossNetsCountsEveryNetsBodiesAtOnce) {
+  Suite s;
+  s.methods = {Method::kPlain, Method::kTcsb};
+  s.compression = {1.0, 0.3};
+  NetSpec a, b;
+  a.width = a.height = 129;
+  b.width = b.height = 65;
+  s.nets = {b};
+  s.interleave_steps = 8;
+  const std::uint64_t small_alone = estimate_peak_bytes(s);
+  s.nets = {a, b};
+  const std::uint64_t one_net_at_a_time = estimate_peak_bytes(s);
+  s.interleave_across_nets = true;
+  // The 65^2 net's bodies (and its share of the recorder) come on top of the 129^2 net's.
+  EXPECT_GE(estimate_peak_bytes(s), one_net_at_a_time + small_alone - recorder_peak_bytes(s));
+  EXPECT_GT(estimate_peak_bytes(s), one_net_at_a_time);
+}
+
 TEST(SuiteMemory, ShortfallNamesTheLargestNet) {
   if (!std::ifstream("/proc/meminfo").good()) GTEST_SKIP() << "/proc/meminfo unreadable: no estimate by design";
   Suite s;

@@ -542,6 +542,13 @@ TEST(SuiteReject, OtherRanges) {
   rejected_edit([](json& j) { j["repetitions"] = 1001; }, "repetitions");
   rejected_edit([](json& j) { j["interleave_steps"] = -1; }, "interleave_steps");
   rejected_edit([](json& j) { j["interleave_steps"] = 2.5; }, "interleave_steps");
+  rejected_edit([](json& j) { j["interleave_across_nets"] = "yes"; }, "interleave_across_nets");
+  rejected_edit(
+      [](json& j) {
+        j["interleave_steps"] = 0;  // nothing takes turns, so nothing could take them across nets
+        j["interleave_across_nets"] = true;
+      },
+      "interleave_across_nets");
   rejected_edit([](json& j) { j["solver"]["piterations"] = 0; }, "solver.piterations");
   rejected_edit([](json& j) { j["solver"]["damping"] = 1.0; }, "solver.damping");
   rejected_edit([](json& j) { j["solver"]["stiffness"] = 0; }, "solver.stiffness");

@@ -141,6 +141,25 @@ TEST(ShardPlan, EveryRepetitionOfEveryNetIsInExactlyOneShard) {
   }
 }
 
+TEST(ShardPlan, AcrossNetsAShardTakesWholeRepetitionsOfEveryNet) {
+  Suite s = suite_of_widths({9, 33, 17, 65});
+  s.repetitions = 5;
+  s.interleave_steps = 8;
+  s.interleave_across_nets = true;  // a repetition's nets run together, so they must stay in one process
+  for (int n = 1; n <= 7; ++n) {
+    std::vector<int> owners(s.nets.size() * 5, 0);
+    for (int k = 1; k <= n; ++k) {
+      const std::vector<bool> mine = shard_repetitions(s, {k, n});
+      ASSERT_EQ(mine.size(), owners.size());
+      for (std::size_t i = 0; i < mine.size(); ++i) owners[i] += mine[i];
+      for (std::size_t r = 0; r < 5; ++r)
+        for (std::size_t net = 1; net < s.nets.size(); ++net)
+          EXPECT_EQ(mine[net * 5 + r], mine[r]) << "repetition " << r << ", net " << net << ", shard " << k << "/" << n;
+    }
+    EXPECT_EQ(owners, std::vector<int>(owners.size(), 1)) << n << " shards";
+  }
+}
+
 TEST(ShardPlan, RestrictingToAShardSetsItsUnitsAndRepetitions) {
   Suite s = suite_of_widths({9, 33, 17});
   s.repetitions = 2;
