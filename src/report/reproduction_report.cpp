@@ -111,7 +111,7 @@ void print_looks(const Reproduction& reproduction, std::ostream& out) {
   t.print(out);
   out << "A claim measured from repetitions passes when its whole interval satisfies it, fails when none of it does, "
          "and is undecided otherwise (percentile bootstrap of the repetitions, a net's cases drawn together so "
-         "ratios stay paired). Look k spends alpha/2^k of alpha = "
+         "ratios stay paired, every net's when they took their turns together). Look k spends alpha/2^k of alpha = "
       << general(kSequentialAlpha, 2) << " (docs/methodology.md); a claim keeps the verdict of the look that "
       << "decided it. Counts and fidelity metrics are judged on their values.\n";
   const bool any_interval = std::any_of(reproduction.claims.begin(), reproduction.claims.end(),
