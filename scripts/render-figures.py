@@ -114,10 +114,11 @@ def source_line(result):
 
 
 def step_label(fit):
-    if fit["method"] != "tcsb":
-        return fit["method"]
+    # plain_equal has one fit per budget, like TC-SB: without the budget its two lines would share a label.
     c = fit.get("compression")
-    return "tcsb NoCompression" if c == 1.0 else f"tcsb {round(100 * c)}%"
+    if c is None:
+        return fit["method"]
+    return f"{fit['method']} NoCompression" if c == 1.0 else f"{fit['method']} {round(100 * c)}%"
 
 
 def draw_fits(plt, result, png, fits, label_of, scale, xlabel, ylabel, title):

@@ -122,6 +122,9 @@ ResultView read_result(const ojson& doc, const std::string& file) {
   }
   r.context = f.object(doc, "", "context");
   r.suite = f.object(doc, "", "suite");
+  // A setting suites gained after a result was written: the run had its default, so a result from before it reads
+  // (and compares, merges) as one that records the default.
+  if (!r.suite.contains("interleave_across_nets")) r.suite["interleave_across_nets"] = false;
   r.steps = static_cast<int>(f.integer(r.suite, "suite", "steps", 1, std::numeric_limits<int>::max()));
   r.repetitions = static_cast<int>(f.integer(r.suite, "suite", "repetitions", 1, std::numeric_limits<int>::max()));
   const ojson& cases = f.array(doc, "", "cases");

@@ -56,7 +56,7 @@ struct ResultView {
   int schema_version = 0;
   std::string measure = "time";    ///< "time" or "instructions" (`measure`; absent in older files: time)
   nlohmann::ordered_json context;  ///< as recorded (an object)
-  nlohmann::ordered_json suite;    ///< as recorded (an object)
+  nlohmann::ordered_json suite;    ///< as recorded (an object), a setting added since filled in with its default
   int steps = 0;                   ///< suite.steps: timed steps per repetition
   int repetitions = 0;             ///< suite.repetitions
   std::vector<CaseView> cases;

@@ -36,6 +36,14 @@ TEST(ResultView, ReadsCasesAndRepetitions) {
   EXPECT_EQ(r.cases[1].repetitions[3].operations, 7);
 }
 
+TEST(ResultView, ASettingAddedSinceReadsAsItsDefault) {
+  ojson doc = result_doc();
+  doc["suite"].erase("interleave_across_nets");  // a result written before suites had the field
+  EXPECT_EQ(read_result(doc, "r.json").suite["interleave_across_nets"], false);
+  doc["suite"]["interleave_across_nets"] = true;
+  EXPECT_EQ(read_result(doc, "r.json").suite["interleave_across_nets"], true);
+}
+
 TEST(ResultView, PairsRatiosWithThePlainCaseOfTheSameNet) {
   const ResultView r = read_result(result_doc(), "r.json");
   EXPECT_EQ(plain_case_of(r, 1), 0u);
