@@ -266,6 +266,13 @@ void check_memory(const Suite& suite, const Reader& r) {
                         " warm-up) x " + std::to_string(expand_cases(suite).size()) + " cases x " +
                         std::to_string(suite.repetitions) + " repetitions" + budget);
   }
+  if (suite.interleave_across_nets) {
+    // The sum over the nets is too much, but one net at a time may fit: then the field is what to change.
+    Suite one_net_at_a_time = suite;
+    one_net_at_a_time.interleave_across_nets = false;
+    if (!memory_shortfall(one_net_at_a_time))
+      r.fail("interleave_across_nets", "every net's bodies alive at once" + budget);
+  }
   const NetSpec& net = suite.nets[shortfall->net];
   const std::string size = std::to_string(net.width) + " x " + std::to_string(net.height) + " = " +
                            std::to_string(net.node_count()) + " nodes";

@@ -127,18 +127,27 @@ TEST(ShardIndex, CarriesItsSplit) {
   EXPECT_STREQ(split_name(ShardSplit::kNets), "nets");
 }
 
-TEST(ShardPlan, EveryRepetitionOfEveryNetIsInExactlyOneShard) {
-  Suite s = suite_of_widths({9, 33, 17, 65});
-  s.repetitions = 3;
-  for (int n = 1; n <= 14; ++n) {
-    std::vector<int> owners(s.nets.size() * 3, 0);
+/// Splits `s` by repetition into 1..max_shards shards and checks every repetition of every net lands in exactly one;
+/// `check(shard, its repetitions)` may look at each shard's set too.
+template <class Check>
+void expect_every_repetition_once(const Suite& s, int max_shards, Check check) {
+  const std::size_t repetitions = static_cast<std::size_t>(s.repetitions);
+  for (int n = 1; n <= max_shards; ++n) {
+    std::vector<int> owners(s.nets.size() * repetitions, 0);
     for (int k = 1; k <= n; ++k) {
       const std::vector<bool> mine = shard_repetitions(s, {k, n});
       ASSERT_EQ(mine.size(), owners.size());
       for (std::size_t i = 0; i < mine.size(); ++i) owners[i] += mine[i];
+      check(ShardIndex{k, n}, mine);
     }
     EXPECT_EQ(owners, std::vector<int>(owners.size(), 1)) << n << " shards";
   }
+}
+
+TEST(ShardPlan, EveryRepetitionOfEveryNetIsInExactlyOneShard) {
+  Suite s = suite_of_widths({9, 33, 17, 65});
+  s.repetitions = 3;
+  expect_every_repetition_once(s, 14, [](const ShardIndex&, const std::vector<bool>&) {});
 }
 
 TEST(ShardPlan, AcrossNetsAShardTakesWholeRepetitionsOfEveryNet) {
@@ -146,18 +155,12 @@ TEST(ShardPlan, AcrossNetsAShardTakesWholeRepetitionsOfEveryNet) {
   s.repetitions = 5;
   s.interleave_steps = 8;
   s.interleave_across_nets = true;  // a repetition's nets run together, so they must stay in one process
-  for (int n = 1; n <= 7; ++n) {
-    std::vector<int> owners(s.nets.size() * 5, 0);
-    for (int k = 1; k <= n; ++k) {
-      const std::vector<bool> mine = shard_repetitions(s, {k, n});
-      ASSERT_EQ(mine.size(), owners.size());
-      for (std::size_t i = 0; i < mine.size(); ++i) owners[i] += mine[i];
-      for (std::size_t r = 0; r < 5; ++r)
-        for (std::size_t net = 1; net < s.nets.size(); ++net)
-          EXPECT_EQ(mine[net * 5 + r], mine[r]) << "repetition " << r << ", net " << net << ", shard " << k << "/" << n;
-    }
-    EXPECT_EQ(owners, std::vector<int>(owners.size(), 1)) << n << " shards";
-  }
+  expect_every_repetition_once(s, 7, [&](const ShardIndex& shard, const std::vector<bool>& mine) {
+    for (std::size_t r = 0; r < 5; ++r)
+      for (std::size_t net = 1; net < s.nets.size(); ++net)
+        EXPECT_EQ(mine[net * 5 + r], mine[r])
+            << "repetition " << r << ", net " << net << ", shard " << shard_text(shard);
+  });
 }
 
 TEST(ShardPlan, RestrictingToAShardSetsItsUnitsAndRepetitions) {
