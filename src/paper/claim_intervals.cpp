@@ -62,18 +62,18 @@ RunResult resample_repetitions(const RunResult& result, std::mt19937_64& rng) {
   out.cases.reserve(result.cases.size());
   // Drawn once per net (processes first, then repetitions within them), with the net's repetitions by process; or
   // once for every net when they ran side by side in the same processes.
-  const auto processes_of = [](const CaseResult& c) {
-    std::vector<int> process_of;
-    for (const RepetitionResult& r : c.repetitions) process_of.push_back(r.process);
-    return process_of;
-  };
-  const bool draw_together = result.suite.interleave_across_nets && !result.cases.empty() &&
-                             std::all_of(result.cases.begin(), result.cases.end(), [&](const CaseResult& c) {
-                               return processes_of(c) == processes_of(result.cases.front());
-                             });
-  std::map<std::size_t, std::pair<std::vector<int>, std::vector<std::size_t>>> picks_of_net;
+  std::vector<std::vector<int>> processes;  // per case, the process of each repetition
   for (const CaseResult& c : result.cases) {
-    const std::vector<int> process_of = processes_of(c);
+    std::vector<int>& process_of = processes.emplace_back();
+    for (const RepetitionResult& r : c.repetitions) process_of.push_back(r.process);
+  }
+  const bool draw_together = result.suite.interleave_across_nets && !processes.empty() &&
+                             std::all_of(processes.begin(), processes.end(),
+                                         [&](const std::vector<int>& p) { return p == processes.front(); });
+  std::map<std::size_t, std::pair<std::vector<int>, std::vector<std::size_t>>> picks_of_net;
+  for (std::size_t ci = 0; ci < result.cases.size(); ++ci) {
+    const CaseResult& c = result.cases[ci];
+    const std::vector<int>& process_of = processes[ci];
     auto [it, first] = picks_of_net.try_emplace(draw_together ? 0 : c.key.net);
     if (first) it->second = {process_of, resample_grouped(process_of, rng)};
     const std::vector<std::size_t>& picks = it->second.second;
