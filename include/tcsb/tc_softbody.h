@@ -6,7 +6,9 @@
 // The rule for btSoftBody's members. Read any of them. Between steps you may write what Bullet lets an application
 // write on any soft body: node positions, velocities and forces (m_x, m_q, m_v, m_f, or addForce/addVelocity) of
 // unpinned nodes. Everything structural belongs to TcSoftBody: the size and order of m_nodes and m_links, inverse
-// masses (m_im), link rest lengths and constants (m_rl, m_c0, m_c1), materials, the node DBVT, and the pinned nodes.
+// masses (m_im), link rest lengths and constants (m_rl, m_c0, m_c1), materials, the node DBVT, the pinned nodes, and
+// the faces (for Bullet's aerodynamic model, call enable_faces(): they follow the cut, refreshed before each step by
+// simulate_step, a TreeCutDriver's pre-tick, or refresh_faces() from a stepping loop of your own).
 // Writing those breaks the cut's invariants; validate() reports every such break, one line each, and is the check
 // to run in a debug build or a test after touching a body. Change the cut only through begin_refine/begin_coarse
 // (or a Controller), once per step boundary after advance_blends().

@@ -6,6 +6,7 @@ void TreeCutDriver::pre_tick() {
   if (controller_ && ticks_ > 0) controller_->after_step(body_);
   body_.advance_blends();
   if (controller_) controller_->before_step(body_);
+  body_.refresh_faces();  // a stock world's solver does not: the faces must follow the cut before predictMotion
   ++ticks_;
 }
 

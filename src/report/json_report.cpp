@@ -89,8 +89,8 @@ ojson suite_json(const Suite& s) {
     out["feedback"]["view_motion_scale"] = json_number(f.view_motion_scale);
     out["feedback"]["view_detail_px"] = json_number(f.view_detail_px);
   }
-  // Only in a scene with colliders or a camera, like the penetrations of its repetitions.
-  if (s.scene.has_colliders() || s.scene.camera) {
+  // Only in a scene with colliders, a camera or wind, like the penetrations of its repetitions.
+  if (s.scene.has_colliders() || s.scene.camera || s.scene.wind) {
     ojson colliders = ojson::array();
     for (const Collider& c : s.scene.colliders) colliders.push_back(collider_name(c));
     out["scene"] = {{"colliders", std::move(colliders)},
@@ -100,6 +100,13 @@ ojson suite_json(const Suite& s) {
     if (const std::optional<Camera>& c = s.scene.camera)
       out["scene"]["camera"] = {
           {"fov_deg", json_number(c->fov_deg)}, {"image", {c->width_px, c->height_px}}, {"keyframes", c->path.size()}};
+    if (const std::optional<Wind>& w = s.scene.wind)
+      out["scene"]["wind"] = {{"model", aero_model_name(w->model)},
+                              {"velocity",
+                               {json_number(w->velocity[0]), json_number(w->velocity[1]), json_number(w->velocity[2])}},
+                              {"lift", json_number(w->lift)},
+                              {"drag", json_number(w->drag)},
+                              {"air_density", json_number(w->air_density)}};
   }
   // Optional: only a suite with axes has it, so the block of a suite without stays as it always was.
   if (!s.axes.empty()) {

@@ -12,4 +12,17 @@ std::string collider_name(const Collider& collider) {
   return std::string(motion) + " " + shape;
 }
 
+const char* aero_model_name(AeroModel model) {
+  switch (model) {
+    case AeroModel::kVPoint: return "V_Point";
+    case AeroModel::kVTwoSided: return "V_TwoSided";
+    case AeroModel::kVTwoSidedLiftDrag: return "V_TwoSidedLiftDrag";
+    case AeroModel::kVOneSided: return "V_OneSided";
+    case AeroModel::kFTwoSided: return "F_TwoSided";
+    case AeroModel::kFTwoSidedLiftDrag: return "F_TwoSidedLiftDrag";
+    case AeroModel::kFOneSided: return "F_OneSided";
+  }
+  return "?";
+}
+
 }  // namespace tcsb

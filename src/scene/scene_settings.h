@@ -43,6 +43,32 @@ struct Collider {
 /// "static sphere", "dynamic box", "kinematic plane": how reports name a collider.
 std::string collider_name(const Collider& collider);
 
+/// Bullet's aerodynamic models (btSoftBody::eAeroModel), as a suite names them. The V_ models push each node by its
+/// own velocity against the wind, its normal and its area; the F_ models push each face. Both read the body's faces:
+/// a body without faces has zero node areas and normals, and the wind does nothing to it.
+enum class AeroModel {
+  kVPoint,             ///< "V_Point"
+  kVTwoSided,          ///< "V_TwoSided": the normal faces the relative wind, whichever side it comes from
+  kVTwoSidedLiftDrag,  ///< "V_TwoSidedLiftDrag": drag along the relative wind, lift across it
+  kVOneSided,          ///< "V_OneSided"
+  kFTwoSided,          ///< "F_TwoSided"
+  kFTwoSidedLiftDrag,  ///< "F_TwoSidedLiftDrag"
+  kFOneSided,          ///< "F_OneSided"
+};
+
+/// A steady wind through the scene: Bullet's aerodynamic model of btSoftBody (its Config::aeromodel, kLF, kDG and
+/// the body's wind velocity) with the world's air density. Bodies in a windy scene get faces (SceneWorld::attach).
+struct Wind {
+  AeroModel model = AeroModel::kVTwoSided;
+  std::array<double, 3> velocity{0, 0, 0};  ///< the air's velocity, m/s
+  double lift = 0.0;                        ///< kLF, lift coefficient, >= 0
+  double drag = 0.0;                        ///< kDG, drag coefficient, >= 0
+  double air_density = 1.2;                 ///< kg/m^3 (btSoftBodyWorldInfo::air_density; Bullet's default)
+};
+
+/// "V_TwoSided", ...: the suite's and Bullet's name of a model.
+const char* aero_model_name(AeroModel model);
+
 /// The scene around the nets.
 struct SceneSettings {
   std::vector<Collider> colliders;
@@ -59,6 +85,8 @@ struct SceneSettings {
   /// The spectator's camera: what the BSWDF's view terms (feedback.view) and the fidelity pass's error in pixels see
   /// through. None: no spectator, world-space errors only. It watches; it never changes the simulation.
   std::optional<Camera> camera;
+  /// Wind, or none (still air: no body has faces, and no aerodynamic force is computed).
+  std::optional<Wind> wind;
 
   /// Whether bodies live in a collision world (btSoftRigidDynamicsWorld) rather than being stepped solo.
   bool has_colliders() const { return !colliders.empty(); }

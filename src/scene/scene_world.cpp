@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "softbody/bullet_setup.h"
+#include "softbody/tc_softbody.h"
 #include "softbody/tc_softbody_solver.h"
 
 namespace tcsb {
@@ -20,6 +22,20 @@ namespace {
 
 btVector3 to_vector(const std::array<double, 3>& v) {
   return {static_cast<btScalar>(v[0]), static_cast<btScalar>(v[1]), static_cast<btScalar>(v[2])};
+}
+
+btSoftBody::eAeroModel::_ aero_model(AeroModel model) {
+  using Bullet = btSoftBody::eAeroModel;
+  switch (model) {
+    case AeroModel::kVPoint: return Bullet::V_Point;
+    case AeroModel::kVTwoSided: return Bullet::V_TwoSided;
+    case AeroModel::kVTwoSidedLiftDrag: return Bullet::V_TwoSidedLiftDrag;
+    case AeroModel::kVOneSided: return Bullet::V_OneSided;
+    case AeroModel::kFTwoSided: return Bullet::F_TwoSided;
+    case AeroModel::kFTwoSidedLiftDrag: return Bullet::F_TwoSidedLiftDrag;
+    case AeroModel::kFOneSided: return Bullet::F_OneSided;
+  }
+  return Bullet::V_Point;
 }
 
 /// A plane is built as a slab this thick under it: Bullet's soft-rigid contacts (the sparse SDF) measure distances
@@ -85,6 +101,7 @@ SceneWorld::SceneWorld(const WorldSettings& world, const SceneSettings& scene) :
     info_->m_gravity = gravity;
     info_->m_broadphase = nullptr;  // stepped solo, outside any collision world (docs/design.md, "One step")
     info_->m_dispatcher = nullptr;
+    if (scene_.wind) info_->air_density = static_cast<btScalar>(scene_.wind->air_density);
     return;
   }
   configuration_ = std::make_unique<btSoftBodyRigidBodyCollisionConfiguration>();
@@ -99,6 +116,7 @@ SceneWorld::SceneWorld(const WorldSettings& world, const SceneSettings& scene) :
   // with an info of its own would find neither (a null broadphase, and an SDF that divides by zero at first contact).
   info_ = &dynamics_->getWorldInfo();
   info_->m_gravity = gravity;
+  if (scene_.wind) info_->air_density = static_cast<btScalar>(scene_.wind->air_density);
   info_->m_sparsesdf.setDefaultVoxelsz(static_cast<btScalar>(scene_.sdf_voxel));
   info_->m_sparsesdf.Reset();  // takes the voxel size
 
@@ -155,6 +173,18 @@ SceneWorld::~SceneWorld() {
 }
 
 SceneWorld::Attachment SceneWorld::attach(btSoftBody& body) {
+  if (const std::optional<Wind>& wind = scene_.wind) {
+    body.m_cfg.aeromodel = aero_model(wind->model);
+    body.m_cfg.kLF = static_cast<btScalar>(wind->lift);
+    body.m_cfg.kDG = static_cast<btScalar>(wind->drag);
+    body.setWindVelocity(to_vector(wind->velocity));
+    // The aerodynamic model reads node areas and normals, which Bullet derives from faces: a TC-SB body keeps them
+    // over its cut, any other body gets its grid cells' (a body attached again keeps the faces it has).
+    if (auto* tc = dynamic_cast<TcSoftBody*>(&body))
+      tc->enable_faces();
+    else if (body.m_faces.size() == 0)
+      append_cell_faces(body);
+  }
   if (dynamics_) {
     body.getCollisionShape()->setMargin(static_cast<btScalar>(scene_.margin));
     body.m_cfg.kDF = static_cast<btScalar>(scene_.friction);

@@ -65,4 +65,45 @@ void append_net_links(btSoftBody& body, const Net& net) {
   body.m_bUpdateRtCst = false;
 }
 
+void append_face(btSoftBody& body, int a, int b, int c) {
+  btSoftBody::Face& face = body.m_faces.expandNonInitializing();
+  face = zeroed<btSoftBody::Face>();
+  face.m_material = body.m_materials[0];
+  face.m_n[0] = &body.m_nodes[a];
+  face.m_n[1] = &body.m_nodes[b];
+  face.m_n[2] = &body.m_nodes[c];
+}
+
+void append_cell_faces(btSoftBody& body) {
+  const int n = body.m_nodes.size();
+  const btSoftBody::Node* const base = n > 0 ? &body.m_nodes[0] : nullptr;
+  std::vector<std::vector<int>> neighbours(static_cast<std::size_t>(n));
+  for (int li = 0; li < body.m_links.size(); ++li) {
+    const auto a = static_cast<int>(body.m_links[li].m_n[0] - base);
+    const auto b = static_cast<int>(body.m_links[li].m_n[1] - base);
+    neighbours[static_cast<std::size_t>(a)].push_back(b);
+    neighbours[static_cast<std::size_t>(b)].push_back(a);
+  }
+  for (auto& list : neighbours) std::sort(list.begin(), list.end());
+  for (int i = 0; i < n; ++i) {
+    const std::vector<int>& around = neighbours[static_cast<std::size_t>(i)];
+    // The two later neighbours: on a row-major grid the next node along x, then the one along z.
+    std::vector<int> later;
+    for (const int k : around)
+      if (k > i) later.push_back(k);
+    if (later.size() < 2) continue;
+    const int a = later[0], b = later[1];
+    const std::vector<int>& na = neighbours[static_cast<std::size_t>(a)];
+    const std::vector<int>& nb = neighbours[static_cast<std::size_t>(b)];
+    int closing = -1;  // the cell's fourth node
+    for (const int k : na)
+      if (k != i && std::binary_search(nb.begin(), nb.end(), k)) closing = k;
+    if (closing < 0) continue;
+    append_face(body, i, a, closing);
+    append_face(body, i, closing, b);
+  }
+  body.updateArea();
+  body.updateNormals();
+}
+
 }  // namespace tcsb

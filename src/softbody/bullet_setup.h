@@ -44,6 +44,19 @@ void insert_node_leaves(btSoftBody& body, std::vector<std::int32_t>& order);
 /// "Link constants and the m_bUpdateRtCst trap").
 void append_net_links(btSoftBody& body, const Net& net);
 
+/// Appends a face over nodes a, b and c as btSoftBody::appendFace(a, b, c) does (a zeroed face of the default
+/// material), except that it leaves m_bUpdateRtCst alone: appendFace sets it, and the next step would then reset
+/// every link's rest length to its length at that moment. The face's area (m_ra) is the caller's to set.
+void append_face(btSoftBody& body, int a, int b, int c);
+
+/// Gives a body whose links form a grid of quads (a plain body of a net with structural links only, CreatePatch's
+/// grid, a uniform grid) the faces of its cells: for each node, the cell closed by its two later neighbours and
+/// their common neighbour, split from the node along the cell's diagonal into two triangles — on a row-major grid
+/// the cells in row-major order, each split as TcSoftBody::enable_faces() splits it on the finest cut. Then Bullet's
+/// face and node areas (updateArea, from the positions now: a body's rest shape when it is fresh) and normals. The
+/// aerodynamic model reads them; nothing else a compared body does touches faces. O(L).
+void append_cell_faces(btSoftBody& body);
+
 /// One step exactly as btSoftRigidDynamicsWorld would do it for a lone body without collisions (docs/design.md,
 /// "One step").
 inline void step_soft_body(btSoftBody& body, btScalar dt) {

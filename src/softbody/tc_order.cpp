@@ -72,6 +72,7 @@ void TcSoftBody::restore_order() {
   for (int li = 0; li < m_links.size(); ++li)
     for (Node*& end : m_links[li].m_n) end = base + position_[static_cast<std::size_t>(end - base)];
   permute_in_place(order_, m_nodes, tree_of_);
+  faces_stale_ = true;  // faces hold Node* too: rebuilt before the next step
   for (int i = 0; i < n; ++i) {
     m_nodes[i].m_leaf->data = &m_nodes[i];
     set_bullet_index(tree_of_[static_cast<std::size_t>(i)], i);

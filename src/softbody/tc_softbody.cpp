@@ -96,6 +96,7 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
 }
 
 void TcSoftBody::simulate_step(btScalar dt) {
+  refresh_faces();
   predictMotion(dt);
   solve_constraints();
   integrateMotion();
@@ -121,6 +122,7 @@ int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, Tree
                          &added, &work_.dbvt_ancestors);
   tree_of_.push_back(id);
   set_bullet_index(id, index);
+  faces_stale_ = true;
   ++displaced_;             // appended at the end, away from its neighbours
   work_.nodes += 2;         // the appended node, and the node beside whose leaf it goes
   work_.tree_records += 2;  // id's and beside's
@@ -158,6 +160,7 @@ void TcSoftBody::remove_node(TreeId id) {
   m_nodes.pop_back();
   tree_of_.pop_back();
   set_bullet_index(id, -1);
+  faces_stale_ = true;
 }
 
 void TcSoftBody::set_bullet_index(TreeId id, std::int32_t index) {

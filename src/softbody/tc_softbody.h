@@ -172,6 +172,23 @@ class TcSoftBody : public btSoftBody {
   /// configured position solvers and then projecting every interface constraint, velocities from positions, drift —
   /// so a body without interfaces steps exactly as Bullet steps it.
   void solve_constraints();
+  // ---- faces (tc_faces.cpp) ----------------------------------------------------------------------------------
+  /// Gives the body Bullet faces over its committed cut from now on: what Bullet's aerodynamic model reads (node
+  /// areas and normals), so a windy scene pushes TC-SB as it pushes a plain body (SceneWorld::attach calls it).
+  /// Every corner where three or four blocks of the cut meet becomes a triangle or a quad of two — on the finest cut
+  /// exactly a plain body's faces (bullet_setup.h, append_cell_faces), in the same order —, each with its area at
+  /// rest, and each node's area Bullet's mean of its faces' (updateArea); leaving nodes have none. Off by default:
+  /// the paper's cloth has no faces, and faces cost Bullet per-step work.
+  void enable_faces();
+  bool faces_enabled() const { return faces_enabled_; }
+  /// Rebuilds the faces if the cut or the node array changed since they were built, then Bullet's node normals. Every
+  /// step path calls it before predictMotion (simulate_step, step_body, TcSoftBodySolver); a no-op without faces.
+  /// O(N log N) at worst per rebuild (a scan of the simulated nodes, each corner's owner found by walking up the
+  /// levels); Bullet's own normal update is O(N + F) every step.
+  void refresh_faces();
+  /// Times refresh_faces() rebuilt them.
+  int face_rebuilds() const { return face_rebuilds_; }
+
   /// Receives every operation's timing (may be null).
   void set_op_sink(OpSink* sink) { sink_ = sink; }
 
@@ -256,6 +273,12 @@ class TcSoftBody : public btSoftBody {
 
   /// validate()'s checks of the interface constraints.
   void validate_interfaces(const std::function<void(const std::string&)>& fail) const;
+  /// The committed cut's faces as tree-node triples, in the order enable_faces() builds them (tc_faces.cpp).
+  void cut_faces(std::vector<std::array<TreeId, 3>>& out) const;
+  /// The committed node whose block holds leaf (x, y). O(levels).
+  TreeId committed_owner(int x, int y) const;
+  /// validate()'s checks of the faces.
+  void validate_faces(const std::function<void(const std::string&)>& fail) const;
 
   // node and link primitives, all O(1) or O(degree)
   int add_node(TreeId id, const btVector3& x, const btVector3& v, TreeId beside);
@@ -344,7 +367,12 @@ class TcSoftBody : public btSoftBody {
   /// (appendMaterial; freed with the body), made once at construction: materials cannot be freed before the body.
   std::vector<Material*> level_materials_;
   DbvtNodeCache dbvt_nodes_;  // spare nodes for the node DBVT's local edits
-  int displaced_ = 0;         // nodes and links out of order since restore_order() (see displaced())
+  bool faces_enabled_ = false;
+  bool faces_stale_ = false;  // the cut or the node array changed since the faces were built
+  int face_rebuilds_ = 0;
+  std::vector<std::array<TreeId, 3>> face_scratch_;  // cut_faces()' output, kept to reuse the room
+  std::vector<btScalar> area_scratch_;               // per Bullet node: summed face areas, then the count
+  int displaced_ = 0;  // nodes and links out of order since restore_order() (see displaced())
   int order_restorations_ = 0;
   int dbvt_rebuilds_ = 0;
   int dbvt_peak_nodes_ = 0;  // the most nodes simulated since the node DBVT was last built

@@ -4,6 +4,10 @@
 
 namespace tcsb {
 
+void prepare_body_step(btSoftBody& body) {
+  if (auto* tc = dynamic_cast<TcSoftBody*>(&body)) tc->refresh_faces();
+}
+
 void solve_body_constraints(btSoftBody& body) {
   if (auto* tc = dynamic_cast<TcSoftBody*>(&body))
     tc->solve_constraints();
@@ -12,9 +16,20 @@ void solve_body_constraints(btSoftBody& body) {
 }
 
 void step_body(btSoftBody& body, btScalar dt) {
+  prepare_body_step(body);
   body.predictMotion(dt);
   solve_body_constraints(body);
   body.integrateMotion();
+}
+
+void TcSoftBodySolver::predictMotion(btScalar solverdt) {
+  // btDefaultSoftBodySolver::predictMotion, after prepare_body_step.
+  for (int i = 0; i < m_softBodySet.size(); ++i) {
+    btSoftBody* body = m_softBodySet[i];
+    if (!body->isActive()) continue;
+    prepare_body_step(*body);
+    body->predictMotion(solverdt);
+  }
 }
 
 void TcSoftBodySolver::solveConstraints(btScalar /*solverdt*/) {

@@ -102,6 +102,7 @@ Validation TcSoftBody::validate() const {
     if (std::abs(l.m_c0 - c0) > 1e-5f * std::abs(c0)) fail(name + ": m_c0 does not match masses and blend");
   }
   validate_interfaces(fail);
+  validate_faces(fail);
   for (std::size_t id = 0; id < tree_size; ++id)
     for (std::int32_t li : incidence_[id])
       if (li < 0 || li >= static_cast<std::int32_t>(link_meta_.size()) ||

@@ -98,10 +98,10 @@ std::string calibration_key(const Suite& suite) {
   // A fit holds only in the scene it was made in. Only with colliders, so the keys of suites without a scene (and
   // the calibrations written for them) stay as they were.
   const SceneSettings& scene = suite.scene;
+  const auto triple = [](const std::array<double, 3>& v) {
+    return fmt_number(v[0]) + ' ' + fmt_number(v[1]) + ' ' + fmt_number(v[2]);
+  };
   if (scene.has_colliders()) {
-    const auto triple = [](const std::array<double, 3>& v) {
-      return fmt_number(v[0]) + ' ' + fmt_number(v[1]) + ' ' + fmt_number(v[2]);
-    };
     text << "scene " << fmt_number(scene.margin) << ' ' << fmt_number(scene.friction) << ' '
          << fmt_number(scene.sdf_voxel) << '\n';
     for (const Collider& c : scene.colliders)
@@ -109,6 +109,9 @@ std::string calibration_key(const Suite& suite) {
            << ' ' << fmt_number(c.radius) << ' ' << triple(c.half_extents) << ' ' << triple(c.normal) << ' '
            << triple(c.velocity) << ' ' << fmt_number(c.mass) << ' ' << fmt_number(c.friction) << '\n';
   }
+  if (const std::optional<Wind>& w = scene.wind)  // likewise only with wind
+    text << "wind " << aero_model_name(w->model) << ' ' << triple(w->velocity) << ' ' << fmt_number(w->lift) << ' '
+         << fmt_number(w->drag) << ' ' << fmt_number(w->air_density) << '\n';
   return sha256_hex(text.str());
 }
 

@@ -226,8 +226,30 @@ Camera parse_camera(const Reader& r, const json& j, const std::string& path) {
   return c;
 }
 
+Wind parse_wind(const Reader& r, const json& j, const std::string& path) {
+  const Object o(r, j, path, {"model", "velocity", "lift", "drag", "air_density"});
+  Wind w;
+  o.read("model", w.model,
+         {{"V_Point", AeroModel::kVPoint},
+          {"V_TwoSided", AeroModel::kVTwoSided},
+          {"V_TwoSidedLiftDrag", AeroModel::kVTwoSidedLiftDrag},
+          {"V_OneSided", AeroModel::kVOneSided},
+          {"F_TwoSided", AeroModel::kFTwoSided},
+          {"F_TwoSidedLiftDrag", AeroModel::kFTwoSidedLiftDrag},
+          {"F_OneSided", AeroModel::kFOneSided}});
+  w.velocity = r.numbers<3>(o.need("velocity"), o.at("velocity"), kAnyFinite);
+  o.read("lift", w.lift, kNonNegative);
+  o.read("drag", w.drag, kNonNegative);
+  // Bullet computes no aerodynamic force at all when both coefficients are 0 (btSoftBody::applyForces): a wind that
+  // blows nothing would look like a scene with wind.
+  if (!(w.lift > 0) && !(w.drag > 0))
+    r.fail(path, "needs \"lift\" or \"drag\" above 0 (with both 0 Bullet applies no wind)");
+  o.read("air_density", w.air_density, kPositive);
+  return w;
+}
+
 SceneSettings parse_scene(const Reader& r, const json& j) {
-  const Object o(r, j, "scene", {"colliders", "margin", "friction", "sdf_voxel", "camera"});
+  const Object o(r, j, "scene", {"colliders", "margin", "friction", "sdf_voxel", "camera", "wind"});
   SceneSettings scene;
   if (const json* colliders = o.find("colliders")) {
     r.array(*colliders, o.at("colliders"), EmptyArray::kAllowed);
@@ -244,6 +266,7 @@ SceneSettings parse_scene(const Reader& r, const json& j) {
   // A voxel below a millimetre would make the SDF's cells (and their memory, clamped by Bullet) explode for nothing.
   o.read("sdf_voxel", scene.sdf_voxel, NumberRange{0.001, false, 10.0, false});
   if (const json* camera = o.find("camera")) scene.camera = parse_camera(r, *camera, o.at("camera"));
+  if (const json* wind = o.find("wind")) scene.wind = parse_wind(r, *wind, o.at("wind"));
   return scene;
 }
 
@@ -394,6 +417,14 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
                                            (n.shear_links ? "shear" : "bend") + " links" + why);
     }
   }
+  // A windy scene gives every body the faces of its grid cells (SceneWorld::attach), found from its structural links.
+  if (s.scene.wind)
+    for (std::size_t k = 0; k < s.nets.size(); ++k)
+      if (s.nets[k].shear_links || s.nets[k].bend_links)
+        r.fail("scene.wind",
+               "needs nets of structural links only (their cells become the faces the wind pushes); net \"" +
+                   s.nets[k].name + "\" (nets[" + std::to_string(k) + "]) has " +
+                   (s.nets[k].shear_links ? "shear" : "bend") + " links");
   // The fidelity pass compares TC-SB (and the ablations at TC-SB's targets) with the reference: without TC-SB there
   // is nothing to measure, and silently measuring nothing would look like a pass.
   if (s.fidelity.enabled && !has_tcsb) r.fail("fidelity.enabled", "requires methods to contain \"tcsb\"");

@@ -178,6 +178,21 @@ TEST(ShippedSuites, SceneSuitesRunEveryMethodAroundOneSphereWithContactAsAFeatur
   EXPECT_FALSE(parse_suite(kSourceDir / "suites/ci.json").scene.has_colliders());
 }
 
+TEST(ShippedSuites, TheFlagRunsEveryMethodInTheWindWithoutACollider) {
+  const Suite s = parse_suite(kSourceDir / "suites/flag.json");
+  EXPECT_EQ(s.methods, (std::vector<Method>{Method::kPlain, Method::kTcsb, Method::kPlainEqual}));
+  EXPECT_EQ(s.compression, (std::vector<double>{1.0, 0.75, 0.3}));
+  EXPECT_FALSE(s.scene.has_colliders());
+  ASSERT_TRUE(s.scene.wind);
+  EXPECT_GT(s.scene.wind->drag, 0.0);
+  for (const NetSpec& n : s.nets) EXPECT_EQ(n.pinned_corners, unsigned{kCornerMinMin | kCornerMaxMin});
+  EXPECT_TRUE(s.fidelity.ablations);
+  EXPECT_EQ(s.tcsb.interfaces, Interfaces::kHanging);
+  // No scene suite before it has wind: their bodies have no faces, as always.
+  for (const char* name : {"paper", "ci", "drape", "ball", "converged"})
+    EXPECT_FALSE(parse_suite(kSourceDir / "suites" / (std::string(name) + ".json")).scene.wind) << name;
+}
+
 // ---- defaults and accepted forms ------------------------------------------------------------------------------
 
 const char* kMinimal = R"({
@@ -421,6 +436,45 @@ TEST(SuiteReject, SceneFields) {
   for (int i = 0; i < 65; ++i) many.push_back({{"shape", "sphere"}});
   rejected_edit([&](json& j) { j["scene"] = {{"colliders", many}}; }, "scene.colliders");
   rejected_edit([](json& j) { j["feedback"] = {{"contact_saliency", 2}}; }, "feedback.contact_saliency");
+}
+
+TEST(SuiteParse, Wind) {
+  json j = minimal();
+  EXPECT_FALSE(parse_suite_text(j.dump(), "plain.json").scene.wind);  // no wind: still air, no faces
+  j["scene"] = json::parse(R"({"wind": {"model": "V_TwoSidedLiftDrag", "velocity": [6, 0, 1], "lift": 0.2,
+                                        "drag": 0.8, "air_density": 1.0}})");
+  const Suite s = parse_suite_text(j.dump(), "wind.json");
+  ASSERT_TRUE(s.scene.wind);
+  EXPECT_FALSE(s.scene.has_colliders()) << "wind alone: the bodies still step solo";
+  EXPECT_EQ(s.scene.wind->model, AeroModel::kVTwoSidedLiftDrag);
+  EXPECT_EQ(std::string(aero_model_name(s.scene.wind->model)), "V_TwoSidedLiftDrag");
+  EXPECT_DOUBLE_EQ(s.scene.wind->velocity[0], 6.0);
+  EXPECT_DOUBLE_EQ(s.scene.wind->lift, 0.2);
+  EXPECT_DOUBLE_EQ(s.scene.wind->drag, 0.8);
+  EXPECT_DOUBLE_EQ(s.scene.wind->air_density, 1.0);
+  j["scene"] = json::parse(R"({"wind": {"velocity": [1, 0, 0], "drag": 1}})");
+  const Suite defaults = parse_suite_text(j.dump(), "wind.json");
+  EXPECT_EQ(defaults.scene.wind->model, AeroModel::kVTwoSided);
+  EXPECT_DOUBLE_EQ(defaults.scene.wind->lift, 0.0);
+  EXPECT_DOUBLE_EQ(defaults.scene.wind->air_density, 1.2);  // Bullet's
+}
+
+TEST(SuiteReject, WindFields) {
+  const auto wind = [](const char* text) { return [text](json& j) { j["scene"] = {{"wind", json::parse(text)}}; }; };
+  rejected_edit(wind(R"({"velocity": [1, 0, 0], "drag": 1, "gust": 2})"), "scene.wind.gust");
+  rejected_edit(wind(R"({"drag": 1})"), "scene.wind.velocity");
+  rejected_edit(wind(R"({"velocity": [1, 0], "drag": 1})"), "scene.wind.velocity");
+  rejected_edit(wind(R"({"velocity": [1, 0, 0], "drag": 1, "model": "V_Sail"})"), "scene.wind.model");
+  rejected_edit(wind(R"({"velocity": [1, 0, 0], "drag": -1})"), "scene.wind.drag");
+  rejected_edit(wind(R"({"velocity": [1, 0, 0], "lift": -0.5, "drag": 1})"), "scene.wind.lift");
+  rejected_edit(wind(R"({"velocity": [1, 0, 0]})"), "scene.wind");  // neither lift nor drag: no force at all
+  rejected_edit(wind(R"({"velocity": [1, 0, 0], "drag": 1, "air_density": 0})"), "scene.wind.air_density");
+  rejected_edit(
+      [](json& j) {
+        j["scene"] = {{"wind", {{"velocity", {1, 0, 0}}, {"drag", 1}}}};
+        j["nets"][0]["shear"] = true;
+      },
+      "scene.wind");
 }
 
 TEST(SuiteParse, CameraAndViewTerms) {
