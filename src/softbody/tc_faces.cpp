@@ -27,19 +27,23 @@ btScalar rest_turn(const btVector3& a, const btVector3& b, const btVector3& c) {
 
 }  // namespace
 
-TreeId TcSoftBody::committed_owner(int x, int y) const {
-  const LodTree& lod = tree();
-  for (int level = 0; level < lod.level_count(); ++level) {
-    const TreeId id = lod.at(level, x >> level, y >> level);
-    if (id != kNoTreeNode && committed(id)) return id;
-  }
-  return kNoTreeNode;  // a broken cut: validate() says so elsewhere
-}
-
-void TcSoftBody::cut_faces(std::vector<std::array<TreeId, 3>>& out) const {
+void TcSoftBody::cut_faces(std::vector<std::array<TreeId, 3>>& out, std::vector<TreeId>& owner) const {
   out.clear();
   const LodTree& lod = tree();
   const int width = lod.level_width(0), height = lod.level_height(0);
+  // Which committed block holds each leaf: every block writes its own rectangle, one write per leaf in all. Walking
+  // up the levels from each corner's cells instead reads only the cut's corners, but cost 3.3 times the instructions
+  // (callgrind, 40 steps of suites/flag.json's 65^2 net at 30 %: 18.0 M against 5.5 M).
+  owner.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), kNoTreeNode);
+  for (const TreeId id : tree_of_) {
+    if (!committed(id)) continue;
+    const LodNode& node = lod.node(id);
+    for (int y = node.leaf_y0; y < node.leaf_y1; ++y) {
+      const auto row = owner.begin() + static_cast<std::ptrdiff_t>(y) * width;
+      std::fill(row + node.leaf_x0, row + node.leaf_x1, id);
+    }
+  }
+  const auto owner_of = [&](int x, int y) { return owner[static_cast<std::size_t>(y) * width + x]; };
   // In Bullet's node order, each committed node emits the corners it is the first block around (in the ring order
   // below) to have as a corner of its own: every corner once, and on the finest cut each node the cell up and right
   // of it, in row-major order, as a plain body's faces go.
@@ -50,8 +54,8 @@ void TcSoftBody::cut_faces(std::vector<std::array<TreeId, 3>>& out) const {
       for (const int cx : {node.leaf_x0, node.leaf_x1}) {
         if (cx <= 0 || cy <= 0 || cx >= width || cy >= height) continue;  // the net's border: no cell beyond
         // Counter-clockwise around the corner in grid order: (-x,-y), (+x,-y), (+x,+y), (-x,+y).
-        const std::array<TreeId, 4> around{committed_owner(cx - 1, cy - 1), committed_owner(cx, cy - 1),
-                                           committed_owner(cx, cy), committed_owner(cx - 1, cy)};
+        const std::array<TreeId, 4> around{owner_of(cx - 1, cy - 1), owner_of(cx, cy - 1), owner_of(cx, cy),
+                                           owner_of(cx - 1, cy)};
         if (std::find(around.begin(), around.end(), kNoTreeNode) != around.end()) continue;
         const auto first =
             std::find_if(around.begin(), around.end(), [&](TreeId t) { return has_corner(lod.node(t), cx, cy); });
@@ -92,7 +96,7 @@ void TcSoftBody::refresh_faces() {
   if (!faces_enabled_ || !faces_stale_) return;
   faces_stale_ = false;
   ++face_rebuilds_;
-  cut_faces(face_scratch_);
+  cut_faces(face_scratch_, owner_scratch_);
   m_faces.resize(0);
   Node* const base = &m_nodes[0];
   for (const auto& f : face_scratch_) append_face(*this, bullet_index(f[0]), bullet_index(f[1]), bullet_index(f[2]));
@@ -127,7 +131,8 @@ void TcSoftBody::validate_faces(const std::function<void(const std::string&)>& f
   }
   if (faces_stale_) return;  // rebuilt before the next step: checked then
   std::vector<std::array<TreeId, 3>> expected;
-  cut_faces(expected);
+  std::vector<TreeId> owner;
+  cut_faces(expected, owner);
   if (static_cast<std::size_t>(m_faces.size()) != expected.size()) {
     fail(std::to_string(m_faces.size()) + " faces where the committed cut has " + std::to_string(expected.size()));
     return;

@@ -183,8 +183,8 @@ class TcSoftBody : public btSoftBody {
   bool faces_enabled() const { return faces_enabled_; }
   /// Rebuilds the faces if the cut or the node array changed since they were built, then Bullet's node normals. Every
   /// step path calls it before predictMotion (simulate_step, step_body, TcSoftBodySolver); a no-op without faces.
-  /// O(N log N) at worst per rebuild (a scan of the simulated nodes, each corner's owner found by walking up the
-  /// levels); Bullet's own normal update is O(N + F) every step.
+  /// O(N + leaves) per rebuild (each committed block marks its leaves, then each node's corners are read);
+  /// Bullet's own normal update is O(N + F) every step.
   void refresh_faces();
   /// Times refresh_faces() rebuilt them.
   int face_rebuilds() const { return face_rebuilds_; }
@@ -273,10 +273,9 @@ class TcSoftBody : public btSoftBody {
 
   /// validate()'s checks of the interface constraints.
   void validate_interfaces(const std::function<void(const std::string&)>& fail) const;
-  /// The committed cut's faces as tree-node triples, in the order enable_faces() builds them (tc_faces.cpp).
-  void cut_faces(std::vector<std::array<TreeId, 3>>& out) const;
-  /// The committed node whose block holds leaf (x, y). O(levels).
-  TreeId committed_owner(int x, int y) const;
+  /// The committed cut's faces as tree-node triples, in the order enable_faces() builds them (tc_faces.cpp);
+  /// `owner` is scratch (one entry per leaf).
+  void cut_faces(std::vector<std::array<TreeId, 3>>& out, std::vector<TreeId>& owner) const;
   /// validate()'s checks of the faces.
   void validate_faces(const std::function<void(const std::string&)>& fail) const;
 
@@ -372,6 +371,7 @@ class TcSoftBody : public btSoftBody {
   int face_rebuilds_ = 0;
   std::vector<std::array<TreeId, 3>> face_scratch_;  // cut_faces()' output, kept to reuse the room
   std::vector<btScalar> area_scratch_;               // per Bullet node: summed face areas, then the count
+  std::vector<TreeId> owner_scratch_;                // per leaf: the committed node whose block holds it
   int displaced_ = 0;  // nodes and links out of order since restore_order() (see displaced())
   int order_restorations_ = 0;
   int dbvt_rebuilds_ = 0;
