@@ -85,6 +85,19 @@ TEST(ResultSchema, ARunWithAxesConforms) {
   EXPECT_EQ(problems(doc).size(), 3u) << ::testing::PrintToString(problems(doc));
 }
 
+TEST(ResultSchema, AScenesSettingsConform) {
+  RunResult r = run_with_cases();
+  r.suite.scene.colliders.push_back(Collider{});
+  r.suite.scene.camera = Camera{};
+  r.suite.scene.wind = Wind{AeroModel::kVTwoSidedLiftDrag, {0, 0, 6}, 0.2, 0.5, 1.2};
+  const ojson doc = testing::native_json_of(r);
+  EXPECT_EQ(doc["suite"]["scene"]["wind"]["model"], "V_TwoSidedLiftDrag");
+  EXPECT_EQ(problems(doc), Lines{});
+  ojson broken = doc;
+  broken["suite"]["scene"]["wind"]["model"] = "V_Sail";
+  EXPECT_FALSE(problems(broken).empty());
+}
+
 TEST(ResultSchema, OptionalSectionsOfOtherCommandsConform) {
   ojson doc = testing::native_json_of(run_with_cases());
   doc["reproduction"] = {{"pass", true}};
