@@ -75,8 +75,9 @@ double level_error(const Suite& suite, const std::shared_ptr<const Net>& net, co
   SceneWorld world(suite.world, suite.scene);
   TcSettings tc = suite.tcsb;
   tc.level_stiffness = stiffness;
+  tc.start_level = 0;  // the whole `level` cut below, whatever cut the suite's bodies start at
   TcSoftBody body(world.info(), net, suite.solver, tc);
-  coarsen_to_level(body, level);
+  body.coarsen_to_level(level);
   const SceneWorld::Attachment attachment = world.attach(body);
   return mean_rms(suite, *net, world, body, reference,
                   [&](std::vector<Eigen::Vector3d>& out) { reconstruct_leaves(body, out); });
@@ -160,26 +161,6 @@ std::vector<StiffnessFit> evaluate_calibration(const Calibration& calibration, c
     out.push_back(f);
   }
   return out;
-}
-
-int coarsen_to_level(TcSoftBody& body, int level) {
-  const LodTree& tree = body.tree();
-  for (int l = 1; l <= level && l < tree.level_count(); ++l) {
-    for (bool began = true; began;) {
-      began = false;
-      for (int gy = 0; gy < tree.level_height(l); ++gy)
-        for (int gx = 0; gx < tree.level_width(l); ++gx) {
-          const TreeId id = tree.at(l, gx, gy);
-          if (body.can_coarsen(id).ok) {
-            body.begin_coarse(id);
-            began = true;
-          }
-        }
-      // No simulated time passes: the blends only move the link constants to their end.
-      while (body.interpolations() > 0) body.advance_blends();
-    }
-  }
-  return body.committed_count();
 }
 
 int calibrated_level_count(const std::vector<std::shared_ptr<const Net>>& nets, int max_levels) {

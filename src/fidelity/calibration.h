@@ -44,11 +44,6 @@ Calibration calibrate_suite(const Suite& suite, const std::vector<std::shared_pt
 std::vector<StiffnessFit> evaluate_calibration(const Calibration& calibration, const Suite& suite,
                                                const std::vector<std::shared_ptr<const Net>>& nets);
 
-/// Coarsens `body` (at rest, before its first step) until every block that can be is at `level`: level by level,
-/// rounds of begin_coarse on every node can_coarsen allows, each round's blends run to their end. Returns the
-/// committed node count.
-int coarsen_to_level(TcSoftBody& body, int level);
-
 /// calibrated_level_count (suite/calibration_file.h) of the built nets' specs.
 int calibrated_level_count(const std::vector<std::shared_ptr<const Net>>& nets, int max_levels);
 

@@ -191,7 +191,7 @@ void TcSoftBody::begin_refine(TreeId p) {
         });
     add_link(p, c, LinkRole::kTether, op);
   }
-  emit(OpKind::kRefine, t1 - t0, op_clock() - t1);
+  emit(OpKind::kRefine, p, t1 - t0, op_clock() - t1);
 }
 
 void TcSoftBody::begin_coarse(TreeId p) {
@@ -246,7 +246,27 @@ void TcSoftBody::begin_coarse(TreeId p) {
       tree(), p, [this](TreeId n) { return probe_committed(n); },
       [&](TreeId n) { add_link(p, n, LinkRole::kFadeIn, op); });
   for (int i = 0; i < pn.child_count; ++i) add_link(p, pn.children[static_cast<std::size_t>(i)], LinkRole::kTether, op);
-  emit(OpKind::kCoarse, t1 - t0, op_clock() - t1);
+  emit(OpKind::kCoarse, p, t1 - t0, op_clock() - t1);
+}
+
+int TcSoftBody::coarsen_to_level(int level) {
+  const LodTree& lod = tree();
+  for (int l = 1; l <= level && l < lod.level_count(); ++l) {
+    for (bool began = true; began;) {
+      began = false;
+      for (int gy = 0; gy < lod.level_height(l); ++gy)
+        for (int gx = 0; gx < lod.level_width(l); ++gx) {
+          const TreeId id = lod.at(l, gx, gy);
+          if (can_coarsen(id).ok) {
+            begin_coarse(id);
+            began = true;
+          }
+        }
+      // No simulated time passes: the blends only move the link constants to their end.
+      while (interpolations() > 0) advance_blends();
+    }
+  }
+  return committed_count();
 }
 
 // ---- blending and end operations -----------------------------------------------------------------------------
@@ -324,7 +344,7 @@ void TcSoftBody::end_refine(const Op& op) {
 
   for (int i = 0; i < pn.child_count; ++i) refresh_incident_constants(pn.children[static_cast<std::size_t>(i)]);
   const std::int64_t t3 = op_clock();
-  emit(OpKind::kEndRefine, t2 - t1, (t1 - t0) + (t3 - t2));
+  emit(OpKind::kEndRefine, p, t2 - t1, (t1 - t0) + (t3 - t2));
 }
 
 void TcSoftBody::end_coarse(const Op& op) {
@@ -359,7 +379,7 @@ void TcSoftBody::end_coarse(const Op& op) {
 
   refresh_incident_constants(p);
   const std::int64_t t3 = op_clock();
-  emit(OpKind::kEndCoarse, t2 - t1, (t1 - t0) + (t3 - t2));
+  emit(OpKind::kEndCoarse, p, t2 - t1, (t1 - t0) + (t3 - t2));
 }
 
 void TcSoftBody::make_faded_in_links_steady(TreeId id) {
@@ -388,7 +408,8 @@ void TcSoftBody::retire_from_cut(TreeId id) {
 
 std::int64_t TcSoftBody::op_clock() const { return sink_ != nullptr ? now_ns() : 0; }
 
-void TcSoftBody::emit(OpKind kind, std::int64_t node_ns, std::int64_t link_ns) {
+void TcSoftBody::emit(OpKind kind, TreeId block, std::int64_t node_ns, std::int64_t link_ns) {
+  if (listener_ != nullptr) listener_->cut_changed(kind, block);
   if (sink_ == nullptr) return;
   sink_->record({kind, static_cast<std::int32_t>(node_ns), static_cast<std::int32_t>(link_ns), m_nodes.size(),
                  m_links.size(), work_});

@@ -102,6 +102,7 @@ void TcSoftBody::restore_order() {
   for (const TreeId id : tree_of_) incidence_[static_cast<std::size_t>(id)].renumber(position_);
   displaced_ = 0;
   ++order_restorations_;
+  if (listener_ != nullptr) listener_->arrays_reordered();
 }
 
 void TcSoftBody::rebuild_node_dbvt() {

@@ -20,6 +20,10 @@ enum class Interfaces {
 /// Settings of the TreeCut soft body's operations.
 struct TcSettings {
   int blend_steps = 5;  ///< K: steps over which leaving links fade out and arriving links fade in
+  /// The cut a body starts at: 0, the finest (every grid node, identical to a plain body), or the LOD level whose
+  /// blocks the whole cloth starts as, where they may be simulated (TcSoftBody::coarsen_to_level). A body under a
+  /// budget otherwise spends its first steps coarsening: 55 steps to reach 30 % on a 65^2 net, 150 on 129^2.
+  int start_level = 0;
   Placement placement = Placement::kAffine;
   /// kLinks keeps Bullet's own solve, bit for bit the paper's method; kHanging solves the body's constraints in
   /// TcSoftBody::solve_constraints (Bullet's solvers in Bullet's sequence, then the interface constraints, every

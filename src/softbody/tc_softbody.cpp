@@ -28,6 +28,7 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
                        const TcSettings& settings)
     : btSoftBody(&world, 0, nullptr, nullptr), net_(std::move(net)), settings_(settings) {
   if (settings_.blend_steps < 1) throw std::invalid_argument("TcSoftBody: blend_steps must be >= 1");
+  if (settings_.start_level < 0) throw std::invalid_argument("TcSoftBody: start_level must be >= 0");
   for (const NetLink& l : net_->links())
     if (l.kind != LinkKind::kStructural)
       throw std::invalid_argument("TcSoftBody: only structural links are supported (no shear or bend links)");
@@ -93,6 +94,14 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
   touch_reserved(m_links, zeroed<Link>());
   touch_reserved(tree_of_, kNoTreeNode);
   touch_reserved(link_meta_, CutLink{});
+
+  if (settings_.start_level > 0) {
+    coarsen_to_level(settings_.start_level);
+    // Then as a plain body of the coarse cut's size starts: its arrays in order and its node DBVT compact, rather
+    // than what the coarsening's swaps and insertions left (the same passes advance_blends() runs on a large body).
+    if (settings_.restore_order) restore_order();
+    if (settings_.rebuild_dbvt) rebuild_node_dbvt();
+  }
 }
 
 void TcSoftBody::simulate_step(btScalar dt) {

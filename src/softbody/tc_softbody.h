@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "net/net.h"
+#include "softbody/cut_listener.h"
 #include "softbody/dbvt_local.h"
 #include "softbody/incidence_list.h"
 #include "softbody/op_sample.h"
@@ -102,7 +103,8 @@ struct Validation {
 
 class TcSoftBody : public btSoftBody {
  public:
-  /// Builds the body at the finest cut (every grid node simulated), identical to the plain baseline. `world` is the
+  /// Builds the body at the finest cut (every grid node simulated), identical to the plain baseline, then, when
+  /// settings.start_level > 0, coarsens it to that level (coarsen_to_level). `world` is the
   /// info of the world the body will live in — btSoftRigidDynamicsWorld::getWorldInfo() for a body in a collision
   /// world, or an info of its own for a body stepped solo —, and must outlive the body.
   TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> net, const SolverSettings& solver,
@@ -155,6 +157,12 @@ class TcSoftBody : public btSoftBody {
   void begin_refine(TreeId id);
   /// Begins replacing the children of `parent` by `parent`. Requires can_coarsen(parent).ok. O(1).
   void begin_coarse(TreeId parent);
+  /// Coarsens the body at once, before its first step, until every block that may be simulated is at `level`
+  /// (levels past the tree's coarsest are the coarsest): level by level, rounds of begin_coarse on every node
+  /// can_coarsen allows, each round's blends run to their end with no simulated time passing, so only the link
+  /// constants move. What a body that starts coarse (TcSettings::start_level) and calibration's whole-level cuts
+  /// use. Returns the committed node count. O(T) per level, T the tree's size.
+  int coarsen_to_level(int level);
   /// Advances every blending operation by one step; ends those whose K steps are done. Call once per step boundary,
   /// before beginning new operations. O(interpolations); when TcSettings::restore_order is on and operations have
   /// displaced more than TcSettings::kReorderFraction of the arrays' elements, it then restores their order
@@ -191,6 +199,9 @@ class TcSoftBody : public btSoftBody {
 
   /// Receives every operation's timing (may be null).
   void set_op_sink(OpSink* sink) { sink_ = sink; }
+  /// Told of every change to the cut right after it is made, and of every reordering of Bullet's arrays (may be
+  /// null; cut_listener.h).
+  void set_cut_listener(CutListener* listener) { listener_ = listener; }
 
   // ---- array order (tc_order.cpp) ----------------------------------------------------------------------------
   /// Puts Bullet's node array back into the row-major order of the nodes' blocks on the net, and its link array
@@ -340,7 +351,8 @@ class TcSoftBody : public btSoftBody {
   }
   /// Now, in nanoseconds, for an operation's sample; 0 without a sink: nobody collects, so nothing reads the clock.
   std::int64_t op_clock() const;
-  void emit(OpKind kind, std::int64_t node_ns, std::int64_t link_ns);
+  /// Hands an operation's sample to the sink and the change to the cut listener, whichever are set.
+  void emit(OpKind kind, TreeId block, std::int64_t node_ns, std::int64_t link_ns);
   btVector3 place_child(TreeId parent, TreeId child, const btVector3& parent_x,
                         const Eigen::Matrix<double, 3, 2>& deformation) const;
 
@@ -385,6 +397,7 @@ class TcSoftBody : public btSoftBody {
   int committed_count_ = 0;
   int link_reallocations_ = 0;
   OpSink* sink_ = nullptr;
+  CutListener* listener_ = nullptr;
   /// The running operation's work (OpWork's definitions): zeroed when an operation starts, emitted when it ends.
   /// Primitives count into it whenever they run; between operations (the blend ramp) nothing reads it.
   OpWork work_;

@@ -80,10 +80,10 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
 
   if (const json* j = root.find("tcsb")) {
     const Object tc(r, *j, "tcsb",
-                    {"blend_steps", "placement", "interfaces", "restore_order", "restore_order_min_nodes",
-                     "rebuild_dbvt"});
-    for (const char* key :
-         {"blend_steps", "placement", "interfaces", "restore_order", "restore_order_min_nodes", "rebuild_dbvt"})
+                    {"blend_steps", "start_level", "placement", "interfaces", "restore_order",
+                     "restore_order_min_nodes", "rebuild_dbvt"});
+    for (const char* key : {"blend_steps", "start_level", "placement", "interfaces", "restore_order",
+                            "restore_order_min_nodes", "rebuild_dbvt"})
       read_axis_setting(r, tc, key, s);
   }
 

@@ -38,6 +38,8 @@ const AxisSetting kAxisSettings[] = {
                             Suite& s) { s.solver.linear_stiffness = r.number(v, at, kFraction); }},
     {"tcsb.blend_steps", [](const Reader& r, const json& v, const std::string& at,
                             Suite& s) { s.tcsb.blend_steps = whole(r, v, at, 1, 1000); }},
+    {"tcsb.start_level", [](const Reader& r, const json& v, const std::string& at,
+                            Suite& s) { s.tcsb.start_level = whole(r, v, at, 0, 30); }},
     {"tcsb.placement",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) {
        s.tcsb.placement = r.choice<Placement>(v, at, {{"affine", Placement::kAffine}, {"rigid", Placement::kRigid}});

@@ -113,11 +113,11 @@ TEST(Calibration, CoarsenToLevelMakesTheWholeCutThatLevel) {
   const auto net = std::make_shared<const Net>(spec);
   SceneWorld world({});
   TcSoftBody body(world.info(), net, SolverSettings{}, TcSettings{});
-  EXPECT_EQ(coarsen_to_level(body, 1), 9 * 9);
+  EXPECT_EQ(body.coarsen_to_level(1), 9 * 9);
   EXPECT_EQ(body.interpolations(), 0);
   EXPECT_EQ(body.node_count(), 9 * 9);
   EXPECT_TRUE(body.validate().ok()) << body.validate().summary();
-  EXPECT_EQ(coarsen_to_level(body, 2), 5 * 5);
+  EXPECT_EQ(body.coarsen_to_level(2), 5 * 5);
 }
 
 TEST(Calibration, TheFitNeverDoesWorseThanTheSolversStiffnessAndASuiteUsesIt) {

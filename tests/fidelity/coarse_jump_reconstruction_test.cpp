@@ -30,7 +30,7 @@ TEST(CoarseJump, IsTheJumpTheReconstructionMakesWhenTheCoarsenBegins) {
     const auto net = std::make_shared<const Net>(spec);
     SceneWorld world{WorldSettings{}};
     TcSoftBody body(world.info(), net, SolverSettings{}, TcSettings{});
-    coarsen_to_level(body, level - 1);
+    body.coarsen_to_level(level - 1);
     for (int i = 0; i < body.node_count(); ++i) {  // a saddle, tilted
       const Eigen::Vector3d r = body.tree().rest(body.tree_id(i));
       if (body.tree().node(body.tree_id(i)).pinned()) continue;  // pinned nodes stay at rest

@@ -119,7 +119,7 @@ TEST(SurfaceMorph, SpreadsTheNeighboursJumpsAndTheEndsToo) {
   // again when it ends (their links to the children go), and the parent's own fit when its tethers go: raw, those
   // jump at once; the morph spreads them as it spreads the block's own jump.
   SaddleBody s;
-  coarsen_to_level(s.body, 1);
+  s.body.coarsen_to_level(1);
   SurfaceMorph morph;
   std::vector<Eigen::Vector3d> shown_before, shown, raw_before, raw;
   morph.reconstruct(s.body, shown_before);

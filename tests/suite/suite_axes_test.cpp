@@ -188,7 +188,7 @@ TEST(SuiteAxes, TheFidelityPassIsNotCombinedWithAxes) {
 TEST(SuiteAxes, EverySettingThatCanBeAnAxisIsReadThroughTheAxisTable) {
   // Each axis-able path is a real setting whose reader accepts a valid value.
   const std::vector<std::string> paths = axis_setting_paths();
-  EXPECT_EQ(paths.size(), 29u);
+  EXPECT_EQ(paths.size(), 30u);
   for (const std::string& path : paths) {
     json value;
     if (path == "tcsb.placement")

@@ -233,10 +233,11 @@ TEST(SuiteParse, PinnedMassAndSettingForms) {
   j["nets"][0]["mass"] = {{"per_node", 0.01}};
   j["methods"] = {"tcsb", "plain"};
   j["compression"] = {0.5, 1};  // integer-typed numbers are fine where reals are expected
-  j["tcsb"] = {{"placement", "rigid"}, {"blend_steps", 3}};
+  j["tcsb"] = {{"placement", "rigid"}, {"blend_steps", 3}, {"start_level", 2}};
   j["feedback"] = {{"policy", "random"}, {"light_direction", {1, 1, 0}}, {"threads", 4}};
   j["seed"] = 18446744073709551615ull;
   const Suite s = parse_suite_text(j.dump(), "forms.json");
+  EXPECT_EQ(s.tcsb.start_level, 2);
   EXPECT_EQ(s.nets[0].pinned_corners, unsigned{kCornerMinMin | kCornerMaxMax});
   EXPECT_EQ(s.nets[0].mass_mode, MassMode::kPerNode);
   EXPECT_DOUBLE_EQ(s.nets[0].mass, 0.01);
@@ -607,6 +608,8 @@ TEST(SuiteReject, OtherRanges) {
   rejected_edit([](json& j) { j["solver"]["damping"] = 1.0; }, "solver.damping");
   rejected_edit([](json& j) { j["solver"]["stiffness"] = 0; }, "solver.stiffness");
   rejected_edit([](json& j) { j["tcsb"] = {{"blend_steps", 0}}; }, "tcsb.blend_steps");
+  rejected_edit([](json& j) { j["tcsb"] = {{"start_level", -1}}; }, "tcsb.start_level");
+  rejected_edit([](json& j) { j["tcsb"] = {{"start_level", "coarse"}}; }, "tcsb.start_level");
   rejected_edit([](json& j) { j["tcsb"] = {{"placement", "bilinear"}}; }, "tcsb.placement");
   rejected_edit([](json& j) { j["feedback"] = {{"policy", "salience"}}; }, "feedback.policy");
   rejected_edit([](json& j) { j["feedback"] = {{"threshold", -0.1}}; }, "feedback.threshold");
