@@ -17,13 +17,20 @@ std::optional<double> measured(const Summary& s, double v) {
   return s.count > 0 ? std::optional<double>(v) : std::nullopt;
 }
 
-/// A case's penetrations over its repetitions: the most node-steps any repetition had, and the deepest node.
-Penetrations worst_penetrations(const CaseResult& c) {
-  Penetrations worst;
+/// A case's penetrations over its repetitions: the most node-steps any repetition had, the deepest node, and the
+/// most contacts per step.
+struct WorstContact {
+  std::int64_t node_steps = 0;
+  double deepest_pct = 0;
+  double mean_contacts = 0;
+};
+WorstContact worst_penetrations(const CaseResult& c) {
+  WorstContact worst;
   for (const RepetitionResult& rep : c.repetitions) {
     if (!rep.penetrations) continue;
     worst.node_steps = std::max(worst.node_steps, rep.penetrations->node_steps);
     worst.deepest_pct = std::max(worst.deepest_pct, rep.penetrations->deepest_pct);
+    worst.mean_contacts = std::max(worst.mean_contacts, rep.penetrations->mean_contacts());
   }
   return worst;
 }
@@ -37,6 +44,7 @@ void print_cases(const RunResult& r, const RunTables& tables, const std::vector<
       {"case", Align::kLeft}, {"status", Align::kLeft}, {"N"}, {"L"}, {"I"}, {"median ms"}, {"CV %"}, {"vs plain"}};
   if (any_equal) columns.push_back({"vs equal"});
   if (scene) {
+    columns.push_back({"contacts"});
     columns.push_back({"inside"});
     columns.push_back({"deepest %"});
   }
@@ -58,7 +66,8 @@ void print_cases(const RunResult& r, const RunTables& tables, const std::vector<
                                     fixed(ratios.vs_plain, 3)};
     if (any_equal) row.push_back(fixed(ratios.vs_equal_plain, 3));
     if (scene) {
-      const Penetrations worst = worst_penetrations(c);
+      const WorstContact worst = worst_penetrations(c);
+      row.push_back(fixed(worst.mean_contacts, 0));
       row.push_back(std::to_string(worst.node_steps));
       row.push_back(fixed(worst.deepest_pct, 3));
     }
@@ -68,8 +77,9 @@ void print_cases(const RunResult& r, const RunTables& tables, const std::vector<
   out << "Cases (median of per-repetition mean step times; 'vs plain' = median of paired same-run ratios";
   if (any_equal) out << "; 'vs equal' = the same against plain_equal, TC-SB's tax over a static grid of its budget";
   if (scene)
-    out << "; 'inside' = node-steps found inside a collider deeper than the contact margin, 'deepest %' = the deepest "
-           "node in % of the net's extent, both the worst repetition's";
+    out << "; 'contacts' = Bullet's rigid contacts per step (nodes within the margin of a collider), 'inside' = "
+           "node-steps found inside a collider deeper than the contact margin, 'deepest %' = the deepest node in % of "
+           "the net's extent, each the worst repetition's";
   out << "):\n";
   t.print(out);
 }

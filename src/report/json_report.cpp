@@ -160,7 +160,8 @@ ojson repetition_json(const RepetitionResult& r) {
   if (r.instructions) j["instructions"] = instructions_json(*r.instructions);  // --measure instructions only
   if (r.penetrations)  // scenes with colliders only: results of the paper's scene keep their bytes
     j["penetrations"] = {{"node_steps", r.penetrations->node_steps},
-                         {"deepest_pct", json_number(r.penetrations->deepest_pct)}};
+                         {"deepest_pct", json_number(r.penetrations->deepest_pct)},
+                         {"mean_contacts", json_number(r.penetrations->mean_contacts())}};
   return j;
 }
 

@@ -64,6 +64,13 @@ struct StepBreakdown {
 struct Penetrations {
   std::int64_t node_steps = 0;  ///< over every step: nodes deeper than the margin, summed
   double deepest_pct = 0;       ///< the deepest any node got, % of the net's extent (0 when none penetrated)
+  /// Over every step: Bullet's rigid contacts (btSoftBody::m_rcontacts, one per node within the margin of a
+  /// collider), summed. What contact costs a body: Bullet solves each in every position iteration, so a body that puts
+  /// its nodes where the cloth touches pays for it in its step.
+  std::int64_t contact_node_steps = 0;
+  std::int64_t steps = 0;  ///< steps counted (warm-up and timed)
+  /// Bullet's contacts per step, on average.
+  double mean_contacts() const { return steps > 0 ? static_cast<double>(contact_node_steps) / steps : 0.0; }
 };
 
 /// One repetition of one case: a fresh body, warm-up, then timed steps.

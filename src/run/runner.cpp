@@ -183,6 +183,8 @@ class RepetitionRun {
 
   void count_penetrations(const btSoftBody& b) {
     Penetrations& p = rep_.penetrations ? *rep_.penetrations : rep_.penetrations.emplace();
+    ++p.steps;
+    p.contact_node_steps += b.m_rcontacts.size();  // this step's: Bullet clears them as the next step begins
     for (int i = 0; i < b.m_nodes.size(); ++i) {
       const double depth = world_.penetration(b.m_nodes[i].m_x);
       if (!world_.penetrated(depth)) continue;

@@ -30,7 +30,8 @@ TEST_F(Cli, ASceneSuiteRunsEveryMethodInItsWorldAndCountsPenetrations) {
   write_file(dir_ / "scene.json", kSceneSuite);
   const Outcome o = tcsb("run scene.json --out result.json");
   ASSERT_EQ(o.exit_code, 0) << o.err;
-  EXPECT_NE(o.err.find("deepest %"), std::string::npos) << o.err;  // the console's penetration columns
+  EXPECT_NE(o.err.find("deepest %"), std::string::npos) << o.err;  // the console's contact columns
+  EXPECT_NE(o.err.find("contacts"), std::string::npos) << o.err;
   const json doc = json::parse(read_file(dir_ / "result.json"));
   EXPECT_EQ(doc["suite"]["scene"]["colliders"], json::array({"static sphere", "static plane"}));
   EXPECT_EQ(doc["suite"]["feedback"]["contact_saliency"], 1.0);
@@ -41,6 +42,8 @@ TEST_F(Cli, ASceneSuiteRunsEveryMethodInItsWorldAndCountsPenetrations) {
       ASSERT_TRUE(r.contains("penetrations")) << c["label"];
       EXPECT_GE(r["penetrations"]["node_steps"].get<long long>(), 0);
       EXPECT_GE(r["penetrations"]["deepest_pct"].get<double>(), 0.0);
+      // Every body reaches the sphere within the run (it falls 0.2 m, 12 steps): Bullet holds some nodes on it.
+      EXPECT_GT(r["penetrations"]["mean_contacts"].get<double>(), 0.0) << c["label"];
     }
   }
   ASSERT_TRUE(doc.contains("fidelity"));
