@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "net/net_pins.h"
+
 namespace tcsb {
 
 Net::Net(const NetSpec& spec) : spec_(spec) {
@@ -12,19 +14,14 @@ Net::Net(const NetSpec& spec) : spec_(spec) {
   const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
   rest_.resize(n);
   mass_.assign(n, spec.node_mass());
-  pinned_.assign(n, 0);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       rest_[static_cast<std::size_t>(index(x, y))] =
           Eigen::Vector3d(-0.5 * spec.size_x + spec.size_x * x / (w - 1), spec.elevation,
                           -0.5 * spec.size_z + spec.size_z * y / (h - 1));
-  const auto pin = [&](unsigned bit, int x, int y) {
-    if (spec.pinned_corners & bit) pinned_[static_cast<std::size_t>(index(x, y))] = 1;
-  };
-  pin(kCornerMinMin, 0, 0);
-  pin(kCornerMaxMin, w - 1, 0);
-  pin(kCornerMinMax, 0, h - 1);
-  pin(kCornerMaxMax, w - 1, h - 1);
+  for (const GridNode& p : spec.pinned_nodes)
+    if (p.x < 0 || p.x >= w || p.z < 0 || p.z >= h) throw std::invalid_argument("Net: a pinned node lies off the grid");
+  pinned_ = pinned_grid_nodes(spec);
 
   links_.reserve(expected_link_count(spec));
   for (int y = 0; y < h; ++y) {

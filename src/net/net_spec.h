@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace tcsb {
 
@@ -12,6 +13,22 @@ enum PinnedCorner : unsigned {
   kCornerMinMax = 4,  ///< grid (0, H-1)
   kCornerMaxMax = 8,  ///< grid (W-1, H-1)
   kAllCorners = 15,
+};
+
+/// Which edges of the grid are pinned, every node along them. Named like the corners, by the coordinate the edge
+/// holds at its minimum or maximum: min_x is the edge x = 0 (from min_min to min_max).
+enum PinnedEdge : unsigned {
+  kEdgeMinX = 1,  ///< x = 0
+  kEdgeMaxX = 2,  ///< x = W-1
+  kEdgeMinZ = 4,  ///< z = 0
+  kEdgeMaxZ = 8,  ///< z = H-1
+};
+
+/// One grid node by its coordinates: x in [0, W-1], z in [0, H-1].
+struct GridNode {
+  int x = 0;
+  int z = 0;
+  friend bool operator==(const GridNode&, const GridNode&) = default;
 };
 
 /// How the net's mass is given: the whole net's, or each node's.
@@ -28,8 +45,12 @@ struct NetSpec {
   MassMode mass_mode = MassMode::kTotal;
   double mass = 1.0;                      ///< total mass (kTotal) or per-node mass (kPerNode), kg
   unsigned pinned_corners = kAllCorners;  ///< PinnedCorner bits
-  bool shear_links = false;               ///< add both diagonals of every grid cell
-  bool bend_links = false;                ///< add links skipping one node along x and z
+  /// PinnedEdge bits. Pins are the union of the corners, the edges and the listed nodes (net/net_pins.h): corners
+  /// alone are what every suite had before edges and lists existed, so those nets are built exactly as before.
+  unsigned pinned_edges = 0;
+  std::vector<GridNode> pinned_nodes;  ///< further pinned grid nodes, in the suite's order, no duplicates
+  bool shear_links = false;            ///< add both diagonals of every grid cell
+  bool bend_links = false;             ///< add links skipping one node along x and z
 
   /// Number of grid nodes (leaves of the LOD tree).
   long long node_count() const { return static_cast<long long>(width) * height; }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "net/net_pins.h"
 #include "paper/paper_tables.h"
 #include "report/fidelity_json.h"
 #include "report/op_work_json.h"
@@ -29,6 +30,15 @@ ojson suite_json(const Suite& s) {
   ojson nets = ojson::array();
   for (const NetSpec& n : s.nets) {
     nets.push_back({{"name", n.name}, {"width", n.width}, {"height", n.height}, {"nodes", n.node_count()}});
+    // Only pins beyond the corners (which the suite file, by its sha256, holds): a corner-pinned net writes what it
+    // wrote before edges and listed nodes existed, so its results compare with older ones.
+    if (pins_beyond_corners(n)) {
+      ojson edges = ojson::array(), nodes = ojson::array();
+      for (const PinnedEdge e : {kEdgeMinX, kEdgeMaxX, kEdgeMinZ, kEdgeMaxZ})
+        if (n.pinned_edges & e) edges.push_back(pinned_edge_name(e));
+      for (const GridNode& p : n.pinned_nodes) nodes.push_back({p.x, p.z});
+      nets.back()["pinned"] = {{"corners", n.pinned_corners}, {"edges", std::move(edges)}, {"nodes", std::move(nodes)}};
+    }
   }
   ojson methods = ojson::array();
   for (const Method m : s.methods) methods.push_back(method_name(m));
@@ -90,8 +100,8 @@ ojson suite_json(const Suite& s) {
     out["feedback"]["view_motion_scale"] = json_number(f.view_motion_scale);
     out["feedback"]["view_detail_px"] = json_number(f.view_detail_px);
   }
-  // Only in a scene with colliders, a camera or wind, like the penetrations of its repetitions.
-  if (s.scene.has_colliders() || s.scene.camera || s.scene.wind) {
+  // Only in a scene with colliders, a camera, wind or moving pins, like the penetrations of its repetitions.
+  if (s.scene.has_colliders() || s.scene.camera || s.scene.wind || s.scene.pin_path.moves()) {
     ojson colliders = ojson::array();
     for (const Collider& c : s.scene.colliders) colliders.push_back(collider_name(c));
     out["scene"] = {{"colliders", std::move(colliders)},
@@ -108,6 +118,13 @@ ojson suite_json(const Suite& s) {
                               {"lift", json_number(w->lift)},
                               {"drag", json_number(w->drag)},
                               {"air_density", json_number(w->air_density)}};
+    if (const PinPath& p = s.scene.pin_path; p.moves()) {
+      if (p.keyframes.empty())
+        out["scene"]["pin_path"] = {
+            {"velocity", {json_number(p.velocity[0]), json_number(p.velocity[1]), json_number(p.velocity[2])}}};
+      else
+        out["scene"]["pin_path"] = {{"keyframes", p.keyframes.size()}};
+    }
   }
   // Optional: only a suite with axes has it, so the block of a suite without stays as it always was.
   if (!s.axes.empty()) {

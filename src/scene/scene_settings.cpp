@@ -9,7 +9,9 @@ std::string collider_name(const Collider& collider) {
   const char* shape = collider.shape == ColliderShape::kSphere ? "sphere"
                       : collider.shape == ColliderShape::kBox  ? "box"
                                                                : "plane";
-  return std::string(motion) + " " + shape;
+  std::string name = std::string(motion) + " " + shape;
+  if (!collider.path.empty()) name += " on a path of " + std::to_string(collider.path.size()) + " keyframes";
+  return name;
 }
 
 const char* aero_model_name(AeroModel model) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "feedback/camera.h"
+#include "feedback/keyframe_path.h"
 
 namespace tcsb {
 
@@ -23,7 +24,7 @@ enum class ColliderShape {
 /// How a collider moves.
 enum class ColliderMotion {
   kStatic,     ///< never moves
-  kKinematic,  ///< moves along a scripted path: `position` + `velocity` x t, whatever the cloth does
+  kKinematic,  ///< moves along a scripted path, whatever the cloth does: `position` + `velocity` x t, or `path`
   kDynamic,    ///< a rigid body of `mass`, starting at `velocity`, pushed by gravity and the cloth
 };
 
@@ -36,11 +37,16 @@ struct Collider {
   std::array<double, 3> half_extents{1, 1, 1};  ///< box, metres
   std::array<double, 3> normal{0, 1, 0};        ///< plane, unit length (the parser normalises it)
   std::array<double, 3> velocity{0, 0, 0};      ///< kinematic: constant; dynamic: initial; m/s
-  double mass = 1.0;                            ///< dynamic only, kg
-  double friction = 0.5;                        ///< the rigid body's friction (Bullet combines it with the cloth's)
+  /// Kinematic only, instead of a velocity: the centre's (or plane point's) positions at keyframe times
+  /// (feedback/keyframe_path.h: linear between, held after the last); `position` is then the path's at time 0.
+  /// Empty: `position` + `velocity` x t.
+  std::vector<VectorKey> path;
+  double mass = 1.0;      ///< dynamic only, kg
+  double friction = 0.5;  ///< the rigid body's friction (Bullet combines it with the cloth's)
 };
 
-/// "static sphere", "dynamic box", "kinematic plane": how reports name a collider.
+/// "static sphere", "dynamic box", "kinematic plane", "kinematic box on a path of 3 keyframes": how reports name a
+/// collider.
 std::string collider_name(const Collider& collider);
 
 /// Bullet's aerodynamic models (btSoftBody::eAeroModel), as a suite names them. The V_ models push each node by its
@@ -69,6 +75,21 @@ struct Wind {
 /// "V_TwoSided", ...: the suite's and Bullet's name of a model.
 const char* aero_model_name(AeroModel model);
 
+/// How every net's pins move: a scripted path of one offset from their rest positions, applied to every pinned node
+/// alike (a rod holding the cloth, moved). Kinematic: whatever the cloth does, the pins follow the path.
+struct PinPath {
+  std::array<double, 3> velocity{0, 0, 0};  ///< a constant velocity, m/s (offset = velocity x t), when no keyframes
+  std::vector<VectorKey> keyframes;         ///< else the offset's keyframes, metres (times ascending strictly)
+
+  /// Whether the pins move at all (the default holds them at rest, as every scene before paths did).
+  bool moves() const { return !keyframes.empty() || velocity != std::array<double, 3>{0, 0, 0}; }
+  /// The pins' offset from rest at `time` seconds of simulated time, metres.
+  std::array<double, 3> offset_at(double time) const {
+    if (!keyframes.empty()) return value_at(keyframes, time);
+    return {velocity[0] * time, velocity[1] * time, velocity[2] * time};
+  }
+};
+
 /// The scene around the nets.
 struct SceneSettings {
   std::vector<Collider> colliders;
@@ -87,6 +108,8 @@ struct SceneSettings {
   std::optional<Camera> camera;
   /// Wind, or none (still air: no body has faces, and no aerodynamic force is computed).
   std::optional<Wind> wind;
+  /// How the nets' pins move; by default they stay at rest.
+  PinPath pin_path;
 
   /// Whether bodies live in a collision world (btSoftRigidDynamicsWorld) rather than being stepped solo.
   bool has_colliders() const { return !colliders.empty(); }

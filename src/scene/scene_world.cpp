@@ -165,7 +165,9 @@ SceneWorld::SceneWorld(const WorldSettings& world, const SceneSettings& scene) :
 
 SceneWorld::~SceneWorld() {
   // Bodies still attached are the owner's to destroy; the world must not touch them after this.
-  for (btSoftBody* body : std::vector<btSoftBody*>(bodies_)) detach(*body);
+  std::vector<btSoftBody*> attached;
+  for (const Attached& a : bodies_) attached.push_back(a.body);
+  for (btSoftBody* body : attached) detach(*body);
   if (dynamics_) {
     for (const auto& rigid : rigids_) dynamics_->removeRigidBody(rigid->body.get());
     dynamics_.reset();
@@ -191,12 +193,13 @@ SceneWorld::Attachment SceneWorld::attach(btSoftBody& body) {
     body.m_cfg.collisions = btSoftBody::fCollision::SDF_RS;
     dynamics_->addSoftBody(&body);
   }
-  bodies_.push_back(&body);
+  const bool stock = dynamic_cast<TcSoftBody*>(&body) == nullptr;
+  bodies_.push_back({&body, stock && scene_.pin_path.moves() ? StockPins(body) : StockPins()});
   return {this, &body};
 }
 
 void SceneWorld::detach(btSoftBody& body) {
-  const auto it = std::find(bodies_.begin(), bodies_.end(), &body);
+  const auto it = std::find_if(bodies_.begin(), bodies_.end(), [&](const Attached& a) { return a.body == &body; });
   if (it == bodies_.end()) return;
   bodies_.erase(it);
   if (dynamics_) dynamics_->removeSoftBody(&body);
@@ -206,15 +209,35 @@ void SceneWorld::move_kinematic_colliders(double time) {
   for (const auto& rigid : rigids_) {
     if (rigid->spec.motion != ColliderMotion::kKinematic) continue;
     btTransform t = rigid->body->getWorldTransform();
-    t.setOrigin(rigid->start + to_vector(rigid->spec.velocity) * static_cast<btScalar>(time));
+    const Collider& c = rigid->spec;
+    if (c.path.empty()) {
+      t.setOrigin(rigid->start + to_vector(c.velocity) * static_cast<btScalar>(time));
+    } else {
+      // The path's displacement from where the collider started (`position`, the path's value at time 0, as the
+      // parser sets it): a plane's slab keeps its shift under the plane.
+      const std::array<double, 3> at = value_at(c.path, time);
+      t.setOrigin(rigid->start + to_vector({at[0] - c.position[0], at[1] - c.position[1], at[2] - c.position[2]}));
+    }
     rigid->motion->setWorldTransform(t);  // Bullet reads it and derives the body's velocity (saveKinematicState)
+  }
+}
+
+void SceneWorld::move_pins(double time, btScalar dt) {
+  const btVector3 offset = to_vector(scene_.pin_path.offset_at(time));
+  for (Attached& a : bodies_) {
+    if (auto* tc = dynamic_cast<TcSoftBody*>(a.body))
+      tc->move_pins(offset, dt);
+    else
+      a.pins.move(*a.body, offset, dt);
   }
 }
 
 void SceneWorld::step(btScalar dt) {
   ++steps_;
+  // Where the pins are after this step: at steps_ x dt, as the kinematic colliders.
+  if (scene_.pin_path.moves()) move_pins(static_cast<double>(steps_) * settings_.dt, dt);
   if (!dynamics_) {
-    for (btSoftBody* body : bodies_) step_body(*body, dt);
+    for (const Attached& a : bodies_) step_body(*a.body, dt);
     return;
   }
   move_kinematic_colliders(static_cast<double>(steps_) * settings_.dt);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "scene/scene_settings.h"
+#include "softbody/pin_motion.h"
 #include "softbody/solver_settings.h"
 
 class btBroadphaseInterface;
@@ -63,9 +64,12 @@ class SceneWorld {
   btSoftRigidDynamicsWorld* dynamics() { return dynamics_.get(); }
 
   /// Puts a body built with info() into the world: with colliders, the scene's contact settings (margin,
-  /// friction, soft-rigid collisions on) and the world's body list; stepped by every step() until released.
+  /// friction, soft-rigid collisions on) and the world's body list; stepped by every step() until released. When
+  /// the scene's pins move, a stock body's pins are taken here, at their positions now (its rest).
   [[nodiscard]] Attachment attach(btSoftBody& body);
-  /// One step of dt for every attached body (and, with colliders, the rigid bodies).
+  /// One step of dt for every attached body (and, with colliders, the rigid bodies). First, when the scene's pins
+  /// move, every body's pinned nodes are set on their way to the path's next offset (move_pins), so plain and TC-SB
+  /// bodies are driven by the same rule in the same place.
   void step(btScalar dt);
   /// Steps taken so far.
   long long steps() const { return steps_; }
@@ -81,6 +85,7 @@ class SceneWorld {
   struct Rigid;
   void detach(btSoftBody& body);
   void move_kinematic_colliders(double time);
+  void move_pins(double time, btScalar dt);
 
   WorldSettings settings_;
   SceneSettings scene_;
@@ -94,7 +99,11 @@ class SceneWorld {
   std::unique_ptr<btSoftBodySolver> soft_body_solver_;
   std::unique_ptr<btSoftRigidDynamicsWorld> dynamics_;
   std::vector<std::unique_ptr<Rigid>> rigids_;  // one per collider, in the scene's order
-  std::vector<btSoftBody*> bodies_;             // attached, in attachment order
+  struct Attached {
+    btSoftBody* body;
+    StockPins pins;  // a stock body's, when the pins move (a TcSoftBody moves its own)
+  };
+  std::vector<Attached> bodies_;  // in attachment order
   long long steps_ = 0;
 };
 

@@ -34,9 +34,14 @@ std::unique_ptr<btSoftBody> make_bullet_patch(btSoftBodyWorldInfo& world, const 
   body->m_faces.resize(0);
   // CreatePatch gives every node mass 1; scale to the net's masses so both bodies are the same cloth (uniform
   // masses: only the ratio of inverse masses enters the link solver, so this changes no position).
-  for (int i = 0; i < body->m_nodes.size(); ++i)
-    if (body->m_nodes[i].m_im > 0)
-      body->m_nodes[i].m_im = static_cast<btScalar>(1.0 / net.masses()[static_cast<std::size_t>(i)]);
+  // CreatePatch pins corners only; the net's other pins (an edge, listed nodes) get Bullet's zero inverse mass here.
+  for (int i = 0; i < body->m_nodes.size(); ++i) {
+    btSoftBody::Node& n = body->m_nodes[i];
+    if (net.pinned()[static_cast<std::size_t>(i)])
+      n.m_im = 0;
+    else if (n.m_im > 0)
+      n.m_im = static_cast<btScalar>(1.0 / net.masses()[static_cast<std::size_t>(i)]);
+  }
   body->updateConstants();
   body->m_bUpdateRtCst = false;
   return body;

@@ -16,7 +16,8 @@ namespace tcsb {
 std::unique_ptr<btSoftBody> make_plain_softbody(btSoftBodyWorldInfo& world, const Net& net,
                                                 const SolverSettings& settings);
 
-/// Stock btSoftBodyHelpers::CreatePatch of the same grid, corners and total mass, with the same solver settings and
+/// Stock btSoftBodyHelpers::CreatePatch of the same grid, pins (corners through CreatePatch, any others by zero
+/// inverse mass) and total mass, with the same solver settings and
 /// its faces dropped (no compared body has faces). Used only to show the plain baseline is not handicapped. The net
 /// must have structural links only (CreatePatch makes no shear or bend links).
 std::unique_ptr<btSoftBody> make_bullet_patch(btSoftBodyWorldInfo& world, const Net& net,

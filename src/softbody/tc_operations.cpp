@@ -108,7 +108,7 @@ Eigen::Matrix<double, 3, 2> TcSoftBody::local_affine_fit(TreeId id) const {
 
 btVector3 TcSoftBody::place_child(TreeId parent, TreeId child, const btVector3& parent_x,
                                   const Eigen::Matrix<double, 3, 2>& deformation) const {
-  if (tree().node(child).pinned()) return record(child).rest_position();  // corners never move
+  if (tree().node(child).pinned()) return pin_position(child);  // where the pins are now (moved along their path)
   const btVector3 d = record(child).rest_position() - record(parent).rest_position();
   if (settings_.placement == Placement::kRigid) return parent_x + d;
   return to_bullet(to_eigen(parent_x) + deformation * Eigen::Vector2d(d.x(), d.z()));
@@ -215,7 +215,7 @@ void TcSoftBody::begin_coarse(TreeId p) {
     weighted_x += m * child_x[static_cast<std::size_t>(i)];
     momentum += m * to_eigen(n.m_v);
   }
-  btVector3 xp = pn.pinned() ? record(p).rest_position() : to_bullet(weighted_x / pn.mass);
+  btVector3 xp = pn.pinned() ? pin_position(p) : to_bullet(weighted_x / pn.mass);
   if (const std::optional<Eigen::Vector3d> border = border_arrival(tree(), p, child_x)) xp = to_bullet(*border);
   record(p).sim_mass = 0.5 * pn.mass;
   add_node(p, xp, to_bullet(momentum / pn.mass), pn.children[0]);

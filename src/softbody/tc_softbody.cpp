@@ -7,6 +7,7 @@
 
 #include "softbody/bullet_setup.h"
 #include "softbody/dbvt_local.h"
+#include "softbody/pin_motion.h"
 #include "softbody/vector_conversion.h"
 
 namespace tcsb {
@@ -109,6 +110,15 @@ void TcSoftBody::simulate_step(btScalar dt) {
   predictMotion(dt);
   solve_constraints();
   integrateMotion();
+}
+
+void TcSoftBody::move_pins(const btVector3& offset, btScalar dt) {
+  for (int i = 0; i < m_nodes.size(); ++i) {
+    Node& n = m_nodes[i];
+    if (n.m_im != 0) continue;  // only pinned nodes have zero inverse mass (inverse_mass())
+    n.m_v = pin_velocity(record(tree_of_[static_cast<std::size_t>(i)]).rest_position(), offset, n.m_x, dt);
+  }
+  pin_offset_ = offset;
 }
 
 int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, TreeId beside) {

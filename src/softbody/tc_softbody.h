@@ -180,6 +180,17 @@ class TcSoftBody : public btSoftBody {
   /// configured position solvers and then projecting every interface constraint, velocities from positions, drift —
   /// so a body without interfaces steps exactly as Bullet steps it.
   void solve_constraints();
+  // ---- moving pins (softbody/pin_motion.h) -------------------------------------------------------------------
+  /// Moves the pins along a scripted path (a rod holding the cloth, moved): over the next step every simulated
+  /// pinned node goes to its rest position + `offset` (its velocity is set so that predictMotion carries it there,
+  /// the same rule as StockPins for a stock body), and from then on operations place pinned nodes there and
+  /// validate() expects them there. Call once per step boundary, after the boundary's operations, right before the
+  /// step (SceneWorld::step does). O(N): a scan for the nodes of zero inverse mass, which only pinned nodes have.
+  void move_pins(const btVector3& offset, btScalar dt);
+  /// Where the pins are now, relative to their rest positions (zero until move_pins()), metres.
+  const btVector3& pin_offset() const { return pin_offset_; }
+  /// Where a pinned tree node is now: its rest position + pin_offset().
+  btVector3 pin_position(TreeId id) const { return record(id).rest_position() + pin_offset_; }
   // ---- faces (tc_faces.cpp) ----------------------------------------------------------------------------------
   /// Gives the body Bullet faces over its committed cut from now on: what Bullet's aerodynamic model reads (node
   /// areas and normals), so a windy scene pushes TC-SB as it pushes a plain body (SceneWorld::attach calls it).
@@ -232,7 +243,8 @@ class TcSoftBody : public btSoftBody {
   // ---- invariants --------------------------------------------------------------------------------------------
   /// Checks every invariant: incidence lists equal Bullet's link set; node and link pointers consistent; one DBVT
   /// leaf per node; the committed cut and the old cut each cover every leaf exactly once and are balanced; degrees
-  /// bounded; total mass constant; inverse masses match; link constants as their roles say; pinned nodes at rest;
+  /// bounded; total mass constant; inverse masses match; link constants as their roles say; pinned nodes at rest
+  /// (displaced by pin_offset());
   /// no NaN; the constants-dirty flag never set. O(N log N + L); for tests and debug runs.
   Validation validate() const;
 
@@ -359,6 +371,7 @@ class TcSoftBody : public btSoftBody {
   std::shared_ptr<const Net> net_;
   TcSettings settings_;
   double total_mass_ = 0;
+  btVector3 pin_offset_{0, 0, 0};  // move_pins()
 
   std::vector<CutState> state_;           // per tree node
   std::vector<std::int32_t> bullet_;      // per tree node: Bullet index or -1 (as record_, for CutView's readers)

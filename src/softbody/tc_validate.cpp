@@ -53,7 +53,8 @@ Validation TcSoftBody::validate() const {
     mass += m;
     if (t.pinned()) {
       if (n.m_im != 0) fail(name + ": pinned but has finite mass");
-      if ((n.m_x - r.rest_position()).length() > 1e-6 * extent) fail(name + ": pinned node moved");
+      if ((n.m_x - pin_position(id)).length() > 1e-6 * extent)
+        fail(name + ": pinned node moved off its pin (rest + pin offset)");
     } else if (!(m > 0) || std::abs(n.m_im * m - 1.0) > 1e-5) {
       fail(name + ": inverse mass does not match its carried mass");
     }

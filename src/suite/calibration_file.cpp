@@ -5,6 +5,7 @@
 
 #include "base/json_file.h"
 #include "base/sha256.h"
+#include "net/net_pins.h"
 #include "suite/case_plan.h"
 #include "suite/suite.h"
 #include "suite/suite_fields.h"
@@ -89,6 +90,15 @@ std::string calibration_key(const Suite& suite) {
     text << "net " << n.width << ' ' << n.height << ' ' << fmt_number(n.size_x) << ' ' << fmt_number(n.size_z) << ' '
          << fmt_number(n.elevation) << ' ' << fmt_number(n.node_mass()) << ' ' << n.pinned_corners << ' '
          << n.shear_links << ' ' << n.bend_links << '\n';
+  // Pins beyond the corners on lines of their own, only where a net has them: corner-only nets (every suite
+  // written before edges and listed nodes) keep their keys, and their committed calibrations still match.
+  for (std::size_t i = 0; i < suite.nets.size(); ++i) {
+    const NetSpec& n = suite.nets[i];
+    if (!pins_beyond_corners(n)) continue;
+    text << "pins " << i << ' ' << n.pinned_edges;
+    for (const GridNode& p : n.pinned_nodes) text << ' ' << p.x << ' ' << p.z;
+    text << '\n';
+  }
   text << "world " << fmt_number(suite.world.dt) << ' ' << fmt_number(suite.world.gravity) << '\n';
   text << "steps " << suite.steps << ' ' << suite.warmup_steps << '\n';
   text << "solver " << suite.solver.piterations << ' ' << suite.solver.viterations << ' ' << suite.solver.diterations
@@ -104,10 +114,18 @@ std::string calibration_key(const Suite& suite) {
   if (scene.has_colliders()) {
     text << "scene " << fmt_number(scene.margin) << ' ' << fmt_number(scene.friction) << ' '
          << fmt_number(scene.sdf_voxel) << '\n';
-    for (const Collider& c : scene.colliders)
+    for (const Collider& c : scene.colliders) {
       text << "collider " << static_cast<int>(c.shape) << ' ' << static_cast<int>(c.motion) << ' ' << triple(c.position)
            << ' ' << fmt_number(c.radius) << ' ' << triple(c.half_extents) << ' ' << triple(c.normal) << ' '
-           << triple(c.velocity) << ' ' << fmt_number(c.mass) << ' ' << fmt_number(c.friction) << '\n';
+           << triple(c.velocity) << ' ' << fmt_number(c.mass) << ' ' << fmt_number(c.friction);
+      for (const VectorKey& k : c.path) text << " key " << fmt_number(k.time) << ' ' << triple(k.value);  // if any
+      text << '\n';
+    }
+  }
+  if (scene.pin_path.moves()) {  // likewise only with moving pins
+    text << "pin_path " << triple(scene.pin_path.velocity);
+    for (const VectorKey& k : scene.pin_path.keyframes) text << " key " << fmt_number(k.time) << ' ' << triple(k.value);
+    text << '\n';
   }
   if (const std::optional<Wind>& w = scene.wind)  // likewise only with wind
     text << "wind " << aero_model_name(w->model) << ' ' << triple(w->velocity) << ' ' << fmt_number(w->lift) << ' '

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "net/net_pins.h"
+
 namespace tcsb {
 
 const char* fidelity_method_name(FidelityMethod method) {
@@ -71,7 +73,7 @@ NetSpec coarse_net_spec(const NetSpec& fine, int budget) {
   coarse.height = g.height;
   coarse.mass_mode = MassMode::kTotal;  // the same cloth: the total mass is kept, not the mass per node
   coarse.mass = fine.node_mass() * static_cast<double>(fine.node_count());
-  return coarse;
+  return with_pins_of(fine, coarse);
 }
 
 }  // namespace tcsb

@@ -59,8 +59,9 @@ struct CoarseGrid {
 CoarseGrid coarse_grid_for(int width, int height, int nodes);
 
 /// The spec of the uniform coarse net for a budget (the fidelity pass's uniform grid and the
-/// plain_equal method): coarse_grid_for() nodes, the same physical size, elevation,
-/// pinned corners and total mass.
+/// plain_equal method): coarse_grid_for() nodes, the same physical size, elevation and
+/// total mass, and the same pins carried to its grid (net/net_pins.h: corners and edges stay, a listed node goes to
+/// the nearest coarse node).
 NetSpec coarse_net_spec(const NetSpec& fine, int budget);
 
 }  // namespace tcsb

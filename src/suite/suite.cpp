@@ -24,6 +24,30 @@ namespace {
 
 using namespace suite_fields;
 
+/// "pinned": {"edge": "min_z"} or {"nodes": [[x, z], ...]} (exactly one of the two), into `net`, whose width and
+/// height are read already: a node off the grid, a listed node twice or an empty list is an error.
+void parse_pinned_beyond_corners(const Reader& r, const json& j, const std::string& path, NetSpec& net) {
+  const Object o(r, j, path, {"edge", "nodes"});
+  if (j.size() != 1) r.fail(path, "must have exactly one of \"edge\" or \"nodes\", got " + j.dump());
+  if (const json* edge = o.find("edge")) {
+    net.pinned_edges = r.choice<unsigned>(
+        *edge, o.at("edge"), {{"min_x", kEdgeMinX}, {"max_x", kEdgeMaxX}, {"min_z", kEdgeMinZ}, {"max_z", kEdgeMaxZ}});
+    return;
+  }
+  const json& nodes = o.need("nodes");
+  r.array(nodes, o.at("nodes"));  // empty: rejected (no pins is "none")
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const std::string at = index_path(o.at("nodes"), i);
+    if (!nodes[i].is_array() || nodes[i].size() != 2)
+      r.fail(at, "must be a grid node [x, z], got " + describe(nodes[i]));
+    const GridNode n{static_cast<int>(r.integer(nodes[i][0], index_path(at, 0), 0, net.width - 1)),
+                     static_cast<int>(r.integer(nodes[i][1], index_path(at, 1), 0, net.height - 1))};
+    if (std::find(net.pinned_nodes.begin(), net.pinned_nodes.end(), n) != net.pinned_nodes.end())
+      r.fail(at, "duplicate node " + nodes[i].dump());
+    net.pinned_nodes.push_back(n);
+  }
+}
+
 NetSpec parse_net(const Reader& r, const json& j, const std::string& path) {
   const Object o(r, j, path, {"name", "width", "height", "size", "elevation", "mass", "pinned", "shear", "bend"});
   NetSpec net;
@@ -62,8 +86,13 @@ NetSpec parse_net(const Reader& r, const json& j, const std::string& path) {
       }
     } else if (pinned->is_string()) {
       net.pinned_corners = r.choice<unsigned>(*pinned, p, {{"corners", kAllCorners}, {"none", 0u}});
+    } else if (pinned->is_object()) {
+      net.pinned_corners = 0;
+      parse_pinned_beyond_corners(r, *pinned, p, net);
     } else {
-      r.fail(p, "must be \"corners\", \"none\" or a list of corners, got " + describe(*pinned));
+      r.fail(p,
+             "must be \"corners\", \"none\", a list of corners, {\"edge\": ...} or {\"nodes\": [[x, z], ...]}, got " +
+                 describe(*pinned));
     }
   }
   o.read("shear", net.shear_links);
@@ -138,9 +167,62 @@ std::array<double, 3> read_vector(const Reader& r, const Object& o, const char* 
   return j ? r.numbers<3>(*j, o.at(key), range) : fallback;
 }
 
+/// Keyframes of any scripted path are capped alike: a typo must not build a path of millions.
+constexpr std::size_t kMaxKeyframes = 10000;
+
+/// The array of keyframes at `at` (not empty, at most kMaxKeyframes): its size.
+std::size_t keyframe_count(const Reader& r, const json& keys, const std::string& at) {
+  r.array(keys, at);
+  if (keys.size() > kMaxKeyframes)
+    r.fail(at, "at most " + std::to_string(kMaxKeyframes) + " keyframes, got " + std::to_string(keys.size()));
+  return keys.size();
+}
+
+/// A keyframe's "time": at least 0, and later than the keyframe before (`previous`, null for the first).
+double parse_key_time(const Reader& r, const Object& key, const double* previous) {
+  double time = 0;
+  key.read("time", time, kNonNegative, true);
+  if (previous && !(time > *previous))
+    r.fail(key.at("time"), "must be later than the keyframe before (" + fmt_number(*previous) + ")");
+  return time;
+}
+
+/// Keyframes of a scripted vector, [{"time": t, `value_key`: [x, y, z]}, ...], times strictly ascending.
+std::vector<VectorKey> parse_vector_keys(const Reader& r, const json& keys, const std::string& at,
+                                         const char* value_key) {
+  std::vector<VectorKey> out;
+  const std::size_t count = keyframe_count(r, keys, at);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Object key(r, keys[i], index_path(at, i), {"time", value_key});
+    VectorKey k;
+    k.time = parse_key_time(r, key, out.empty() ? nullptr : &out.back().time);
+    k.value = r.numbers<3>(key.need(value_key), key.at(value_key), kAnyFinite);
+    out.push_back(k);
+  }
+  return out;
+}
+
+/// "pin_path": {"velocity": [x, y, z]} or {"keyframes": [{"time": t, "offset": [x, y, z]}, ...]}, exactly one.
+PinPath parse_pin_path(const Reader& r, const json& j, const std::string& path) {
+  const Object o(r, j, path, {"velocity", "keyframes"});
+  if (j.size() != 1) r.fail(path, "must have exactly one of \"velocity\" or \"keyframes\", got " + j.dump());
+  PinPath p;
+  if (const json* v = o.find("velocity")) {
+    p.velocity = r.numbers<3>(*v, o.at("velocity"), kAnyFinite);
+    if (!p.moves()) r.fail(o.at("velocity"), "must not be zero (pins at rest need no path)");
+    return p;
+  }
+  p.keyframes = parse_vector_keys(r, o.need("keyframes"), o.at("keyframes"), "offset");
+  // The nets are built at rest: a first offset other than zero would jump every pin at the first step.
+  if (p.keyframes.front().value != std::array<double, 3>{0, 0, 0})
+    r.fail(index_path(o.at("keyframes"), 0) + ".offset", "must be [0, 0, 0]: the pins start at rest");
+  return p;
+}
+
 Collider parse_collider(const Reader& r, const json& j, const std::string& path) {
   const Object o(r, j, path,
-                 {"shape", "motion", "position", "radius", "half_extents", "normal", "velocity", "mass", "friction"});
+                 {"shape", "motion", "position", "radius", "half_extents", "normal", "velocity", "path", "mass",
+                  "friction"});
   Collider c;
   c.shape = r.choice<ColliderShape>(
       o.need("shape"), o.at("shape"),
@@ -170,6 +252,14 @@ Collider parse_collider(const Reader& r, const json& j, const std::string& path)
   if (o.find("velocity") && c.motion == ColliderMotion::kStatic)
     r.fail(o.at("velocity"), "a static collider has no velocity");
   c.velocity = read_vector(r, o, "velocity", kAnyFinite, c.velocity);
+  if (const json* keys = o.find("path")) {
+    if (c.motion != ColliderMotion::kKinematic) r.fail(o.at("path"), "only for a kinematic collider");
+    // The path gives every position; a velocity or a fixed position beside it would be silently ignored.
+    for (const char* fixed : {"velocity", "position"})
+      if (o.find(fixed)) r.fail(o.at(fixed), "not with a path (each keyframe gives its own position)");
+    c.path = parse_vector_keys(r, *keys, o.at("path"), "position");
+    c.position = value_at(c.path, 0);  // where it starts
+  }
   if (o.find("mass") && c.motion != ColliderMotion::kDynamic) r.fail(o.at("mass"), "only for a dynamic collider");
   o.read("mass", c.mass, kPositive);
   o.read("friction", c.friction, kUnit);
@@ -207,16 +297,11 @@ Camera parse_camera(const Reader& r, const json& j, const std::string& path) {
     // A path gives every pose; a fixed position or target beside it would be silently ignored.
     for (const char* fixed : {"position", "target"})
       if (o.find(fixed)) r.fail(o.at(fixed), "not with a path (each keyframe gives its own)");
-    r.array(*keys, o.at("path"));
-    constexpr std::size_t kMaxKeys = 10000;
-    if (keys->size() > kMaxKeys)
-      r.fail(o.at("path"), "at most " + std::to_string(kMaxKeys) + " keyframes, got " + std::to_string(keys->size()));
-    for (std::size_t i = 0; i < keys->size(); ++i) {
+    const std::size_t count = keyframe_count(r, *keys, o.at("path"));
+    for (std::size_t i = 0; i < count; ++i) {
       const Object key(r, (*keys)[i], index_path(o.at("path"), i), {"time", "position", "target"});
       CameraKey k;
-      key.read("time", k.time, kNonNegative, true);
-      if (!c.path.empty() && !(k.time > c.path.back().time))
-        r.fail(key.at("time"), "must be later than the keyframe before (" + fmt_number(c.path.back().time) + ")");
+      k.time = parse_key_time(r, key, c.path.empty() ? nullptr : &c.path.back().time);
       k.pose = parse_camera_pose(r, key, c.up);
       c.path.push_back(k);
     }
@@ -249,7 +334,7 @@ Wind parse_wind(const Reader& r, const json& j, const std::string& path) {
 }
 
 SceneSettings parse_scene(const Reader& r, const json& j) {
-  const Object o(r, j, "scene", {"colliders", "margin", "friction", "sdf_voxel", "camera", "wind"});
+  const Object o(r, j, "scene", {"colliders", "margin", "friction", "sdf_voxel", "camera", "wind", "pin_path"});
   SceneSettings scene;
   if (const json* colliders = o.find("colliders")) {
     r.array(*colliders, o.at("colliders"), EmptyArray::kAllowed);
@@ -267,6 +352,7 @@ SceneSettings parse_scene(const Reader& r, const json& j) {
   o.read("sdf_voxel", scene.sdf_voxel, NumberRange{0.001, false, 10.0, false});
   if (const json* camera = o.find("camera")) scene.camera = parse_camera(r, *camera, o.at("camera"));
   if (const json* wind = o.find("wind")) scene.wind = parse_wind(r, *wind, o.at("wind"));
+  if (const json* pins = o.find("pin_path")) scene.pin_path = parse_pin_path(r, *pins, o.at("pin_path"));
   return scene;
 }
 

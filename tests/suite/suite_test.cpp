@@ -252,6 +252,20 @@ TEST(SuiteParse, PinnedMassAndSettingForms) {
   EXPECT_EQ(parse_suite_text(j.dump(), "forms.json").nets[0].pinned_corners, 0u);
 }
 
+TEST(SuiteParse, PinnedEdgeAndListedNodes) {
+  json j = minimal();  // a 9 x 5 net
+  j["nets"][0]["pinned"] = {{"edge", "min_z"}};
+  const NetSpec edge = parse_suite_text(j.dump(), "pins.json").nets[0];
+  EXPECT_EQ(edge.pinned_corners, 0u);
+  EXPECT_EQ(edge.pinned_edges, unsigned{kEdgeMinZ});
+  EXPECT_TRUE(edge.pinned_nodes.empty());
+  j["nets"][0]["pinned"] = json::parse(R"({"nodes": [[4, 2], [8, 0]]})");
+  const NetSpec listed = parse_suite_text(j.dump(), "pins.json").nets[0];
+  EXPECT_EQ(listed.pinned_corners, 0u);
+  EXPECT_EQ(listed.pinned_edges, 0u);
+  EXPECT_EQ(listed.pinned_nodes, (std::vector<GridNode>{{4, 2}, {8, 0}}));
+}
+
 TEST(SuiteParse, MethodNames) {
   EXPECT_STREQ(method_name(Method::kPlain), "plain");
   EXPECT_STREQ(method_name(Method::kBulletPatch), "bullet_patch");
@@ -437,6 +451,65 @@ TEST(SuiteReject, SceneFields) {
   for (int i = 0; i < 65; ++i) many.push_back({{"shape", "sphere"}});
   rejected_edit([&](json& j) { j["scene"] = {{"colliders", many}}; }, "scene.colliders");
   rejected_edit([](json& j) { j["feedback"] = {{"contact_saliency", 2}}; }, "feedback.contact_saliency");
+}
+
+TEST(SuiteParse, PinPathAndKeyframedCollider) {
+  json j = minimal();
+  EXPECT_FALSE(parse_suite_text(j.dump(), "plain.json").scene.pin_path.moves());  // pins at rest by default
+  j["scene"] = json::parse(R"({"pin_path": {"velocity": [0, 0.5, 0]}, "colliders": [
+      {"shape": "box", "motion": "kinematic", "path": [{"time": 0, "position": [0, -1, 0]},
+                                                      {"time": 2, "position": [1, -1, 0]}]}]})");
+  const Suite s = parse_suite_text(j.dump(), "paths.json");
+  EXPECT_TRUE(s.scene.pin_path.moves());
+  EXPECT_EQ(s.scene.pin_path.offset_at(2.0), (std::array<double, 3>{0, 1, 0}));
+  const Collider& box = s.scene.colliders[0];
+  ASSERT_EQ(box.path.size(), 2u);
+  EXPECT_EQ(box.position, (std::array<double, 3>{0, -1, 0}));  // where the path starts
+  EXPECT_EQ(collider_name(box), "kinematic box on a path of 2 keyframes");
+  j["scene"] = json::parse(R"({"pin_path": {"keyframes": [{"time": 0, "offset": [0, 0, 0]},
+                                                           {"time": 1, "offset": [0.5, 0, 0]}]}})");
+  const PinPath keyed = parse_suite_text(j.dump(), "paths.json").scene.pin_path;
+  ASSERT_EQ(keyed.keyframes.size(), 2u);
+  EXPECT_EQ(keyed.offset_at(0.5), (std::array<double, 3>{0.25, 0, 0}));
+  EXPECT_EQ(keyed.offset_at(3.0), (std::array<double, 3>{0.5, 0, 0}));  // held after the last
+}
+
+TEST(SuiteReject, PinPathAndColliderPath) {
+  const auto scene = [](const char* text) { return [text](json& j) { j["scene"] = json::parse(text); }; };
+  rejected_edit(scene(R"({"pin_path": {}})"), "scene.pin_path");
+  rejected_edit(scene(R"({"pin_path": {"speed": [1, 0, 0]}})"), "scene.pin_path.speed");
+  rejected_edit(scene(R"({"pin_path": {"velocity": [0, 0, 0]}})"), "scene.pin_path.velocity");
+  rejected_edit(scene(R"({"pin_path": {"velocity": [1, 0]}})"), "scene.pin_path.velocity");
+  rejected_edit(scene(R"({"pin_path": {"velocity": [1, 0, 0], "keyframes": [{"time": 0, "offset": [0, 0, 0]}]}})"),
+                "scene.pin_path");
+  rejected_edit(scene(R"({"pin_path": {"keyframes": []}})"), "scene.pin_path.keyframes");
+  rejected_edit(scene(R"({"pin_path": {"keyframes": [{"time": 0, "offset": [1, 0, 0]}]}})"),
+                "scene.pin_path.keyframes[0].offset");
+  rejected_edit(
+      scene(R"({"pin_path": {"keyframes": [{"time": 0, "offset": [0, 0, 0]}, {"time": 0, "offset": [1, 0, 0]}]}})"),
+      "scene.pin_path.keyframes[1].time");
+  rejected_edit(scene(R"({"pin_path": {"keyframes": [{"time": -1, "offset": [0, 0, 0]}]}})"),
+                "scene.pin_path.keyframes[0].time");
+  rejected_edit(scene(R"({"pin_path": {"keyframes": [{"time": 0}]}})"), "scene.pin_path.keyframes[0].offset");
+  rejected_edit(scene(R"({"pin_path": {"keyframes": [{"time": 0, "offset": [0, 0, 0], "spin": 1}]}})"),
+                "scene.pin_path.keyframes[0].spin");
+  const char* two_keys = R"([{"time": 0, "position": [0, 0, 0]}, {"time": 1, "position": [1, 0, 0]}])";
+  const auto box = [two_keys](const char* extra) {
+    return [=](json& j) {
+      json c = json::parse(std::string(R"({"shape": "box", "motion": "kinematic"})"));
+      c.update(json::parse(extra));
+      if (!c.contains("path")) c["path"] = json::parse(two_keys);
+      j["scene"] = {{"colliders", {c}}};
+    };
+  };
+  rejected_edit(box(R"({"velocity": [1, 0, 0]})"), "scene.colliders[0].velocity");  // not both
+  rejected_edit(box(R"({"position": [1, 0, 0]})"), "scene.colliders[0].position");
+  rejected_edit(box(R"({"motion": "static"})"), "scene.colliders[0].path");
+  rejected_edit(box(R"({"motion": "dynamic"})"), "scene.colliders[0].path");
+  rejected_edit(box(R"({"path": []})"), "scene.colliders[0].path");
+  rejected_edit(box(R"({"path": [{"time": 1, "position": [0, 0, 0]}, {"time": 0.5, "position": [1, 0, 0]}]})"),
+                "scene.colliders[0].path[1].time");
+  rejected_edit(box(R"({"path": [{"time": 0, "position": [0, "up", 0]}]})"), "scene.colliders[0].path[0].position[1]");
 }
 
 TEST(SuiteParse, Wind) {
@@ -651,6 +724,17 @@ TEST(SuiteReject, OtherRanges) {
   rejected_edit([](json& j) { j["nets"][0]["pinned"] = "edges"; }, "nets[0].pinned");
   rejected_edit([](json& j) { j["nets"][0]["pinned"] = {"min_min", "middle"}; }, "nets[0].pinned[1]");
   rejected_edit([](json& j) { j["nets"][0]["pinned"] = {"min_min", "min_min"}; }, "nets[0].pinned[1]");
+  const auto pinned = [](const char* text) { return [text](json& j) { j["nets"][0]["pinned"] = json::parse(text); }; };
+  rejected_edit(pinned(R"({"edge": "left"})"), "nets[0].pinned.edge");
+  rejected_edit(pinned(R"({"edge": "min_x", "nodes": [[0, 0]]})"), "nets[0].pinned");
+  rejected_edit(pinned(R"({})"), "nets[0].pinned");
+  rejected_edit(pinned(R"({"corner": "min_min"})"), "nets[0].pinned.corner");
+  rejected_edit(pinned(R"({"nodes": []})"), "nets[0].pinned.nodes");
+  rejected_edit(pinned(R"({"nodes": [[1, 1], [9, 0]]})"), "nets[0].pinned.nodes[1][0]");  // the net is 9 x 5
+  rejected_edit(pinned(R"({"nodes": [[1, 5]]})"), "nets[0].pinned.nodes[0][1]");
+  rejected_edit(pinned(R"({"nodes": [[1, 1], [1, 1]]})"), "nets[0].pinned.nodes[1]");
+  rejected_edit(pinned(R"({"nodes": [[1, 1, 0]]})"), "nets[0].pinned.nodes[0]");
+  rejected_edit(pinned(R"({"nodes": [[1.5, 1]]})"), "nets[0].pinned.nodes[0][0]");
 }
 
 TEST(SuiteReject, MissingRequired) {
