@@ -5,7 +5,8 @@
 namespace tcsb {
 
 LodTree::LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_rest, std::span<const double> leaf_mass,
-                 std::span<const std::uint8_t> leaf_pinned) {
+                 std::span<const std::uint8_t> leaf_pinned, RestPlacement placement)
+    : placement_(placement) {
   if (width < 1 || height < 1) throw std::invalid_argument("LodTree: grid must be at least 1x1");
   const std::size_t leaves = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   if (leaf_rest.size() != leaves || leaf_mass.size() != leaves || leaf_pinned.size() != leaves)
@@ -73,7 +74,20 @@ LodTree::LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_re
         centroid_[i] = n.mass > 0 ? Eigen::Vector3d(weighted / n.mass) : Eigen::Vector3d::Zero();
         if (n.pinned_leaf_count != 1) n.anchor_leaf = kNoTreeNode;
         rest_[i] = n.anchor_leaf != kNoTreeNode ? rest(n.anchor_leaf) : centroid_[i];
-        if (n.anchor_leaf == kNoTreeNode) {
+        if (n.anchor_leaf == kNoTreeNode && placement == RestPlacement::kVertex) {
+          // On the first leaf, or on the last border along an axis the block touches only there: leaf columns and
+          // rows 0, 2^k, 2 * 2^k, ... (docs/investigations/lod-rest-placement.md). Along an axis the block spans
+          // whole, its centroid.
+          const bool span_x = n.leaf_x0 == 0 && n.leaf_x1 == width, span_y = n.leaf_y0 == 0 && n.leaf_y1 == height;
+          const int vx = n.leaf_x1 == width ? width - 1 : n.leaf_x0, vy = n.leaf_y1 == height ? height - 1 : n.leaf_y0;
+          const Eigen::Vector3d& vertex = leaf_rest[static_cast<std::size_t>(at(0, vx, vy))];
+          if (!span_x && !span_y) {
+            rest_[i] = vertex;
+          } else {
+            if (!span_x) rest_[i].x() = vertex.x();
+            if (!span_y) rest_[i].z() = vertex.z();
+          }
+        } else if (n.anchor_leaf == kNoTreeNode) {
           // A block touching one border along an axis rests on that border, as a uniform grid's edge node does
           // (docs/methodology.md, "Why calibrated TC-SB errs more than the calibrated grid").
           if ((n.leaf_x0 == 0) != (n.leaf_x1 == width))

@@ -40,27 +40,41 @@ struct alignas(64) LodNode {
 };
 static_assert(sizeof(LodNode) == 64, "one LOD node per cache line");
 
+/// Where a block's node rests (LodTree::rest()). kCentroid: at its leaves' centroid, on the border along an axis
+/// where the block touches one border. kVertex: on its first leaf (min x, min z), on the last leaf along an axis
+/// where the block touches only the max border, so that every whole-level cut of a (2^k m + 1)-wide net is an evenly
+/// spaced sub-grid of the leaves. Both rest a block holding one pinned leaf on that leaf.
+enum class RestPlacement : std::uint8_t { kCentroid, kVertex };
+
 /// The LOD hierarchy of one grid. Built once in O(N), immutable afterwards.
 class LodTree {
  public:
   /// Builds the tree over a width x height grid whose leaves have the given rest positions, masses and pins.
   LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_rest, std::span<const double> leaf_mass,
-          std::span<const std::uint8_t> leaf_pinned);
+          std::span<const std::uint8_t> leaf_pinned, RestPlacement placement = RestPlacement::kCentroid);
 
   /// All nodes, leaves first, then level by level, row-major within a level.
   std::span<const LodNode> nodes() const { return nodes_; }
   const LodNode& node(TreeId id) const { return nodes_[static_cast<std::size_t>(id)]; }
   /// Mass-weighted centroid of the node's leaves' rest positions.
   const Eigen::Vector3d& centroid(TreeId id) const { return centroid_[static_cast<std::size_t>(id)]; }
-  /// Where the node rests when simulated: its centroid, except that a block holding one pinned leaf rests on that
-  /// leaf, so a pinned corner stays exactly fixed whatever level represents it, and that a block touching one
-  /// border of the net along an axis rests on that border along that axis (x for the first and last columns, z
-  /// for the first and last rows), as a uniform grid's edge nodes do. Leaves rest where the net puts them.
+  /// Where the node rests when simulated. A block holding one pinned leaf rests on that leaf, so a pinned corner
+  /// stays exactly fixed whatever level represents it. Otherwise, with RestPlacement::kCentroid, at its centroid,
+  /// except that a block touching one border of the net along an axis rests on that border along that axis (x for
+  /// the first and last columns, z for the first and last rows), as a uniform grid's edge nodes do; with
+  /// RestPlacement::kVertex, on its first leaf, or along an axis where it touches only the last border, on that
+  /// border (along an axis where it spans the whole net, at its centroid). Leaves rest where the net puts them.
   const Eigen::Vector3d& rest(TreeId id) const { return rest_[static_cast<std::size_t>(id)]; }
-  /// Whether the node's block touches a border of the net: only such a block can rest away from its centroid when
-  /// it holds no pin. Reads the node alone (not the rest and centroid arrays, which an operation avoids).
+  RestPlacement placement() const { return placement_; }
+  /// Whether the node's block touches a border of the net. Reads the node alone (not the rest and centroid arrays,
+  /// which an operation avoids).
   bool touches_border(const LodNode& n) const {
     return n.leaf_x0 == 0 || n.leaf_y0 == 0 || n.leaf_x1 == level_width_[0] || n.leaf_y1 == level_height_[0];
+  }
+  /// Whether a block without a pin may rest away from its centroid: with kCentroid only a block touching a border,
+  /// with kVertex every block of more than one leaf. Reads the node alone, as touches_border() does.
+  bool may_rest_off_centroid(const LodNode& n) const {
+    return placement_ == RestPlacement::kVertex || touches_border(n);
   }
   std::size_t size() const { return nodes_.size(); }
   std::size_t leaf_count() const { return static_cast<std::size_t>(level_width_[0]) * level_height_[0]; }
@@ -90,6 +104,7 @@ class LodTree {
   std::vector<std::int32_t> spatial_rank_;        // per node
   std::vector<int> level_width_, level_height_;
   std::vector<TreeId> level_offset_;
+  RestPlacement placement_ = RestPlacement::kCentroid;
 };
 
 }  // namespace tcsb

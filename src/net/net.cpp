@@ -6,7 +6,7 @@
 
 namespace tcsb {
 
-Net::Net(const NetSpec& spec) : spec_(spec) {
+Net::Net(const NetSpec& spec, RestPlacement rest) : spec_(spec) {
   const int w = spec.width, h = spec.height;
   if (w < 2 || h < 2) throw std::invalid_argument("Net: width and height must be >= 2");
   if (!(spec.size_x > 0) || !(spec.size_z > 0) || !(spec.mass > 0))
@@ -39,7 +39,7 @@ Net::Net(const NetSpec& spec) : spec_(spec) {
       }
     }
   }
-  lod_ = std::make_unique<const LodTree>(w, h, rest_, mass_, pinned_);
+  lod_ = std::make_unique<const LodTree>(w, h, rest_, mass_, pinned_, rest);
 }
 
 double Net::total_mass() const {

@@ -25,8 +25,9 @@ struct NetLink {
 /// The immutable net: rest positions, masses, pins, links in their canonical order, and the LOD tree.
 class Net {
  public:
-  /// Builds the net in O(N). Throws std::invalid_argument on a spec the suite parser should have rejected.
-  explicit Net(const NetSpec& spec);
+  /// Builds the net in O(N), its LOD tree's blocks resting as `rest` says (LodTree::rest()). Throws
+  /// std::invalid_argument on a spec the suite parser should have rejected.
+  explicit Net(const NetSpec& spec, RestPlacement rest = RestPlacement::kCentroid);
 
   const NetSpec& spec() const { return spec_; }
   int width() const { return spec_.width; }

@@ -49,13 +49,14 @@ inline Eigen::Vector3d fitted_arrival(std::span<const Eigen::Vector3d> x, std::s
 }
 
 /// Where `parent`'s node appears when its children, at positions `child_x` (in children order), coarsen into it, if
-/// that is not their centre of mass: fitted_arrival() for a block without a pin that rests off its centroid on the
-/// net's border; nullopt for every other block (and for children without mass). The one rule of begin_coarse and the
+/// that is not their centre of mass: fitted_arrival() for a block without a pin that rests off its centroid (on the
+/// net's border, or anywhere with RestPlacement::kVertex); nullopt for every other block (and for children without
+/// mass). The one rule of begin_coarse and the
 /// feedback's jump estimate.
 inline std::optional<Eigen::Vector3d> border_arrival(const LodTree& tree, TreeId parent,
                                                      std::span<const Eigen::Vector3d> child_x) {
   const LodNode& p = tree.node(parent);
-  if (p.pinned() || !tree.touches_border(p) || tree.rest(parent) == tree.centroid(parent)) return std::nullopt;
+  if (p.pinned() || !tree.may_rest_off_centroid(p) || tree.rest(parent) == tree.centroid(parent)) return std::nullopt;
   std::array<Eigen::Vector3d, 4> rest;
   std::array<double, 4> mass;
   double total = 0;

@@ -56,21 +56,24 @@ void deform_affinely(TcSoftBody& body) {
 }
 
 TEST(Reconstruction, FinestCutEqualsThePlainBodyExactly) {
-  const auto net = square_net(33);
-  SceneWorld world(world_settings(9.81));
-  TcSoftBody tc(world.info(), net, test_solver(), {});
-  auto plain = make_plain_softbody(world.info(), *net, test_solver());
-  for (int s = 0; s < 60; ++s) {
-    tc.advance_blends();
-    tc.simulate_step(kDt);
-    step_soft_body(*plain, kDt);
+  for (const RestPlacement rest : {RestPlacement::kCentroid, RestPlacement::kVertex}) {
+    SCOPED_TRACE(rest == RestPlacement::kVertex ? "vertex rest" : "centroid rest");
+    const auto net = square_net(33, kAllCorners, rest);
+    SceneWorld world(world_settings(9.81));
+    TcSoftBody tc(world.info(), net, test_solver(), {});
+    auto plain = make_plain_softbody(world.info(), *net, test_solver());
+    for (int s = 0; s < 60; ++s) {
+      tc.advance_blends();
+      tc.simulate_step(kDt);
+      step_soft_body(*plain, kDt);
+    }
+    std::vector<Eigen::Vector3d> leaves, positions;
+    reconstruct_leaves(tc, leaves);
+    copy_positions(*plain, positions);
+    ASSERT_EQ(leaves.size(), positions.size());
+    for (std::size_t i = 0; i < leaves.size(); ++i) ASSERT_EQ(leaves[i], positions[i]) << "leaf " << i;
+    EXPECT_LT(positions[16 * 33 + 16].y(), 7.0);  // the net did fall: the equality is not of two resting nets
   }
-  std::vector<Eigen::Vector3d> leaves, positions;
-  reconstruct_leaves(tc, leaves);
-  copy_positions(*plain, positions);
-  ASSERT_EQ(leaves.size(), positions.size());
-  for (std::size_t i = 0; i < leaves.size(); ++i) ASSERT_EQ(leaves[i], positions[i]) << "leaf " << i;
-  EXPECT_LT(positions[16 * 33 + 16].y(), 7.0);  // the net did fall: the equality is not of two resting nets
 }
 
 TEST(Reconstruction, LeavesInTheCutMapToThemselvesExactly) {
@@ -97,22 +100,24 @@ TEST(Reconstruction, LeavesInTheCutMapToThemselvesExactly) {
 }
 
 TEST(Reconstruction, ReproducesAnAffineFieldFromAnyCutWhateverThePlacement) {
-  for (const Placement placement : {Placement::kAffine, Placement::kRigid}) {
-    const auto net = square_net(33);
-    SceneWorld world(world_settings(0.0));
-    TcSettings settings;
-    settings.placement = placement;
-    TcSoftBody tc(world.info(), net, test_solver(), settings);
-    coarsen_to(tc, 33 * 33 / 4, 11);
-    ASSERT_LT(tc.committed_count(), 33 * 33 / 3);
-    deform_affinely(tc);
-    std::vector<Eigen::Vector3d> leaves;
-    reconstruct_leaves(tc, leaves);
-    double worst = 0;
-    for (TreeId leaf = 0; leaf < static_cast<TreeId>(net->node_count()); ++leaf)
-      worst = std::max(worst, (leaves[static_cast<std::size_t>(leaf)] - affine(net->lod().rest(leaf))).norm());
-    EXPECT_LT(worst, 2e-5) << (placement == Placement::kRigid ? "rigid" : "affine");  // float positions
-  }
+  for (const RestPlacement rest : {RestPlacement::kCentroid, RestPlacement::kVertex})
+    for (const Placement placement : {Placement::kAffine, Placement::kRigid}) {
+      SCOPED_TRACE(rest == RestPlacement::kVertex ? "vertex rest" : "centroid rest");
+      const auto net = square_net(33, kAllCorners, rest);
+      SceneWorld world(world_settings(0.0));
+      TcSettings settings;
+      settings.placement = placement;
+      TcSoftBody tc(world.info(), net, test_solver(), settings);
+      coarsen_to(tc, 33 * 33 / 4, 11);
+      ASSERT_LT(tc.committed_count(), 33 * 33 / 3);
+      deform_affinely(tc);
+      std::vector<Eigen::Vector3d> leaves;
+      reconstruct_leaves(tc, leaves);
+      double worst = 0;
+      for (TreeId leaf = 0; leaf < static_cast<TreeId>(net->node_count()); ++leaf)
+        worst = std::max(worst, (leaves[static_cast<std::size_t>(leaf)] - affine(net->lod().rest(leaf))).norm());
+      EXPECT_LT(worst, 2e-5) << (placement == Placement::kRigid ? "rigid" : "affine");  // float positions
+    }
 }
 
 TEST(Reconstruction, CoversTheNetWhileOperationsBlend) {
@@ -149,17 +154,38 @@ double popping_over_operations(TcSoftBody& tc, int boundaries, int target) {
   return worst;
 }
 
-TEST(Popping, IsZeroForOperationsOnANetAtRest) {
-  for (const Placement placement : {Placement::kAffine, Placement::kRigid}) {
-    const auto net = square_net(33);
+TEST(Reconstruction, ANetAtRestReconstructsAtRestWhereverItsBlocksRest) {
+  // A multi-level cut of a flat net without gravity: every leaf reconstructs onto its rest position, whether the
+  // blocks rest at their centroids or on their first leaves (LodTree::rest()).
+  for (const RestPlacement rest : {RestPlacement::kCentroid, RestPlacement::kVertex}) {
+    SCOPED_TRACE(rest == RestPlacement::kVertex ? "vertex rest" : "centroid rest");
+    const auto net = square_net(33, kAllCorners, rest);
     SceneWorld world(world_settings(0.0));
-    TcSettings settings;
-    settings.placement = placement;
-    TcSoftBody tc(world.info(), net, test_solver(), settings);
-    // Down to a quarter and back up to three quarters: coarse, refine and both end operations.
-    EXPECT_LT(popping_over_operations(tc, 60, 33 * 33 / 4), 1e-5);
-    EXPECT_LT(popping_over_operations(tc, 60, 3 * 33 * 33 / 4), 1e-5);
+    TcSoftBody tc(world.info(), net, test_solver(), {});
+    coarsen_to(tc, 33 * 33 / 5, 3);
+    ASSERT_LT(tc.committed_count(), 33 * 33 / 3);
+    for (int s = 0; s < 10; ++s) tc.simulate_step(kDt);
+    std::vector<Eigen::Vector3d> leaves;
+    reconstruct_leaves(tc, leaves);
+    double worst = 0;
+    for (TreeId leaf = 0; leaf < static_cast<TreeId>(net->node_count()); ++leaf)
+      worst = std::max(worst, (leaves[static_cast<std::size_t>(leaf)] - net->lod().rest(leaf)).norm());
+    EXPECT_LT(worst, 1e-5 * net->extent());
   }
+}
+
+TEST(Popping, IsZeroForOperationsOnANetAtRest) {
+  for (const RestPlacement rest : {RestPlacement::kCentroid, RestPlacement::kVertex})
+    for (const Placement placement : {Placement::kAffine, Placement::kRigid}) {
+      const auto net = square_net(33, kAllCorners, rest);
+      SceneWorld world(world_settings(0.0));
+      TcSettings settings;
+      settings.placement = placement;
+      TcSoftBody tc(world.info(), net, test_solver(), settings);
+      // Down to a quarter and back up to three quarters: coarse, refine and both end operations.
+      EXPECT_LT(popping_over_operations(tc, 60, 33 * 33 / 4), 1e-5);
+      EXPECT_LT(popping_over_operations(tc, 60, 3 * 33 * 33 / 4), 1e-5);
+    }
 }
 
 TEST(Popping, AffinePlacementDoesNotPopOnAnAffineFieldButRigidPlacementDoes) {

@@ -20,7 +20,8 @@ struct Size {
 const std::vector<Size> kSizes = {{2, 2}, {3, 3},  {2, 9},   {9, 2},   {4, 8},  {16, 16},
                                   {5, 7}, {17, 9}, {33, 17}, {65, 65}, {64, 32}};
 
-std::unique_ptr<Net> make_net(int w, int h, unsigned pins = kAllCorners, MassMode mode = MassMode::kTotal) {
+std::unique_ptr<Net> make_net(int w, int h, unsigned pins = kAllCorners, MassMode mode = MassMode::kTotal,
+                              RestPlacement rest = RestPlacement::kCentroid) {
   NetSpec spec;
   spec.width = w;
   spec.height = h;
@@ -28,7 +29,7 @@ std::unique_ptr<Net> make_net(int w, int h, unsigned pins = kAllCorners, MassMod
   spec.mass_mode = mode;
   spec.size_x = 7.0;
   spec.size_z = 3.0;
-  return std::make_unique<Net>(spec);
+  return std::make_unique<Net>(spec, rest);
 }
 
 std::string label(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
@@ -353,6 +354,78 @@ TEST(LodTree, BlocksOnTheBorderRestOnIt) {
     // The root touches both borders along each axis: its centroid.
     EXPECT_EQ(t.rest(t.root()), t.centroid(t.root()));
   }
+}
+
+TEST(LodTree, VertexBlocksRestOnTheirFirstLeafOrOnTheLastBorder) {
+  for (const Size sz : kSizes)
+    for (const unsigned pins : {unsigned(kAllCorners), unsigned(kCornerMaxMin), 0u}) {
+      SCOPED_TRACE(label(sz.w, sz.h) + " pins " + std::to_string(pins));
+      const auto net = make_net(sz.w, sz.h, pins, MassMode::kTotal, RestPlacement::kVertex);
+      const LodTree& tree = net->lod();
+      ASSERT_EQ(tree.placement(), RestPlacement::kVertex);
+      const auto leaf = [&](int x, int y) { return net->rest_positions()[static_cast<std::size_t>(net->index(x, y))]; };
+      for (std::size_t i = 0; i < tree.size(); ++i) {
+        const auto id = static_cast<TreeId>(i);
+        const LodNode& n = tree.node(id);
+        ASSERT_TRUE(tree.may_rest_off_centroid(n));
+        if (n.is_leaf()) {
+          ASSERT_EQ(tree.rest(id), leaf(n.gx, n.gy)) << "leaf " << id;
+          continue;
+        }
+        if (n.pinned_leaf_count == 1) {  // on its pinned leaf, as with centroid placement
+          ASSERT_EQ(tree.rest(id), net->rest_positions()[static_cast<std::size_t>(n.anchor_leaf)]) << "node " << id;
+          continue;
+        }
+        const bool span_x = n.leaf_x0 == 0 && n.leaf_x1 == net->width();
+        const bool span_y = n.leaf_y0 == 0 && n.leaf_y1 == net->height();
+        const int vx = n.leaf_x1 == net->width() ? net->width() - 1 : n.leaf_x0;
+        const int vy = n.leaf_y1 == net->height() ? net->height() - 1 : n.leaf_y0;
+        Eigen::Vector3d expected = tree.centroid(id);
+        if (!span_x && !span_y) {
+          expected = leaf(vx, vy);
+        } else {
+          if (!span_x) expected.x() = leaf(vx, vy).x();
+          if (!span_y) expected.z() = leaf(vx, vy).z();
+        }
+        ASSERT_EQ(tree.rest(id), expected) << "node " << id;
+      }
+      // The rest placement changes where blocks rest, nothing else of the tree.
+      const auto centroid_net = make_net(sz.w, sz.h, pins);
+      for (std::size_t i = 0; i < tree.size(); ++i) {
+        const auto id = static_cast<TreeId>(i);
+        ASSERT_EQ(tree.node(id).mass, centroid_net->lod().node(id).mass);
+        ASSERT_EQ(tree.node(id).anchor_leaf, centroid_net->lod().node(id).anchor_leaf);
+        ASSERT_EQ(tree.centroid(id), centroid_net->lod().centroid(id));
+        ASSERT_EQ(tree.spatial_rank(id), centroid_net->lod().spatial_rank(id));
+        if (tree.node(id).is_leaf()) ASSERT_EQ(tree.rest(id), centroid_net->lod().rest(id));
+      }
+    }
+}
+
+TEST(LodTree, VertexWholeLevelCutsOfPowerOfTwoPlusOneNetsAreEvenlySpacedSubGrids) {
+  // A (2^k m + 1)-wide net: level l <= k rests on leaf columns and rows 0, 2^l, 2 * 2^l, ..., the last one included
+  // (a partial block of one leaf), pinned corners too. Centroid placement does not: level 1 of 45 wide rests at
+  // leaves 0, 2.5, 4.5, ..., 42.5, 44.
+  for (const Size sz : std::vector<Size>{{45, 45}, {33, 17}, {81, 81}, {9, 5}})
+    for (const unsigned pins : {unsigned(kAllCorners), 0u}) {
+      SCOPED_TRACE(label(sz.w, sz.h) + " pins " + std::to_string(pins));
+      const auto net = make_net(sz.w, sz.h, pins, MassMode::kTotal, RestPlacement::kVertex);
+      const LodTree& tree = net->lod();
+      const auto leaf = [&](int x, int y) { return net->rest_positions()[static_cast<std::size_t>(net->index(x, y))]; };
+      int levels = 0;
+      for (int l = 1; (sz.w - 1) % (1 << l) == 0 && (sz.h - 1) % (1 << l) == 0; ++l, ++levels) {
+        const int step = 1 << l;
+        ASSERT_EQ(tree.level_width(l), (sz.w - 1) / step + 1);
+        ASSERT_EQ(tree.level_height(l), (sz.h - 1) / step + 1);
+        for (int gy = 0; gy < tree.level_height(l); ++gy)
+          for (int gx = 0; gx < tree.level_width(l); ++gx)
+            ASSERT_EQ(tree.rest(tree.at(l, gx, gy)), leaf(step * gx, step * gy))
+                << "level " << l << " " << gx << "," << gy;
+      }
+      EXPECT_GE(levels, 1);
+      const auto centroid_net = make_net(sz.w, sz.h, pins);
+      EXPECT_NE(centroid_net->lod().rest(centroid_net->lod().at(1, 1, 1)), leaf(2, 2));
+    }
 }
 
 TEST(LodTree, BlocksHoldingTwoCornersAreNotSimulable) {

@@ -171,64 +171,67 @@ TEST(TcSoftBody, EachOperationConservesMassAndLinearMomentum) {
 }
 
 TEST(TcSoftBody, FlatNetAtRestStaysAtRestThroughOperations) {
-  const auto net = testing::square_net(33);
   WorldSettings no_gravity;
   no_gravity.gravity = 0;
   SceneWorld world(no_gravity);
-  for (Placement placement : {Placement::kAffine, Placement::kRigid}) {
-    TcSettings settings;
-    settings.placement = placement;
-    TcSoftBody tc(world.info(), net, testing::test_solver(), settings);
-    RandomPolicy policy(7);
-    for (int s = 0; s < 600; ++s) {
-      const int target = (s / 100) % 2 == 0 ? 300 : 1000;  // swing between coarse and fine cuts
-      step_with_random_ops(tc, policy, target, 16);
+  for (const RestPlacement rest : {RestPlacement::kCentroid, RestPlacement::kVertex})
+    for (Placement placement : {Placement::kAffine, Placement::kRigid}) {
+      SCOPED_TRACE(rest == RestPlacement::kVertex ? "vertex" : "centroid");
+      const auto net = testing::square_net(33, kAllCorners, rest);
+      TcSettings settings;
+      settings.placement = placement;
+      TcSoftBody tc(world.info(), net, testing::test_solver(), settings);
+      RandomPolicy policy(7);
+      for (int s = 0; s < 600; ++s) {
+        const int target = (s / 100) % 2 == 0 ? 300 : 1000;  // swing between coarse and fine cuts
+        step_with_random_ops(tc, policy, target, 16);
+      }
+      double drift = 0;
+      for (int i = 0; i < tc.node_count(); ++i) {
+        const TreeId id = tc.tree_id(i);
+        const Eigen::Vector3d& rest = net->lod().rest(id);
+        const btVector3& x = tc.m_nodes[i].m_x;
+        drift = std::max(drift, (Eigen::Vector3d(x.x(), x.y(), x.z()) - rest).norm());
+      }
+      EXPECT_LT(drift, 1e-5 * net->extent());
+      EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
     }
-    double drift = 0;
-    for (int i = 0; i < tc.node_count(); ++i) {
-      const TreeId id = tc.tree_id(i);
-      const Eigen::Vector3d& rest = net->lod().rest(id);
-      const btVector3& x = tc.m_nodes[i].m_x;
-      drift = std::max(drift, (Eigen::Vector3d(x.x(), x.y(), x.z()) - rest).norm());
-    }
-    EXPECT_LT(drift, 1e-5 * net->extent());
-    EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
-  }
 }
 
 TEST(TcSoftBody, CoarseNodesAppearAtTheirRestPositionsOnANetAtRest) {
   // Whole level-1, then level-2 cuts of a net at rest: every node, on the border too (where it rests on the border,
   // not at its block's centre of mass), appears at its rest position, so no link starts stretched.
-  for (const int side : {33, 34}) {
-    SCOPED_TRACE(side);
-    const auto net = testing::square_net(side);
-    SceneWorld world({});
-    TcSoftBody tc(world.info(), net, testing::test_solver(), {});
-    const LodTree& tree = tc.tree();
-    for (int level = 1; level <= 2; ++level) {
-      for (bool began = true; began;) {
-        began = false;
-        for (int gy = 0; gy < tree.level_height(level); ++gy)
-          for (int gx = 0; gx < tree.level_width(level); ++gx)
-            if (tc.can_coarsen(tree.at(level, gx, gy)).ok) {
-              tc.begin_coarse(tree.at(level, gx, gy));
-              began = true;
-            }
-        while (tc.interpolations() > 0) tc.advance_blends();
+  for (const RestPlacement rest : {RestPlacement::kCentroid, RestPlacement::kVertex})
+    for (const int side : {33, 34}) {
+      SCOPED_TRACE(std::to_string(side) + (rest == RestPlacement::kVertex ? " vertex" : " centroid"));
+      const auto net = testing::square_net(side, kAllCorners, rest);
+      SceneWorld world({});
+      TcSoftBody tc(world.info(), net, testing::test_solver(), {});
+      const LodTree& tree = tc.tree();
+      for (int level = 1; level <= 2; ++level) {
+        for (bool began = true; began;) {
+          began = false;
+          for (int gy = 0; gy < tree.level_height(level); ++gy)
+            for (int gx = 0; gx < tree.level_width(level); ++gx)
+              if (tc.can_coarsen(tree.at(level, gx, gy)).ok) {
+                tc.begin_coarse(tree.at(level, gx, gy));
+                began = true;
+              }
+          while (tc.interpolations() > 0) tc.advance_blends();
+        }
+        ASSERT_EQ(tc.node_count(), tree.level_width(level) * tree.level_height(level)) << "level " << level;
+        int on_border = 0;
+        for (int i = 0; i < tc.node_count(); ++i) {
+          const TreeId id = tc.tree_id(i);
+          const btVector3& x = tc.m_nodes[i].m_x;
+          EXPECT_LT((Eigen::Vector3d(x.x(), x.y(), x.z()) - tree.rest(id)).norm(), 1e-6 * net->extent())
+              << "level " << level << " node " << id;
+          on_border += tree.rest(id) != tree.centroid(id) && !tree.node(id).pinned();
+        }
+        EXPECT_GT(on_border, 0);
+        EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
       }
-      ASSERT_EQ(tc.node_count(), tree.level_width(level) * tree.level_height(level)) << "level " << level;
-      int on_border = 0;
-      for (int i = 0; i < tc.node_count(); ++i) {
-        const TreeId id = tc.tree_id(i);
-        const btVector3& x = tc.m_nodes[i].m_x;
-        EXPECT_LT((Eigen::Vector3d(x.x(), x.y(), x.z()) - tree.rest(id)).norm(), 1e-6 * net->extent())
-            << "level " << level << " node " << id;
-        on_border += tree.rest(id) != tree.centroid(id) && !tree.node(id).pinned();
-      }
-      EXPECT_GT(on_border, 0);
-      EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
     }
-  }
 }
 
 TEST(TcSoftBody, RefiningEverythingBackGivesThePlainCounts) {
@@ -257,8 +260,9 @@ TEST(TcSoftBody, RefiningEverythingBackGivesThePlainCounts) {
 
 /// Random operations on a 65^2 net until `total` have begun or ended, validating every 20 steps; returns the
 /// largest number of interface constraints seen at a check.
-std::size_t random_operations_keep_every_invariant(Interfaces interfaces, long total) {
-  const auto net = testing::square_net(65);
+std::size_t random_operations_keep_every_invariant(Interfaces interfaces, long total,
+                                                   RestPlacement rest = RestPlacement::kCentroid) {
+  const auto net = testing::square_net(65, kAllCorners, rest);
   SceneWorld world({});
   TcSettings settings;
   settings.interfaces = interfaces;
@@ -313,6 +317,13 @@ TEST(TcSoftBodyProperty, HundredThousandRandomOperationsKeepEveryInvariant) {
 TEST(TcSoftBodyProperty, WithHangingInterfacesRandomOperationsKeepEveryInvariant) {
   // validate() checks the constraints too: handles, siblings, rest distances, one per coarse side, no fan left.
   EXPECT_GT(random_operations_keep_every_invariant(Interfaces::kHanging, 30000), 0u);
+}
+
+TEST(TcSoftBodyProperty, WithVertexRestPlacementRandomOperationsKeepEveryInvariant) {
+  // Every block rests on its first leaf (LodTree::rest()), off its centroid: each coarse node arrives by its
+  // children's fit, and fans and hanging interfaces are slanted at rest.
+  EXPECT_EQ(random_operations_keep_every_invariant(Interfaces::kLinks, 30000, RestPlacement::kVertex), 0u);
+  EXPECT_GT(random_operations_keep_every_invariant(Interfaces::kHanging, 30000, RestPlacement::kVertex), 0u);
 }
 
 }  // namespace

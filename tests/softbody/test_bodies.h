@@ -9,12 +9,13 @@
 
 namespace tcsb::testing {
 
-inline std::shared_ptr<const Net> square_net(int width, unsigned pinned = kAllCorners) {
+inline std::shared_ptr<const Net> square_net(int width, unsigned pinned = kAllCorners,
+                                             RestPlacement rest = RestPlacement::kCentroid) {
   NetSpec spec;
   spec.name = "test";
   spec.width = spec.height = width;
   spec.pinned_corners = pinned;
-  return std::make_shared<const Net>(spec);
+  return std::make_shared<const Net>(spec, rest);
 }
 
 inline SolverSettings test_solver() {
