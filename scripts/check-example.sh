@@ -9,10 +9,21 @@ source_dir=$(cd "$(dirname "$0")/.." && pwd)
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 cmake --install "$build" --prefix "$scratch/prefix" > "$scratch/install.log"
-# Nothing of the source or build tree may be needed: the example sees only the prefix.
+# The package puts <prefix>/include alone on a user's include path, and its headers reach each other relative to
+# themselves: a user's own headers of the generic names tcsb's modules use must never be picked up in their place.
+# Each of these stops the build if any tcsb header includes it through the include path.
+for header in net/net.h net/lod_tree.h softbody/tc_softbody.h softbody/tc_settings.h feedback/controller.h \
+              feedback/feedback_settings.h; do
+  mkdir -p "$scratch/user-include/$(dirname "$header")"
+  echo "#error \"a tcsb header reached the user's own $header through the include path\"" \
+    > "$scratch/user-include/$header"
+done
+grep -q "include/tcsb\b[^/]" "$scratch/prefix"/lib*/cmake/tcsb/tcsbTargets.cmake &&
+  { echo "check-example: the package puts include/tcsb itself on the include path" >&2; exit 1; }
+# Nothing of the source or build tree may be needed: the example sees only the prefix (and the user's headers).
 cmake -S "$source_dir/examples" -B "$scratch/examples" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_PREFIX_PATH="$scratch/prefix" > "$scratch/configure.log"
-cmake --build "$scratch/examples" > "$scratch/build.log"
+  -DCMAKE_PREFIX_PATH="$scratch/prefix" -DCMAKE_CXX_FLAGS="-I$scratch/user-include" > "$scratch/configure.log"
+cmake --build "$scratch/examples" > "$scratch/build.log" || { cat "$scratch/build.log" >&2; exit 1; }
 "$scratch/examples/hello_tcsb" | tee "$scratch/run.log"
 grep -q "invariants hold" "$scratch/run.log"
 "$scratch/examples/drape_tcsb" | tee "$scratch/drape.log"

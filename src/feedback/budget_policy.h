@@ -1,9 +1,9 @@
 // Budget policy: how ranked candidates become operations under a node budget, with the paper's threshold (§5).
 #pragma once
 
-#include "feedback/evaluator.h"
-#include "feedback/feedback_settings.h"
-#include "softbody/tc_softbody.h"
+#include "../feedback/evaluator.h"
+#include "../feedback/feedback_settings.h"
+#include "../softbody/tc_softbody.h"
 
 namespace tcsb {
 

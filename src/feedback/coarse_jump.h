@@ -18,7 +18,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "feedback/cut_snapshot.h"
+#include "../feedback/cut_snapshot.h"
 
 namespace tcsb {
 

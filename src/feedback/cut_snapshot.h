@@ -10,9 +10,9 @@
 #include <span>
 #include <vector>
 
-#include "net/lod_tree.h"
-#include "net/net.h"
-#include "softbody/tc_softbody.h"
+#include "../net/lod_tree.h"
+#include "../net/net.h"
+#include "../softbody/tc_softbody.h"
 
 namespace tcsb {
 

@@ -13,9 +13,9 @@
 #include <span>
 #include <vector>
 
-#include "feedback/coarse_jump.h"
-#include "feedback/cut_snapshot.h"
-#include "feedback/interface_balance.h"
+#include "../feedback/coarse_jump.h"
+#include "../feedback/cut_snapshot.h"
+#include "../feedback/interface_balance.h"
 
 namespace tcsb {
 

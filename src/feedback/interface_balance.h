@@ -10,7 +10,7 @@
 
 #include <span>
 
-#include "feedback/cut_snapshot.h"
+#include "../feedback/cut_snapshot.h"
 
 namespace tcsb {
 

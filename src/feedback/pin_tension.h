@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "net/lod_tree.h"
+#include "../net/lod_tree.h"
 
 namespace tcsb {
 

@@ -2,8 +2,8 @@
 // perceptual feedback, and the way Table 1 is measured independently of it.
 #pragma once
 
-#include "feedback/controller.h"
-#include "feedback/random_policy.h"
+#include "../feedback/controller.h"
+#include "../feedback/random_policy.h"
 
 namespace tcsb {
 

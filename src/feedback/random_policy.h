@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <random>
 
-#include "softbody/tc_softbody.h"
+#include "../softbody/tc_softbody.h"
 
 namespace tcsb {
 

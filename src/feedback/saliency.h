@@ -21,9 +21,9 @@
 #include <span>
 #include <vector>
 
-#include "feedback/cut_snapshot.h"
-#include "feedback/feedback_settings.h"
-#include "feedback/screen_projection.h"
+#include "../feedback/cut_snapshot.h"
+#include "../feedback/feedback_settings.h"
+#include "../feedback/screen_projection.h"
 
 namespace tcsb {
 

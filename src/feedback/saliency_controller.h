@@ -13,12 +13,12 @@
 #include <optional>
 #include <vector>
 
-#include "feedback/budget_policy.h"
-#include "feedback/controller.h"
-#include "feedback/cut_snapshot.h"
-#include "feedback/evaluator.h"
-#include "feedback/feedback_workers.h"
-#include "feedback/saliency.h"
+#include "../feedback/budget_policy.h"
+#include "../feedback/controller.h"
+#include "../feedback/cut_snapshot.h"
+#include "../feedback/evaluator.h"
+#include "../feedback/feedback_workers.h"
+#include "../feedback/saliency.h"
 
 namespace tcsb {
 

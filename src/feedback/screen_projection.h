@@ -8,7 +8,7 @@
 
 #include <array>
 
-#include "feedback/camera.h"
+#include "../feedback/camera.h"
 
 namespace tcsb {
 

@@ -13,8 +13,8 @@
 
 #include <BulletDynamics/Dynamics/btDynamicsWorld.h>
 
-#include "feedback/controller.h"
-#include "softbody/tc_softbody.h"
+#include "../feedback/controller.h"
+#include "../softbody/tc_softbody.h"
 
 namespace tcsb {
 

@@ -2,7 +2,7 @@
 // arithmetic, O(1): a balanced cut (neighbours at most one level apart) has at most two neighbours per side.
 #pragma once
 
-#include "net/lod_tree.h"
+#include "../net/lod_tree.h"
 
 namespace tcsb {
 

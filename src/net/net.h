@@ -8,8 +8,8 @@
 #include <span>
 #include <vector>
 
-#include "net/lod_tree.h"
-#include "net/net_spec.h"
+#include "../net/lod_tree.h"
+#include "../net/net_spec.h"
 
 namespace tcsb {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "net/net_spec.h"
+#include "../net/net_spec.h"
 
 namespace tcsb {
 

@@ -9,7 +9,7 @@
 #include <optional>
 #include <span>
 
-#include "net/lod_tree.h"
+#include "../net/lod_tree.h"
 
 namespace tcsb {
 

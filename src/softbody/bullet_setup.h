@@ -8,8 +8,8 @@
 #include <cstring>
 #include <vector>
 
-#include "net/net.h"
-#include "softbody/solver_settings.h"
+#include "../net/net.h"
+#include "../softbody/solver_settings.h"
 
 namespace tcsb {
 

@@ -1,8 +1,8 @@
 // CutListener: what an application hears of a TreeCut soft body's cut as it changes.
 #pragma once
 
-#include "net/lod_tree.h"
-#include "softbody/op_sample.h"
+#include "../net/lod_tree.h"
+#include "../softbody/op_sample.h"
 
 namespace tcsb {
 

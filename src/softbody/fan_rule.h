@@ -2,8 +2,8 @@
 // by it (tc_interfaces.cpp), and validate() checks by it that no fan is left unpaired (tc_validate.cpp).
 #pragma once
 
-#include "net/lod_tree.h"
-#include "softbody/tc_softbody.h"
+#include "../net/lod_tree.h"
+#include "../softbody/tc_softbody.h"
 
 namespace tcsb {
 

@@ -42,8 +42,8 @@
 
 #include <cstdint>
 
-#include "softbody/incidence_list.h"
-#include "softbody/op_sample.h"
+#include "../softbody/incidence_list.h"
+#include "../softbody/op_sample.h"
 
 namespace tcsb::op_work_bounds {
 

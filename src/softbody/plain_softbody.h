@@ -5,8 +5,8 @@
 
 #include <memory>
 
-#include "net/net.h"
-#include "softbody/solver_settings.h"
+#include "../net/net.h"
+#include "../softbody/solver_settings.h"
 
 namespace tcsb {
 

@@ -31,13 +31,13 @@
 #include <string>
 #include <vector>
 
-#include "net/net.h"
-#include "softbody/cut_listener.h"
-#include "softbody/dbvt_local.h"
-#include "softbody/incidence_list.h"
-#include "softbody/op_sample.h"
-#include "softbody/solver_settings.h"
-#include "softbody/tc_settings.h"
+#include "../net/net.h"
+#include "../softbody/cut_listener.h"
+#include "../softbody/dbvt_local.h"
+#include "../softbody/incidence_list.h"
+#include "../softbody/op_sample.h"
+#include "../softbody/solver_settings.h"
+#include "../softbody/tc_settings.h"
 
 namespace tcsb {
 

@@ -77,7 +77,7 @@ double level_one_error(const Suite& suite, const NetSpec& spec, RestPlacement re
   TcSettings tc = suite.tcsb;
   tc.level_stiffness = {k};
   TcSoftBody body(world.info(), net, suite.solver, tc);
-  coarsen_to_level(body, 1);
+  body.coarsen_to_level(1);
   if (masses == Masses::kInterpolated) interpolate_masses(body, *net, 1);
   const SceneWorld::Attachment attachment = world.attach(body);
   std::vector<Eigen::Vector3d> surface;
@@ -86,7 +86,8 @@ double level_one_error(const Suite& suite, const NetSpec& spec, RestPlacement re
     world.step(static_cast<btScalar>(suite.world.dt));
     if (s < suite.warmup_steps) continue;
     reconstruct_leaves(body, surface);
-    sum += 100.0 / net->extent() * surface_error(surface, reference[static_cast<std::size_t>(s - suite.warmup_steps)]).rms;
+    sum +=
+        100.0 / net->extent() * surface_error(surface, reference[static_cast<std::size_t>(s - suite.warmup_steps)]).rms;
   }
   return sum / suite.steps;
 }
