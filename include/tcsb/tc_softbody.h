@@ -17,6 +17,7 @@
 // collision code, and a wrapper would either copy Bullet's interface or expose the same object anyway.
 #pragma once
 
-#include "softbody/solver_settings.h"  // IWYU pragma: export
-#include "softbody/tc_settings.h"      // IWYU pragma: export
-#include "softbody/tc_softbody.h"      // IWYU pragma: export
+#include "softbody/solver_settings.h"     // IWYU pragma: export
+#include "softbody/tc_settings.h"         // IWYU pragma: export
+#include "softbody/tc_softbody.h"         // IWYU pragma: export
+#include "softbody/tc_softbody_solver.h"  // IWYU pragma: export

@@ -22,7 +22,10 @@ void solve_body_constraints(btSoftBody& body);
 /// constraint solve above, integrateMotion (after prepare_body_step).
 void step_body(btSoftBody& body, btScalar dt);
 
-/// The solver a scene's btSoftRigidDynamicsWorld is built with.
+/// The solver a btSoftRigidDynamicsWorld with TC-SB bodies is built with (`btSoftRigidDynamicsWorld(dispatcher,
+/// broadphase, constraint_solver, configuration, &tc_solver)`): plain bodies step through it exactly as through
+/// Bullet's default. A body with hanging interfaces needs it (TcSoftBody::validate() reports a world without it), and
+/// it refreshes a TC-SB body's faces before each step.
 class TcSoftBodySolver : public btDefaultSoftBodySolver {
  public:
   void predictMotion(btScalar solverdt) override;

@@ -10,6 +10,7 @@
 #include "softbody/dbvt_local.h"
 #include "softbody/fan_rule.h"
 #include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_solver.h"
 
 namespace tcsb {
 
@@ -27,6 +28,13 @@ Validation TcSoftBody::validate() const {
   const double extent = net_->extent();
 
   if (m_bUpdateRtCst) fail("m_bUpdateRtCst is set: the next step would reset every rest length");
+  // Bullet's default solver calls btSoftBody::solveConstraints, which skips the interface constraints' handles
+  // (m_c0 = 0) and projects nothing in their place: the levels would come apart. A world hands its solver to every
+  // body it adds (btSoftRigidDynamicsWorld::addSoftBody, setSoftBodySolver); a body stepped solo has none.
+  if (settings_.interfaces == Interfaces::kHanging && getSoftBodySolver() != nullptr &&
+      dynamic_cast<const TcSoftBodySolver*>(getSoftBodySolver()) == nullptr)
+    fail("hanging interfaces in a world whose soft-body solver is not a tcsb::TcSoftBodySolver: build the world with "
+         "one (tc_softbody_solver.h)");
   if (m_nodes.capacity() < static_cast<int>(tree_size)) fail("node capacity below the tree size");
 
   // Nodes: mapping both ways, DBVT leaves, masses, pins, finiteness.

@@ -5,6 +5,7 @@
 
 #include "scene/scene_world.h"
 #include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_solver.h"
 #include "test_bodies.h"
 
 namespace tcsb {
@@ -86,6 +87,25 @@ TEST(TcInterfaces, ValidateCatchesABrokenConstraint) {
   const Validation broken = tc.validate();
   ASSERT_FALSE(broken.ok());
   EXPECT_NE(broken.summary().find("Bullet's link solver would solve it"), std::string::npos) << broken.summary();
+}
+
+TEST(TcInterfaces, ValidateReportsAWorldWhoseSolverCannotProjectThem) {
+  // What btSoftRigidDynamicsWorld::addSoftBody does: hand the body the world's soft-body solver.
+  const auto net = testing::square_net(9);
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), hanging());
+  btDefaultSoftBodySolver bullets;
+  tc.setSoftBodySolver(&bullets);
+  const Validation v = tc.validate();
+  ASSERT_FALSE(v.ok());
+  EXPECT_NE(v.summary().find("not a tcsb::TcSoftBodySolver"), std::string::npos) << v.summary();
+  TcSoftBodySolver ours;
+  tc.setSoftBodySolver(&ours);
+  EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
+  // With the paper's fans Bullet's own solver is the right one.
+  TcSoftBody fans(world.info(), net, testing::test_solver(), {});
+  fans.setSoftBodySolver(&bullets);
+  EXPECT_TRUE(fans.validate().ok()) << fans.validate().summary();
 }
 
 TEST(TcInterfaces, TheProjectionConservesLinearMomentum) {
