@@ -141,8 +141,10 @@ TEST_F(GateVerdicts, TwoInstructionCountsOfOneBuildAgreeBeyondBulletsAddressOrde
   ASSERT_EQ(ra["cases"].size(), 3u);
   // Equal up to Bullet's DBVT rotations: btDbvt::optimizeIncremental, which every soft body's predictMotion calls,
   // rotates the tree where a parent's address is above its child's (btDbvt.cpp, sort: `if (p > n)`), so where the
-  // allocator happened to put the nodes can move a run's count by a few dozen instructions in a million (seen: 37 in
-  // 1.08 M, in about one run in twenty); the gate's threshold is 0.5 %.
+  // allocator happened to put the nodes can move a run's count by a few hundred instructions in a million (seen: 37
+  // in 1.08 M in about one run in twenty; 2026-12-01, 220 in 747 k of Bullet's and 264 in 614 k of TC-SB's own, whose
+  // operations insert their nodes' leaves into the same, differently rotated tree). Allowed: 1e-3 of a count, five
+  // times below the gate's 0.5 % threshold, so a change the gate would catch still fails here.
   for (std::size_t i = 0; i < ra["cases"].size(); ++i) {
     const ojson& ca = ra["cases"][i]["instructions"];
     const ojson& cb = rb["cases"][i]["instructions"];
@@ -150,7 +152,7 @@ TEST_F(GateVerdicts, TwoInstructionCountsOfOneBuildAgreeBeyondBulletsAddressOrde
     for (const char* part : {"own", "bullet", "total"}) {
       const auto a_count = static_cast<double>(ca[part].get<std::int64_t>());
       const auto b_count = static_cast<double>(cb[part].get<std::int64_t>());
-      EXPECT_LE(std::abs(a_count - b_count), 1e-4 * std::max(a_count, 1.0)) << ra["cases"][i]["label"] << " " << part;
+      EXPECT_LE(std::abs(a_count - b_count), 1e-3 * std::max(a_count, 1.0)) << ra["cases"][i]["label"] << " " << part;
     }
   }
   EXPECT_GT(ra["cases"][2]["instructions"]["own"].get<std::int64_t>(), 0) << "TC-SB at 50 % does its own work";
