@@ -59,15 +59,15 @@ void BM_TcsbStepNoOps(benchmark::State& state) {
 }
 
 // The same plain body with its links in the net's order (CreatePatch's: each node's +x link, then its +z link) and in
-// the order Bullet's own btSoftBody::randomizeConstraints() shuffles them into, at 32 position iterations. The link
-// solve is a Gauss-Seidel sweep: in the net's order consecutive links share a node, so each waits for the last one's
-// write to it; shuffled, the processor overlaps them. Same instructions, not the same time
+// the order Bullet's own btSoftBody::randomizeConstraints() shuffles them into, at 2 and 32 position iterations. The
+// link solve is a Gauss-Seidel sweep: in the net's order consecutive links share a node, so each waits for the last
+// one's write to it; shuffled, the processor overlaps them. Same instructions, not the same time
 // (docs/investigations/link-order.md).
 void BM_PlainStepLinkOrder(benchmark::State& state) {
   SceneWorld world{WorldSettings{}};
   const auto net = square_net(static_cast<int>(state.range(0)));
   SolverSettings solver = bench_solver();
-  solver.piterations = 32;
+  solver.piterations = static_cast<int>(state.range(2));
   const auto body = make_plain_softbody(world.info(), *net, solver);
   if (state.range(1) != 0) body->randomizeConstraints();
   for (int s = 0; s < kWarmupSteps; ++s) step_soft_body(*body, kDt);
@@ -83,8 +83,8 @@ void step_args(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_PlainStep)->Apply(step_args);
 BENCHMARK(BM_TcsbStepNoOps)->Apply(step_args);
 BENCHMARK(BM_PlainStepLinkOrder)
-    ->ArgsProduct({{33, 65, 129}, {0, 1}})
-    ->ArgNames({"width", "shuffled"})
+    ->ArgsProduct({{33, 65, 129}, {0, 1}, {2, 32}})
+    ->ArgNames({"width", "shuffled", "piterations"})
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
