@@ -10,6 +10,8 @@
 #include <span>
 #include <vector>
 
+#include "../net/net_spec.h"
+
 namespace tcsb {
 
 /// Index of a node in the LOD tree. Leaves have the same id as their grid node (level 0 comes first).
@@ -39,12 +41,6 @@ struct alignas(64) LodNode {
   bool simulable() const { return pinned_leaf_count <= 1; }
 };
 static_assert(sizeof(LodNode) == 64, "one LOD node per cache line");
-
-/// Where a block's node rests (LodTree::rest()). kCentroid: at its leaves' centroid, on the border along an axis
-/// where the block touches one border. kVertex: on its first leaf (min x, min z), on the last leaf along an axis
-/// where the block touches only the max border, so that every whole-level cut of a (2^k m + 1)-wide net is an evenly
-/// spaced sub-grid of the leaves. Both rest a block holding one pinned leaf on that leaf.
-enum class RestPlacement : std::uint8_t { kCentroid, kVertex };
 
 /// The LOD hierarchy of one grid. Built once in O(N), immutable afterwards.
 class LodTree {

@@ -27,7 +27,9 @@ class Net {
  public:
   /// Builds the net in O(N), its LOD tree's blocks resting as `rest` says (LodTree::rest()). Throws
   /// std::invalid_argument on a spec the suite parser should have rejected.
-  explicit Net(const NetSpec& spec, RestPlacement rest = RestPlacement::kCentroid);
+  Net(const NetSpec& spec, RestPlacement rest);
+  /// ... resting as the spec says (NetSpec::lod_rest).
+  explicit Net(const NetSpec& spec) : Net(spec, spec.lod_rest) {}
 
   const NetSpec& spec() const { return spec_; }
   int width() const { return spec_.width; }

@@ -1,6 +1,7 @@
 // NetSpec: the parameters of one cloth net, as a suite names them. Plain data, validated by the suite parser.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,12 @@ struct GridNode {
   friend bool operator==(const GridNode&, const GridNode&) = default;
 };
 
+/// Where a block's node rests (LodTree::rest()). kCentroid: at its leaves' centroid, on the border along an axis
+/// where the block touches one border. kVertex: on its first leaf (min x, min z), on the last leaf along an axis
+/// where the block touches only the max border, so that every whole-level cut of a (2^k m + 1)-wide net is an evenly
+/// spaced sub-grid of the leaves. Both rest a block holding one pinned leaf on that leaf.
+enum class RestPlacement : std::uint8_t { kCentroid, kVertex };
+
 /// How the net's mass is given: the whole net's, or each node's.
 enum class MassMode { kTotal, kPerNode };
 
@@ -51,6 +58,8 @@ struct NetSpec {
   std::vector<GridNode> pinned_nodes;  ///< further pinned grid nodes, in the suite's order, no duplicates
   bool shear_links = false;            ///< add both diagonals of every grid cell
   bool bend_links = false;             ///< add links skipping one node along x and z
+  /// Where the LOD tree's blocks rest (kVertex where a suite's TC-SB has masses that follow the cut, tcsb.masses).
+  RestPlacement lod_rest = RestPlacement::kCentroid;
 
   /// Number of grid nodes (leaves of the LOD tree).
   long long node_count() const { return static_cast<long long>(width) * height; }

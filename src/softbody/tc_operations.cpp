@@ -154,16 +154,18 @@ void TcSoftBody::begin_refine(TreeId p) {
     work_.nodes += fitted;
   }
   // Children take the parent's velocity and half their mass; the parent keeps the other half. Total mass and
-  // linear momentum are unchanged.
+  // linear momentum are unchanged. (With masses that follow the cut the parent's mass is not its block's: the
+  // children share its half as their blocks share the block, and settle_cut_masses() then moves the rest.)
+  const double parent_mass = record(p).sim_mass;
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     ++work_.tree_records;  // c's LOD node, record and state
-    record(c).sim_mass = 0.5 * tree().node(c).mass;
+    record(c).sim_mass = cut_masses() ? 0.5 * parent_mass * (tree().node(c).mass / pn.mass) : 0.5 * tree().node(c).mass;
     add_node(c, place_child(p, c, xp, affine), vp, p);
     state_[static_cast<std::size_t>(c)] = CutState::kArriving;
     record(c).op = op;
   }
-  set_simulated_mass(p, 0.5 * pn.mass);
+  set_simulated_mass(p, 0.5 * parent_mass);  // (with block masses parent_mass is pn.mass exactly)
   state_[static_cast<std::size_t>(p)] = CutState::kLeaving;
   record(p).op = op;
   committed_count_ += pn.child_count - 1;
@@ -191,6 +193,7 @@ void TcSoftBody::begin_refine(TreeId p) {
         });
     add_link(p, c, LinkRole::kTether, op);
   }
+  if (cut_masses()) settle_cut_masses(p);
   emit(OpKind::kRefine, p, t1 - t0, op_clock() - t1);
 }
 
@@ -205,25 +208,27 @@ void TcSoftBody::begin_coarse(TreeId p) {
   // A block on the net's border rests on the border: it appears where its children's fit puts that point instead.
   Eigen::Vector3d weighted_x = Eigen::Vector3d::Zero(), momentum = Eigen::Vector3d::Zero();
   std::array<Eigen::Vector3d, 4> child_x;
+  double children_mass = 0;  // with block masses pn.mass, summed in the same order
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     const Node& n = m_nodes[record(c).bullet];
-    const double m = tree().node(c).mass;
+    const double m = record(c).sim_mass;
+    children_mass += m;
     ++work_.tree_records;  // c's LOD node, record, state and incidence list
     ++work_.nodes;         // c's position and velocity
     child_x[static_cast<std::size_t>(i)] = to_eigen(n.m_x);
     weighted_x += m * child_x[static_cast<std::size_t>(i)];
     momentum += m * to_eigen(n.m_v);
   }
-  btVector3 xp = pn.pinned() ? pin_position(p) : to_bullet(weighted_x / pn.mass);
+  btVector3 xp = pn.pinned() ? pin_position(p) : to_bullet(weighted_x / children_mass);
   if (const std::optional<Eigen::Vector3d> border = border_arrival(tree(), p, child_x)) xp = to_bullet(*border);
-  record(p).sim_mass = 0.5 * pn.mass;
-  add_node(p, xp, to_bullet(momentum / pn.mass), pn.children[0]);
+  record(p).sim_mass = 0.5 * children_mass;
+  add_node(p, xp, to_bullet(momentum / children_mass), pn.children[0]);
   state_[static_cast<std::size_t>(p)] = CutState::kArriving;
   record(p).op = op;
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
-    set_simulated_mass(c, 0.5 * tree().node(c).mass);
+    set_simulated_mass(c, 0.5 * record(c).sim_mass);
     state_[static_cast<std::size_t>(c)] = CutState::kLeaving;
     record(c).op = op;
   }
@@ -246,6 +251,7 @@ void TcSoftBody::begin_coarse(TreeId p) {
       tree(), p, [this](TreeId n) { return probe_committed(n); },
       [&](TreeId n) { add_link(p, n, LinkRole::kFadeIn, op); });
   for (int i = 0; i < pn.child_count; ++i) add_link(p, pn.children[static_cast<std::size_t>(i)], LinkRole::kTether, op);
+  if (cut_masses()) settle_cut_masses(p);
   emit(OpKind::kCoarse, p, t1 - t0, op_clock() - t1);
 }
 
@@ -328,21 +334,26 @@ void TcSoftBody::end_refine(const Op& op) {
   // The parent's half of the mass and its momentum go to the children in proportion to their masses.
   const Eigen::Vector3d vp = to_eigen(m_nodes[record(p).bullet].m_v);
   ++work_.nodes;  // p's velocity
-  const double parent_share = record(p).sim_mass / pn.mass;
+  // (With masses that follow the cut, in proportion to the halves they carry; settle_cut_masses() follows.)
+  double children_half = 0;
+  if (cut_masses())
+    for (int i = 0; i < pn.child_count; ++i) children_half += record(pn.children[static_cast<std::size_t>(i)]).sim_mass;
+  const double parent_share = record(p).sim_mass / (cut_masses() ? children_half : pn.mass);
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     ++work_.tree_records;  // c's LOD node and record
     ++work_.nodes;         // c's velocity
-    const double full = tree().node(c).mass;
+    const double full = cut_masses() ? (1 + parent_share) * record(c).sim_mass : tree().node(c).mass;
     Node& n = m_nodes[record(c).bullet];
-    if (!tree().node(c).pinned())
-      n.m_v = to_bullet((record(c).sim_mass * to_eigen(n.m_v) + parent_share * full * vp) / full);
+    const double received = parent_share * (cut_masses() ? record(c).sim_mass : full);
+    if (!tree().node(c).pinned()) n.m_v = to_bullet((record(c).sim_mass * to_eigen(n.m_v) + received * vp) / full);
     settle_in_cut(c, full);
   }
   retire_from_cut(p);
   const std::int64_t t2 = op_clock();
 
   for (int i = 0; i < pn.child_count; ++i) refresh_incident_constants(pn.children[static_cast<std::size_t>(i)]);
+  if (cut_masses()) settle_cut_masses(p);
   const std::int64_t t3 = op_clock();
   emit(OpKind::kEndRefine, p, t2 - t1, (t1 - t0) + (t3 - t2));
 }
@@ -367,17 +378,21 @@ void TcSoftBody::end_coarse(const Op& op) {
   Node& parent_node = m_nodes[record(p).bullet];
   ++work_.nodes;  // p's velocity
   Eigen::Vector3d momentum = record(p).sim_mass * to_eigen(parent_node.m_v);
+  double mass = record(p).sim_mass;
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     ++work_.nodes;  // c's velocity
     momentum += record(c).sim_mass * to_eigen(m_nodes[record(c).bullet].m_v);
+    mass += record(c).sim_mass;
   }
-  if (!pn.pinned()) parent_node.m_v = to_bullet(momentum / pn.mass);
-  settle_in_cut(p, pn.mass);
+  if (!cut_masses()) mass = pn.mass;  // the same sum, kept exact
+  if (!pn.pinned()) parent_node.m_v = to_bullet(momentum / mass);
+  settle_in_cut(p, mass);
   for (int i = 0; i < pn.child_count; ++i) retire_from_cut(pn.children[static_cast<std::size_t>(i)]);
   const std::int64_t t2 = op_clock();
 
   refresh_incident_constants(p);
+  if (cut_masses()) settle_cut_masses(p);
   const std::int64_t t3 = op_clock();
   emit(OpKind::kEndCoarse, p, t2 - t1, (t1 - t0) + (t3 - t2));
 }

@@ -17,6 +17,15 @@ enum class Interfaces {
   kHanging,  ///< one constraint per fan: the coarse node to the midpoint of the two finer nodes (hanging-node style)
 };
 
+/// What mass a simulated node carries (docs/design.md, "Masses that follow the cut").
+enum class Masses {
+  kBlocks,  ///< its block's leaves' sum (the paper's)
+  /// Each leaf's mass shared among the cut's nodes by the bilinear weights between a block's node and the nodes at
+  /// its far corners, as a lumped finite-element mass matrix shares it; needs blocks resting on their first leaf
+  /// (RestPlacement::kVertex). Operations move mass between a block and its neighbours, momentum kept.
+  kCut,
+};
+
 /// Settings of the TreeCut soft body's operations.
 struct TcSettings {
   int blend_steps = 5;  ///< K: steps over which leaving links fade out and arriving links fade in
@@ -29,6 +38,8 @@ struct TcSettings {
   /// TcSoftBody::solve_constraints (Bullet's solvers in Bullet's sequence, then the interface constraints, every
   /// position iteration).
   Interfaces interfaces = Interfaces::kLinks;
+  /// kBlocks keeps the paper's masses bit for bit; kCut requires the net's tree built with RestPlacement::kVertex.
+  Masses masses = Masses::kBlocks;
   /// Resolution-consistent material: the link stiffness kLST per LOD level, from level 1 on (entry i is level i + 1;
   /// levels past the end use the last entry). A link belongs to the level of its coarser endpoint; level-0 links
   /// (and every link, when this is empty: uncalibrated) use the solver's material. Values from a calibration

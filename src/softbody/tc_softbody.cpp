@@ -35,6 +35,7 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
       throw std::invalid_argument("TcSoftBody: only structural links are supported (no shear or bend links)");
   const LodTree& lod = net_->lod();
   const std::size_t tree_size = lod.size();
+  if (settings_.masses == Masses::kCut) build_corner_shares();
   const std::size_t leaves = lod.leaf_count();
 
   // Bullet's node array is reserved once for every node of the tree, so no operation ever reallocates it and the

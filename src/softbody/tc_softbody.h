@@ -324,6 +324,31 @@ class TcSoftBody : public btSoftBody {
   /// are now).
   void prepare_interfaces();
   void set_simulated_mass(TreeId id, double mass);
+
+  // ---- masses that follow the cut (tc_cut_masses.cpp; TcSettings::masses = Masses::kCut) ----------------------
+  /// Per tree node: what its leaves' masses give, by the bilinear weights between its node and the nodes at its
+  /// far corners, to its own node and to each far corner; and the leaf its node rests on.
+  struct CornerShares {
+    std::array<double, 4> share{};          ///< own, the +x corner, the +z corner, the diagonal corner, kg
+    std::int32_t x = 0, z = 0;              ///< the leaf the node rests on
+    std::int32_t next_x = -1, next_z = -1;  ///< the leaf column and row of the far corners; -1 past the net
+  };
+  bool cut_masses() const { return settings_.masses == Masses::kCut; }
+  /// Fills corner_shares_ once, O(T log T). Throws unless the tree's blocks rest on their first leaf.
+  void build_corner_shares();
+  /// The node of the committed cut (`committed`) or of the old cut (active or leaving) whose block holds leaf (x, z).
+  /// O(levels).
+  TreeId holding(int x, int z, bool committed) const;
+  /// The mass `id` carries in that cut: its leaves' own share, the shares of its far corners that fall on no node of
+  /// the cut, and the shares of the blocks whose far corner it rests on; 0 when it is not in that cut. O(levels).
+  double cut_mass(TreeId id, bool committed) const;
+  /// What a simulated node carries: the mean of its masses in the old and the committed cut, so that an operation's
+  /// two sides each carry half, as with block masses. O(levels).
+  double target_mass(TreeId id) const { return 0.5 * (cut_mass(id, true) + cut_mass(id, false)); }
+  /// After an operation on `block` changed a cut: every simulated node whose mass that can change (the block's
+  /// nodes and those holding the ring of leaves around it) goes to target_mass(), the mass moving from the nodes
+  /// that lose it to those that gain it with its momentum, and their links' constants follow. O(block perimeter).
+  void settle_cut_masses(TreeId block);
   /// Writes a tree node's Bullet index (or -1) to its record and to the bullet_ mirror together.
   void set_bullet_index(TreeId id, std::int32_t index);
   NodeRecord& record(TreeId id) { return record_[static_cast<std::size_t>(id)]; }
@@ -414,6 +439,9 @@ class TcSoftBody : public btSoftBody {
   /// The running operation's work (OpWork's definitions): zeroed when an operation starts, emitted when it ends.
   /// Primitives count into it whenever they run; between operations (the blend ramp) nothing reads it.
   OpWork work_;
+  std::vector<CornerShares> corner_shares_;  // per tree node, with masses that follow the cut
+  std::vector<TreeId> settle_scratch_;       // settle_cut_masses()' nodes and their targets, kept to reuse the room
+  std::vector<double> settle_targets_;
 };
 
 }  // namespace tcsb

@@ -67,8 +67,12 @@ Validation TcSoftBody::validate() const {
       fail(name + ": inverse mass does not match its carried mass");
     }
     if (r.inv_mass != n.m_im) fail(name + ": the record's inverse mass differs from Bullet's");
-    const double expected = (state(id) == CutState::kActive) ? t.mass : 0.5 * t.mass;
-    if (std::abs(m - expected) > 1e-9 * t.mass) fail(name + ": carried mass is not its block's (or half of it)");
+    if (cut_masses()) {
+      if (std::abs(m - target_mass(id)) > 1e-9 * t.mass) fail(name + ": carried mass is not what the cut gives it");
+    } else {
+      const double expected = (state(id) == CutState::kActive) ? t.mass : 0.5 * t.mass;
+      if (std::abs(m - expected) > 1e-9 * t.mass) fail(name + ": carried mass is not its block's (or half of it)");
+    }
   }
   if (std::abs(mass - total_mass_) > 1e-6 * total_mass_)
     fail("total mass " + std::to_string(mass) + " differs from " + std::to_string(total_mass_));

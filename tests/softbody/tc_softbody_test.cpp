@@ -261,11 +261,13 @@ TEST(TcSoftBody, RefiningEverythingBackGivesThePlainCounts) {
 /// Random operations on a 65^2 net until `total` have begun or ended, validating every 20 steps; returns the
 /// largest number of interface constraints seen at a check.
 std::size_t random_operations_keep_every_invariant(Interfaces interfaces, long total,
-                                                   RestPlacement rest = RestPlacement::kCentroid) {
+                                                   RestPlacement rest = RestPlacement::kCentroid,
+                                                   Masses masses = Masses::kBlocks) {
   const auto net = testing::square_net(65, kAllCorners, rest);
   SceneWorld world({});
   TcSettings settings;
   settings.interfaces = interfaces;
+  settings.masses = masses;
   settings.blend_steps = 3;
   settings.restore_order_min_nodes = 0;  // restore_order() between the operations too, whatever the body's size
   TcSoftBody tc(world.info(), net, testing::test_solver(), settings);
@@ -324,6 +326,14 @@ TEST(TcSoftBodyProperty, WithVertexRestPlacementRandomOperationsKeepEveryInvaria
   // children's fit, and fans and hanging interfaces are slanted at rest.
   EXPECT_EQ(random_operations_keep_every_invariant(Interfaces::kLinks, 30000, RestPlacement::kVertex), 0u);
   EXPECT_GT(random_operations_keep_every_invariant(Interfaces::kHanging, 30000, RestPlacement::kVertex), 0u);
+}
+
+TEST(TcSoftBodyProperty, WithMassesThatFollowTheCutRandomOperationsKeepEveryInvariant) {
+  // validate() checks every node's mass against what the old and the committed cut give it (tc_cut_masses.cpp).
+  EXPECT_EQ(random_operations_keep_every_invariant(Interfaces::kLinks, 30000, RestPlacement::kVertex, Masses::kCut),
+            0u);
+  EXPECT_GT(random_operations_keep_every_invariant(Interfaces::kHanging, 30000, RestPlacement::kVertex, Masses::kCut),
+            0u);
 }
 
 }  // namespace

@@ -227,6 +227,14 @@ TEST(SuiteParse, MinimalSuiteTakesStructDefaults) {
 
 json minimal() { return json::parse(kMinimal); }
 
+TEST(SuiteParse, MassesThatFollowTheCutRestTheTreesBlocksOnTheirFirstLeaf) {
+  json j = minimal();
+  j["tcsb"] = {{"masses", "cut"}};
+  const Suite s = parse_suite_text(j.dump(), "masses.json");
+  EXPECT_EQ(s.tcsb.masses, Masses::kCut);
+  for (const NetSpec& n : s.nets) EXPECT_EQ(n.lod_rest, RestPlacement::kVertex);
+}
+
 TEST(SuiteParse, PinnedMassAndSettingForms) {
   json j = minimal();
   j["nets"][0]["pinned"] = {"min_min", "max_max"};
@@ -238,6 +246,8 @@ TEST(SuiteParse, PinnedMassAndSettingForms) {
   j["seed"] = 18446744073709551615ull;
   const Suite s = parse_suite_text(j.dump(), "forms.json");
   EXPECT_EQ(s.tcsb.start_level, 2);
+  EXPECT_EQ(s.tcsb.masses, Masses::kBlocks);
+  EXPECT_EQ(s.nets[0].lod_rest, RestPlacement::kCentroid);
   EXPECT_EQ(s.nets[0].pinned_corners, unsigned{kCornerMinMin | kCornerMaxMax});
   EXPECT_EQ(s.nets[0].mass_mode, MassMode::kPerNode);
   EXPECT_DOUBLE_EQ(s.nets[0].mass, 0.01);
@@ -683,6 +693,8 @@ TEST(SuiteReject, OtherRanges) {
   rejected_edit([](json& j) { j["tcsb"] = {{"blend_steps", 0}}; }, "tcsb.blend_steps");
   rejected_edit([](json& j) { j["tcsb"] = {{"start_level", -1}}; }, "tcsb.start_level");
   rejected_edit([](json& j) { j["tcsb"] = {{"start_level", "coarse"}}; }, "tcsb.start_level");
+  rejected_edit([](json& j) { j["tcsb"] = {{"masses", "lumped"}}; }, "tcsb.masses");
+  rejected_edit([](json& j) { j["axes"] = {{"tcsb.masses", {"blocks", "cut"}}}; }, "axes.tcsb.masses");
   rejected_edit([](json& j) { j["tcsb"] = {{"placement", "bilinear"}}; }, "tcsb.placement");
   rejected_edit([](json& j) { j["feedback"] = {{"policy", "salience"}}; }, "feedback.policy");
   rejected_edit([](json& j) { j["feedback"] = {{"threshold", -0.1}}; }, "feedback.threshold");

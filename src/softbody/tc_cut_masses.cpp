@@ -1,0 +1,155 @@
+// TcSoftBody's masses that follow the cut (TcSettings::masses = Masses::kCut; docs/design.md, "Masses that follow
+// the cut"). A block's node rests on its first leaf; each of its leaves is shared between that node and the nodes at
+// the block's three far corners by the bilinear weights between them, as a lumped finite-element mass matrix shares
+// it. A far corner that falls on no node of the cut (it hangs on a coarser block's side, or lies past the net) leaves
+// its share with the block's own node, so the shares always sum to the net's mass.
+#include <stdexcept>
+
+#include "softbody/tc_softbody.h"
+#include "softbody/vector_conversion.h"
+
+namespace tcsb {
+
+namespace {
+/// The bilinear weight towards the next node along one axis of a leaf at `at`, in a block whose node rests at `rest`
+/// and whose next node along that axis rests at `next` (-1: none). Leaves before the rest (a block resting on a
+/// pinned leaf inside it, or on the net's last row) stay with the node.
+double toward_next(int at, int rest, int next) {
+  return next >= 0 && at > rest ? static_cast<double>(at - rest) / static_cast<double>(next - rest) : 0.0;
+}
+}  // namespace
+
+void TcSoftBody::build_corner_shares() {
+  const LodTree& lod = tree();
+  if (lod.placement() != RestPlacement::kVertex)
+    throw std::invalid_argument(
+        "TcSoftBody: masses that follow the cut need blocks resting on their first leaf (RestPlacement::kVertex)");
+  const int width = lod.level_width(0), height = lod.level_height(0);
+  corner_shares_.assign(lod.size(), CornerShares{});
+  for (std::size_t id = 0; id < lod.size(); ++id) {
+    const LodNode& n = lod.nodes()[id];
+    CornerShares& c = corner_shares_[id];
+    if (n.anchor_leaf != kNoTreeNode) {
+      c.x = lod.node(n.anchor_leaf).gx;
+      c.z = lod.node(n.anchor_leaf).gy;
+    } else {  // LodTree's vertex placement (along an axis the block spans whole, its first leaf stands in)
+      c.x = n.leaf_x1 == width && n.leaf_x0 != 0 ? width - 1 : n.leaf_x0;
+      c.z = n.leaf_y1 == height && n.leaf_y0 != 0 ? height - 1 : n.leaf_y0;
+    }
+    c.next_x = n.leaf_x1 < width ? n.leaf_x1 : -1;
+    c.next_z = n.leaf_y1 < height ? n.leaf_y1 : -1;
+    for (int z = n.leaf_y0; z < n.leaf_y1; ++z) {
+      const double v = toward_next(z, c.z, c.next_z);
+      for (int x = n.leaf_x0; x < n.leaf_x1; ++x) {
+        const double u = toward_next(x, c.x, c.next_x);
+        const double m = lod.node(lod.at(0, x, z)).mass;
+        c.share[0] += m * (1 - u) * (1 - v);
+        c.share[1] += m * u * (1 - v);
+        c.share[2] += m * (1 - u) * v;
+        c.share[3] += m * u * v;
+      }
+    }
+  }
+}
+
+TreeId TcSoftBody::holding(int x, int z, bool committed) const {
+  const CutState arriving_or_leaving = committed ? CutState::kArriving : CutState::kLeaving;
+  for (TreeId id = tree().at(0, x, z); id != kNoTreeNode; id = tree().node(id).parent)
+    if (state(id) == CutState::kActive || state(id) == arriving_or_leaving) return id;
+  return kNoTreeNode;  // (not reached: each cut covers every leaf)
+}
+
+double TcSoftBody::cut_mass(TreeId id, bool committed) const {
+  const CutState s = state(id);
+  if (s != CutState::kActive && s != (committed ? CutState::kArriving : CutState::kLeaving)) return 0;
+  const CornerShares& c = corner_shares_[static_cast<std::size_t>(id)];
+  const auto rests_at = [&](TreeId node, int x, int z) {
+    const CornerShares& o = corner_shares_[static_cast<std::size_t>(node)];
+    return o.x == x && o.z == z;
+  };
+  double mass = c.share[0];
+  // Its far corners: each share goes to the node resting there, or stays here when none does.
+  const std::array<std::array<int, 2>, 3> corners{{{c.next_x, c.z}, {c.x, c.next_z}, {c.next_x, c.next_z}}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double share = c.share[k + 1];
+    if (share == 0) continue;  // (every share past the net is 0)
+    const auto [x, z] = corners[k];
+    if (!rests_at(holding(x, z, committed), x, z)) mass += share;
+  }
+  // The blocks to its left, below and diagonally below-left hold the leaves just before its rest; it receives their
+  // share when it rests on their far corner.
+  if (c.x > 0) {
+    const CornerShares& b = corner_shares_[static_cast<std::size_t>(holding(c.x - 1, c.z, committed))];
+    if (b.next_x == c.x && b.z == c.z) mass += b.share[1];
+  }
+  if (c.z > 0) {
+    const CornerShares& b = corner_shares_[static_cast<std::size_t>(holding(c.x, c.z - 1, committed))];
+    if (b.x == c.x && b.next_z == c.z) mass += b.share[2];
+  }
+  if (c.x > 0 && c.z > 0) {
+    const CornerShares& b = corner_shares_[static_cast<std::size_t>(holding(c.x - 1, c.z - 1, committed))];
+    if (b.next_x == c.x && b.next_z == c.z) mass += b.share[3];
+  }
+  return mass;
+}
+
+void TcSoftBody::settle_cut_masses(TreeId block) {
+  std::vector<TreeId>& nodes = settle_scratch_;
+  nodes.clear();
+  const auto add = [&](TreeId id) {
+    if (id == kNoTreeNode || record(id).bullet < 0) return;
+    for (TreeId n : nodes)
+      if (n == id) return;
+    nodes.push_back(id);
+  };
+  const LodNode& b = tree().node(block);
+  add(block);
+  for (int i = 0; i < b.child_count; ++i) add(b.children[static_cast<std::size_t>(i)]);
+  // The ring of leaves around the block, in both cuts: every node whose corners or whose neighbours' corners the
+  // operation can have moved holds one of them.
+  const int width = tree().level_width(0), height = tree().level_height(0);
+  const auto add_holders = [&](int x, int z) {
+    if (x < 0 || z < 0 || x >= width || z >= height) return;
+    add(holding(x, z, true));
+    add(holding(x, z, false));
+  };
+  for (int x = b.leaf_x0 - 1; x <= b.leaf_x1; ++x) {
+    add_holders(x, b.leaf_y0 - 1);
+    add_holders(x, b.leaf_y1);
+  }
+  for (int z = b.leaf_y0; z < b.leaf_y1; ++z) {
+    add_holders(b.leaf_x0 - 1, z);
+    add_holders(b.leaf_x1, z);
+  }
+
+  // The mass that moves keeps its momentum: nodes that lose mass keep their velocity, and what they lose goes to the
+  // nodes that gain, each in proportion to its gain (pinned nodes keep the pin's velocity whatever they gain).
+  double lost = 0, gained = 0;
+  Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+  std::vector<double>& target = settle_targets_;
+  target.resize(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const TreeId id = nodes[i];
+    target[i] = target_mass(id);
+    const double change = target[i] - record(id).sim_mass;
+    if (change < 0) {
+      lost -= change;
+      momentum -= change * to_eigen(m_nodes[record(id).bullet].m_v);
+    } else if (change > 0 && !tree().node(id).pinned()) {
+      gained += change;
+    }
+  }
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const TreeId id = nodes[i];
+    const double before = record(id).sim_mass, change = target[i] - before;
+    if (change == 0) continue;
+    if (change > 0 && gained > 0 && !tree().node(id).pinned()) {
+      Node& n = m_nodes[record(id).bullet];
+      n.m_v = to_bullet((before * to_eigen(n.m_v) + (change / gained) * momentum) / target[i]);
+    }
+    set_simulated_mass(id, target[i]);
+    refresh_incident_constants(id);
+  }
+}
+
+}  // namespace tcsb
