@@ -102,6 +102,9 @@ TEST(CalibrationFile, FitsOnlyTheRegimeItWasFittedIn) {
   moved.scene.colliders[0].position[1] += 0.5;  // nor with the collider elsewhere
   EXPECT_NE(calibration_key(moved), calibration_key(other));
   other = suite;
+  other.tcsb.masses = Masses::kCut;  // nor with TC-SB's masses following the cut: every coarse level is other cloth
+  EXPECT_NE(calibration_mismatch(c, other).find("tcsb calibrate"), std::string::npos);
+  other = suite;
   other.name = "renamed";  // name, description, repetitions and fidelity settings do not matter
   other.repetitions = 9;
   EXPECT_EQ(calibration_mismatch(c, other), "");

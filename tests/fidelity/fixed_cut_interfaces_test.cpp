@@ -26,14 +26,16 @@ using Pattern = std::function<bool(int gx, int gy, int n)>;
 const std::vector<double> kConvergedStiffness = {0.4323772094142622, 0.12227355255926076, 0.031251005557886784};
 
 /// Mean over steps [steps / 4, steps) of the RMS distance to the reference, % of the net's extent.
-double fixed_cut_error(int width, Interfaces interfaces, const Pattern& coarse, int steps) {
+double fixed_cut_error(int width, Interfaces interfaces, const Pattern& coarse, int steps,
+                       RestPlacement rest = RestPlacement::kCentroid, Masses masses = Masses::kBlocks,
+                       const std::vector<double>& stiffness = kConvergedStiffness) {
   NetSpec spec;
   spec.name = "fixed";
   spec.width = spec.height = width;
   spec.mass_mode = MassMode::kTotal;
   spec.mass = 1.0;
   spec.pinned_corners = kAllCorners;
-  const auto net = std::make_shared<const Net>(spec);
+  const auto net = std::make_shared<const Net>(spec, rest);
   SolverSettings solver;
   solver.piterations = 32;
   SceneWorld world({});
@@ -41,7 +43,8 @@ double fixed_cut_error(int width, Interfaces interfaces, const Pattern& coarse, 
   TcSettings settings;
   settings.interfaces = interfaces;
   settings.blend_steps = 4;
-  settings.level_stiffness = kConvergedStiffness;
+  settings.level_stiffness = stiffness;
+  settings.masses = masses;
   TcSoftBody tc(world.info(), net, solver, settings);
   const LodTree& tree = net->lod();
   const int n = tree.level_width(1);
@@ -94,6 +97,31 @@ TEST(FixedCutInterfaces, DISABLED_Table) {
       std::printf("| %d^2 | %s | %.3f | %.3f |\n", width, name,
                   fixed_cut_error(width, Interfaces::kLinks, pattern, 400),
                   fixed_cut_error(width, Interfaces::kHanging, pattern, 400));
+}
+
+/// Level stiffness of a calibration of the converged suite with masses that follow the cut (`tcsb calibrate` of
+/// suites/converged.json with `tcsb.masses` "cut"; docs/investigations/cut-masses.md).
+const std::vector<double> kCutMassStiffness = {0.424, 0.115, 0.026};
+
+TEST(FixedCutInterfaces, DISABLED_TableWithMassesThatFollowTheCut) {
+  const std::vector<std::pair<const char*, Pattern>> patterns = {
+      {"the left half", kLeftHalf},
+      {"every third block along both axes", [](int x, int y, int) { return x % 3 == 1 && y % 3 == 1; }},
+      {"every other block (checker)", [](int x, int y, int) { return (x + y) % 2 == 0; }},
+  };
+  std::printf(
+      "| net | coarse level-1 blocks | centroid rest, block masses: fans | hanging | vertex rest, block masses: hanging "
+      "| vertex rest, cut masses: fans | hanging |\n|---|---|---|---|---|---|---|\n");
+  for (const int width : {45, 65})
+    for (const auto& [name, pattern] : patterns)
+      std::printf("| %d^2 | %s | %.3f | %.3f | %.3f | %.3f | %.3f |\n", width, name,
+                  fixed_cut_error(width, Interfaces::kLinks, pattern, 400),
+                  fixed_cut_error(width, Interfaces::kHanging, pattern, 400),
+                  fixed_cut_error(width, Interfaces::kHanging, pattern, 400, RestPlacement::kVertex),
+                  fixed_cut_error(width, Interfaces::kLinks, pattern, 400, RestPlacement::kVertex, Masses::kCut,
+                                  kCutMassStiffness),
+                  fixed_cut_error(width, Interfaces::kHanging, pattern, 400, RestPlacement::kVertex, Masses::kCut,
+                                  kCutMassStiffness));
 }
 
 }  // namespace
