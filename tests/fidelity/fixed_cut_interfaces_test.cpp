@@ -22,7 +22,7 @@ namespace {
 /// Which level-1 blocks (gx, gy of n x n) to coarsen.
 using Pattern = std::function<bool(int gx, int gy, int n)>;
 
-/// Level stiffness of suites/calibrations/converged.calibration.json (levels 1, 2, 3).
+/// Level stiffness of the converged suite's calibration with block masses (levels 1, 2, 3; as committed at 977d21c).
 const std::vector<double> kConvergedStiffness = {0.4323772094142622, 0.12227355255926076, 0.031251005557886784};
 
 /// Mean over steps [steps / 4, steps) of the RMS distance to the reference, % of the net's extent.
