@@ -29,13 +29,9 @@ void TcSoftBody::build_corner_shares() {
   for (std::size_t id = 0; id < lod.size(); ++id) {
     const LodNode& n = lod.nodes()[id];
     CornerShares& c = corner_shares_[id];
-    if (n.anchor_leaf != kNoTreeNode) {
-      c.x = lod.node(n.anchor_leaf).gx;
-      c.z = lod.node(n.anchor_leaf).gy;
-    } else {  // LodTree's vertex placement (along an axis the block spans whole, its first leaf stands in)
-      c.x = n.leaf_x1 == width && n.leaf_x0 != 0 ? width - 1 : n.leaf_x0;
-      c.z = n.leaf_y1 == height && n.leaf_y0 != 0 ? height - 1 : n.leaf_y0;
-    }
+    const LodNode& rest_leaf = lod.node(leaf_under(static_cast<TreeId>(id)));
+    c.x = rest_leaf.gx;
+    c.z = rest_leaf.gy;
     c.next_x = n.leaf_x1 < width ? n.leaf_x1 : -1;
     c.next_z = n.leaf_y1 < height ? n.leaf_y1 : -1;
     for (int z = n.leaf_y0; z < n.leaf_y1; ++z) {

@@ -36,12 +36,73 @@ void TcSoftBody::pair_into_interface(int link) {
                            .links = {li, link},
                            .rest = (midpoint - record(coarse).rest_position()).length(),
                            .stiffness = interface_stiffness(fine_node.level)});
+    if (tree().placement() == RestPlacement::kVertex) make_vertex_interface(interfaces_.back());
     link_meta_[static_cast<std::size_t>(li)].interface = index;
     link_meta_[static_cast<std::size_t>(link)].interface = index;
+    m_links[li].m_material = handle_material(li);  // (a kept handle on a -x or -z side: the finer level's)
+    m_links[link].m_material = handle_material(link);
     write_link_constant(li);
     write_link_constant(link);
     return;
   }
+}
+
+void TcSoftBody::make_vertex_interface(InterfaceConstraint& c) const {
+  const LodNode& block = tree().node(c.coarse);
+  const LodNode& f = tree().node(c.fine[0]);
+  const btVector3 r = record(c.coarse).rest_position();
+  // The side the fine pair faces, and which of the two is in line with the coarse node along it.
+  const bool along_z = f.leaf_x0 >= block.leaf_x1 || f.leaf_x1 <= block.leaf_x0;  // on the -x or +x side
+  const bool near = along_z ? f.leaf_x1 <= block.leaf_x0 : f.leaf_y1 <= block.leaf_y0;
+  for (std::size_t k = 0; k < 2; ++k) {
+    const btVector3 rf = record(c.fine[k]).rest_position();
+    if (along_z ? rf.z() != r.z() : rf.x() != r.x()) continue;
+    c.kept = static_cast<std::int8_t>(k);
+    c.kind = near ? InterfaceKind::kVertexNear : InterfaceKind::kVertexFar;
+  }
+  // Both kinds stand for the finer cloth (a fine link to a point of the coarse side, or a fine node on a coarse
+  // edge): the finer level's stiffness.
+  if (c.kept >= 0) c.stiffness = level_stiffness(f.level);
+  if (c.kept < 0) return;  // (no fine node in line: the midpoint constraint stays)
+  // The far corner the constraint needs: near, the block's corner along the side (+z for a pair on its -x side, +x
+  // for one on its -z side), whose node and the coarse node span the side the hanging node's link meets; far, the
+  // block's diagonal corner, whose node and the kept fine node span the coarse cell's edge the hanging node lies on.
+  const int width = tree().level_width(0), height = tree().level_height(0);
+  const LodNode& rest_leaf = tree().node(leaf_under(c.coarse));
+  const int x = near ? (along_z ? rest_leaf.gx : block.leaf_x1) : block.leaf_x1;
+  const int z = near ? (along_z ? block.leaf_y1 : rest_leaf.gy) : block.leaf_y1;
+  if (x >= width || z >= height) {
+    c.kind = InterfaceKind::kVertexFar;  // the side ends at the net's border: nothing to hang from
+    return;
+  }
+  c.corner_leaf = tree().at(0, x, z);
+  const btVector3 hanging = record(c.fine[c.kept == 0 ? 1 : 0]).rest_position();
+  const btVector3 other = near ? r : record(c.fine[static_cast<std::size_t>(c.kept)]).rest_position();
+  c.rest = (hanging - (other + record(c.corner_leaf).rest_position()) * btScalar(0.5)).length();
+}
+
+TreeId TcSoftBody::leaf_under(TreeId id) const {
+  // LodTree's vertex placement: on the pinned leaf, else the first leaf, or the last along an axis where the block
+  // touches only the net's last border (along an axis it spans whole it rests at its centroid: the first leaf stands
+  // in).
+  const LodNode& n = tree().node(id);
+  if (n.anchor_leaf != kNoTreeNode) return n.anchor_leaf;
+  const int width = tree().level_width(0), height = tree().level_height(0);
+  return tree().at(0, n.leaf_x1 == width && n.leaf_x0 != 0 ? width - 1 : n.leaf_x0,
+                   n.leaf_y1 == height && n.leaf_y0 != 0 ? height - 1 : n.leaf_y0);
+}
+
+btScalar TcSoftBody::level_stiffness(int level) const {
+  return calibrated() ? level_materials_[static_cast<std::size_t>(level)]->m_kLST : m_materials[0]->m_kLST;
+}
+
+btSoftBody::Material* TcSoftBody::handle_material(int link) const {
+  const CutLink& meta = link_meta_[static_cast<std::size_t>(link)];
+  if (!calibrated() || !kept_handle(link)) return link_material(meta.a, meta.b);
+  const InterfaceConstraint& c = interfaces_[static_cast<std::size_t>(meta.interface)];
+  if (c.kind != InterfaceKind::kVertexNear) return link_material(meta.a, meta.b);
+  // On a -x or -z side the kept link spans one spacing of the finer cloth.
+  return level_materials_[static_cast<std::size_t>(tree().node(c.fine[0]).level)];
 }
 
 btScalar TcSoftBody::interface_stiffness(int fine_level) const {
@@ -59,6 +120,7 @@ void TcSoftBody::dissolve_interface(int link) {
   const InterfaceConstraint gone = interfaces_[index];
   for (const std::int32_t handle : gone.links) link_meta_[static_cast<std::size_t>(handle)].interface = -1;
   const std::int32_t partner = gone.links[0] == link ? gone.links[1] : gone.links[0];
+  m_links[partner].m_material = handle_material(partner);
   write_link_constant(partner);  // a plain link again, until its own removal (both go in the same operation)
   if (index + 1 != interfaces_.size()) {
     interfaces_[index] = interfaces_.back();
@@ -73,16 +135,41 @@ void TcSoftBody::prepare_interfaces() {
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {
     const InterfaceConstraint& c = interfaces_[i];
     PreparedInterface& p = prepared_interfaces_[i];
-    p.coarse = &m_nodes[record(c.coarse).bullet];
-    p.fine[0] = &m_nodes[record(c.fine[0]).bullet];
-    p.fine[1] = &m_nodes[record(c.fine[1]).bullet];
+    btScalar rest = c.rest;
+    if (c.kind == InterfaceKind::kMidpoint) {
+      p.coarse = &m_nodes[record(c.coarse).bullet];
+      p.fine[0] = &m_nodes[record(c.fine[0]).bullet];
+      p.fine[1] = &m_nodes[record(c.fine[1]).bullet];
+    } else {  // the hanging fine node to the midpoint of two nodes: near, the coarse one and its corner's; far, the
+              // kept fine one and the diagonal corner's (make_vertex_interface)
+      const TreeId hanging = c.fine[c.kept == 0 ? 1 : 0];
+      const TreeId first = c.kind == InterfaceKind::kVertexNear ? c.coarse : c.fine[static_cast<std::size_t>(c.kept)];
+      TreeId at_corner = kNoTreeNode;
+      if (c.corner_leaf != kNoTreeNode) {
+        const LodNode& corner = tree().node(c.corner_leaf);
+        at_corner = holding(corner.gx, corner.gy, true);
+        if (record(at_corner).rest_position() != record(c.corner_leaf).rest_position()) at_corner = kNoTreeNode;
+      }
+      if (at_corner == kNoTreeNode) {  // no node rests there (it hangs on a coarser block): near, a plain link
+        if (c.kind == InterfaceKind::kVertexFar) {
+          p.c0 = 0;
+          continue;
+        }
+        at_corner = c.coarse;
+        rest = (record(hanging).rest_position() - record(c.coarse).rest_position()).length();
+      }
+      p.coarse = &m_nodes[record(hanging).bullet];
+      p.fine[0] = &m_nodes[record(first).bullet];
+      p.fine[1] = &m_nodes[record(at_corner).bullet];
+    }
     // Position-based dynamics for C(x) = |(x_f0 + x_f1)/2 - x_c| - rest: gradients -n for the coarse node and n/2
-    // for each fine one, so the generalised inverse mass is w_c + (w_f0 + w_f1)/4. As for a link, the blend weight
-    // divides the constant (docs/design.md, "Blending through m_c0").
-    const btScalar w = p.coarse->m_im + btScalar(0.25) * (p.fine[0]->m_im + p.fine[1]->m_im);
+    // for each fine one, so the generalised inverse mass is w_c + (w_f0 + w_f1)/4 (w_c + w_f when both are one
+    // node). As for a link, the blend weight divides the constant (docs/design.md, "Blending through m_c0").
+    const btScalar w = p.fine[0] == p.fine[1] ? p.coarse->m_im + p.fine[0]->m_im
+                                              : p.coarse->m_im + btScalar(0.25) * (p.fine[0]->m_im + p.fine[1]->m_im);
     const double alpha = blend_alpha(link_meta_[static_cast<std::size_t>(c.links[0])]);
     p.c0 = w > 0 ? static_cast<btScalar>(w / c.stiffness / alpha) : btScalar(0);
-    p.c1 = c.rest * c.rest;
+    p.c1 = rest * rest;
   }
 }
 

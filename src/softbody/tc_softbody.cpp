@@ -284,7 +284,7 @@ void TcSoftBody::write_link_constant(int link) {
   // blend divides it by alpha, which scales the solver's correction by alpha without touching the rest length
   // (docs/design.md, "Blending through m_c0").
   // Calibrated, each link's own material (its level's stiffness): a fading link fades from its level's constant.
-  if (meta.interface >= 0) {  // a handle of an interface constraint: Bullet's link solver skips it
+  if (meta.interface >= 0 && !kept_handle(link)) {  // a handle of an interface constraint: Bullet's solver skips it
     l.m_c0 = 0;
     return;
   }

@@ -78,12 +78,26 @@ struct CutLink {
 /// links stay in Bullet's link array as the constraint's handles — the operations fade, relabel and remove them as
 /// they do every link, so the constraint follows the cut in O(degree) — with m_c0 = 0, which Bullet's link solver
 /// skips (btSoftBody::PSolve_Links solves only m_c0 > 0); their blend weight is the constraint's.
+///
+///
+/// On a tree whose blocks rest on their first leaf (RestPlacement::kVertex) a block's node is its cell's corner, and
+/// the interface is the vertex kind an adaptive mesh has: of the two fine nodes, the one in line with the coarse node
+/// (`kept`) stays joined to it by its handle as an ordinary link, and the other one hangs. On the block's +x and +z
+/// sides it lies on the coarse cell's edge, and is held to the midpoint of that edge's ends, the kept fine node and
+/// the node at the block's diagonal corner (kVertexFar); on its -x and -z sides its link to the coarse side meets
+/// the block's side between the coarse node and the node at the block's corner along that side, and is held at its
+/// rest distance to their midpoint (kVertexNear). The corner's node (`corner_leaf`'s) is found at each step; where
+/// none rests there, a far constraint is skipped and a near one holds the hanging node to the coarse node.
+enum class InterfaceKind : std::uint8_t { kMidpoint, kVertexFar, kVertexNear };
 struct InterfaceConstraint {
   TreeId coarse = kNoTreeNode;
   std::array<TreeId, 2> fine{kNoTreeNode, kNoTreeNode};
   std::array<std::int32_t, 2> links{-1, -1};  ///< the handles: links coarse-fine[0] and coarse-fine[1]
-  btScalar rest = 0;                          ///< rest distance from the coarse node to the fine nodes' midpoint
-  btScalar stiffness = 1;                     ///< kLST: the mean of the two levels' (TcSoftBody::interface_stiffness)
+  btScalar rest = 0;       ///< rest distance from the coarse node to the fine nodes' midpoint (vertex kinds: see above)
+  btScalar stiffness = 1;  ///< kLST: the mean of the two levels' (interface_stiffness); vertex kinds the finer's
+  InterfaceKind kind = InterfaceKind::kMidpoint;
+  std::int8_t kept = -1;             ///< vertex kinds: which handle stays an ordinary link (the other fine node hangs)
+  TreeId corner_leaf = kNoTreeNode;  ///< vertex kinds: the leaf at the block's corner the constraint reaches
 };
 
 /// Why an operation may not begin now.
@@ -314,6 +328,16 @@ class TcSoftBody : public btSoftBody {
   /// Before remove_link: dissolves the link's interface constraint (swap-with-last), the partner becoming a plain
   /// link again. O(1).
   void dissolve_interface(int link);
+  /// A level's link stiffness: its calibrated one, or the solver's when uncalibrated.
+  btScalar level_stiffness(int level) const;
+  /// The material a link takes: link_material() of its endpoints, except a kept handle on a block's -x or -z side,
+  /// which spans one spacing of the finer cloth and takes the finer level's.
+  Material* handle_material(int link) const;
+  /// On a tree resting on first leaves, makes a new constraint the vertex kind (InterfaceKind). O(1).
+  void make_vertex_interface(InterfaceConstraint& c) const;
+  /// On a tree resting on first leaves: the leaf a node rests on (where it rests at its centroid along an axis it
+  /// spans whole, its first leaf along that axis). O(1).
+  TreeId leaf_under(TreeId id) const;
   /// The stiffness of an interface constraint between cloth of `fine_level` and the level above: the solver's when
   /// uncalibrated, else the mean of the two levels' calibrated stiffnesses.
   btScalar interface_stiffness(int fine_level) const;
@@ -360,6 +384,13 @@ class TcSoftBody : public btSoftBody {
   /// write_link_constant, counted as operation work.
   void refresh_link_constant(int link);
   void refresh_incident_constants(TreeId id);
+  /// Whether the link is the handle a vertex interface keeps as an ordinary link (InterfaceConstraint::kept).
+  bool kept_handle(int link) const {
+    const std::int32_t i = link_meta_[static_cast<std::size_t>(link)].interface;
+    if (i < 0) return false;
+    const InterfaceConstraint& c = interfaces_[static_cast<std::size_t>(i)];
+    return c.kept >= 0 && c.links[static_cast<std::size_t>(c.kept)] == link;
+  }
   double blend_alpha(const CutLink& meta) const;
   /// (steps done + 1) / (K + 1): the weight of what an operation brings in.
   double op_progress(const Op& op) const;

@@ -105,8 +105,8 @@ Validation TcSoftBody::validate() const {
     if (l.m_rl != rest_length(meta.a, meta.b) || l.m_c1 != l.m_rl * l.m_rl) fail(name + ": rest length changed");
     const bool blended = meta.role == LinkRole::kFadeIn || meta.role == LinkRole::kFadeOut;
     if ((meta.role == LinkRole::kSteady) != (meta.op < 0)) fail(name + ": steady links own no operation");
-    if (l.m_material != link_material(meta.a, meta.b)) fail(name + ": not the material of its level");
-    if (meta.interface >= 0) {
+    if (l.m_material != handle_material(static_cast<int>(li))) fail(name + ": not the material of its level");
+    if (meta.interface >= 0 && !kept_handle(static_cast<int>(li))) {
       if (l.m_c0 != 0) fail(name + ": a handle of an interface constraint, but Bullet's link solver would solve it");
       continue;
     }
@@ -216,9 +216,19 @@ void TcSoftBody::validate_interfaces(const std::function<void(const std::string&
     const LodNode& f1 = lod.node(c.fine[1]);
     if (c.fine[0] == c.fine[1] || f0.parent != f1.parent || f0.level + 1 != lod.node(c.coarse).level)
       fail(name + ": its fine nodes are not two siblings one level finer than its coarse node");
+    // Its kind, kept handle, corner and rest distance are what its nodes make of it.
+    InterfaceConstraint remade = c;
+    remade.kind = InterfaceKind::kMidpoint;
+    remade.kept = -1;
+    remade.corner_leaf = kNoTreeNode;
     const btVector3 midpoint = (record(c.fine[0]).rest_position() + record(c.fine[1]).rest_position()) * btScalar(0.5);
-    if (c.rest != (midpoint - record(c.coarse).rest_position()).length()) fail(name + ": rest distance changed");
-    if (c.stiffness != interface_stiffness(f0.level)) fail(name + ": not the stiffness of its two levels");
+    remade.rest = (midpoint - record(c.coarse).rest_position()).length();
+    remade.stiffness = interface_stiffness(f0.level);
+    if (lod.placement() == RestPlacement::kVertex) make_vertex_interface(remade);
+    if (c.kind != remade.kind || c.kept != remade.kept || c.corner_leaf != remade.corner_leaf)
+      fail(name + ": not the kind its nodes' rest positions make");
+    if (c.rest != remade.rest) fail(name + ": rest distance changed");
+    if (c.stiffness != remade.stiffness) fail(name + ": not the stiffness of its levels");
     sides.emplace_back(c.coarse, f0.parent);
   }
   std::sort(sides.begin(), sides.end());
