@@ -142,32 +142,44 @@ TEST(TcSoftBody, BalanceForbidsNeighboursTwoLevelsApart) {
 }
 
 TEST(TcSoftBody, EachOperationConservesMassAndLinearMomentum) {
-  const auto net = testing::square_net(33, 0);  // no pins: momentum is conserved only away from anchors
-  SceneWorld world({});
-  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
-  for (int s = 0; s < 20; ++s) tc.simulate_step(kDt);  // get it moving
-  const LodTree& lod = net->lod();
-  const auto check = [&](const char* what, auto&& op) {
-    const Eigen::Vector3d before = tc.linear_momentum();
-    const double mass_before = tc.total_mass();
-    op();
-    const Eigen::Vector3d after = tc.linear_momentum();
-    EXPECT_LT((after - before).norm(), 1e-5 * std::max(1.0, before.norm())) << what;
-    EXPECT_NEAR(tc.total_mass(), mass_before, 1e-9) << what;
-  };
-  const TreeId p = lod.at(1, 5, 5);
-  check("coarse", [&] { tc.begin_coarse(p); });
-  tc.simulate_step(kDt);
-  for (int s = 0; s < tc.settings().blend_steps - 1; ++s) tc.advance_blends();
-  check("end-coarse", [&] { tc.advance_blends(); });
-  ASSERT_EQ(tc.state(p), CutState::kActive);
-  tc.simulate_step(kDt);
-  check("refine", [&] { tc.begin_refine(p); });
-  tc.simulate_step(kDt);
-  for (int s = 0; s < tc.settings().blend_steps - 1; ++s) tc.advance_blends();
-  check("end-refine", [&] { tc.advance_blends(); });
-  EXPECT_EQ(tc.state(p), CutState::kOff);
-  EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
+  // With block masses, and with masses that follow the cut, where operations also move mass between a block and its
+  // neighbours (tc_cut_masses.cpp): a block and then its neighbour, so that the second moves mass across a boundary
+  // between levels.
+  for (const Masses masses : {Masses::kBlocks, Masses::kCut}) {
+    SCOPED_TRACE(masses == Masses::kCut ? "cut masses" : "block masses");
+    const RestPlacement rest = masses == Masses::kCut ? RestPlacement::kVertex : RestPlacement::kCentroid;
+    const auto net = testing::square_net(33, 0, rest);  // no pins: momentum is conserved only away from anchors
+    SceneWorld world({});
+    TcSettings settings;
+    settings.masses = masses;
+    TcSoftBody tc(world.info(), net, testing::test_solver(), settings);
+    for (int s = 0; s < 20; ++s) tc.simulate_step(kDt);  // get it moving
+    const LodTree& lod = net->lod();
+    const auto check = [&](const char* what, auto&& op) {
+      const Eigen::Vector3d before = tc.linear_momentum();
+      const double mass_before = tc.total_mass();
+      op();
+      const Eigen::Vector3d after = tc.linear_momentum();
+      EXPECT_LT((after - before).norm(), 1e-5 * std::max(1.0, before.norm())) << what;
+      EXPECT_NEAR(tc.total_mass(), mass_before, 1e-9) << what;
+      EXPECT_TRUE(tc.validate().ok()) << what << ": " << tc.validate().summary();
+    };
+    const auto blend_and_end = [&](const char* what) {
+      tc.simulate_step(kDt);
+      for (int s = 0; s < tc.settings().blend_steps - 1; ++s) tc.advance_blends();
+      check(what, [&] { tc.advance_blends(); });
+    };
+    const TreeId p = lod.at(1, 5, 5), q = lod.at(1, 6, 5);
+    check("coarse", [&] { tc.begin_coarse(p); });
+    blend_and_end("end-coarse");
+    ASSERT_EQ(tc.state(p), CutState::kActive);
+    check("coarse beside", [&] { tc.begin_coarse(q); });
+    blend_and_end("end-coarse beside");
+    tc.simulate_step(kDt);
+    check("refine", [&] { tc.begin_refine(p); });
+    blend_and_end("end-refine");
+    EXPECT_EQ(tc.state(p), CutState::kOff);
+  }
 }
 
 TEST(TcSoftBody, FlatNetAtRestStaysAtRestThroughOperations) {
