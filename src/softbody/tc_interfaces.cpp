@@ -5,6 +5,8 @@
 // them towards each other under tension, which the fine cloth's straight links do not; no stiffness mends it. One
 // distance constraint from the coarse node to the fine nodes' midpoint carries the same load without the sideways
 // pull, as a hanging node of an adaptive mesh is held to the point its coarse neighbours give it.
+// On a tree whose blocks rest on their first leaf the same handles carry the vertex form of that constraint
+// (InterfaceKind in tc_softbody.h; make_vertex_interface).
 #include <BulletSoftBody/btSoftBodyInternals.h>
 
 #include "softbody/fan_rule.h"

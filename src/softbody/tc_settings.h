@@ -13,8 +13,10 @@ enum class Placement {
 
 /// How the cloth is joined where a coarse block meets finer cloth (docs/design.md, "Interfaces between levels").
 enum class Interfaces {
-  kLinks,    ///< the paper's: the coarse node is linked to each finer node facing it, a fan of two links per side
-  kHanging,  ///< one constraint per fan: the coarse node to the midpoint of the two finer nodes (hanging-node style)
+  kLinks,  ///< the paper's: the coarse node is linked to each finer node facing it, a fan of two links per side
+  /// one constraint per fan: the coarse node to the midpoint of the two finer nodes (hanging-node style); on a tree
+  /// resting on first leaves, the vertex kinds of InterfaceKind
+  kHanging,
 };
 
 /// What mass a simulated node carries (docs/design.md, "Masses that follow the cut").
