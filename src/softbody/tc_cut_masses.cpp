@@ -120,7 +120,7 @@ void TcSoftBody::settle_cut_masses(TreeId block) {
 
   // The mass that moves keeps its momentum: nodes that lose mass keep their velocity, and what they lose goes to the
   // nodes that gain, each in proportion to its gain (pinned nodes keep the pin's velocity whatever they gain).
-  double lost = 0, gained = 0;
+  double gained = 0;
   Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
   std::vector<double>& target = settle_targets_;
   target.resize(nodes.size());
@@ -129,7 +129,6 @@ void TcSoftBody::settle_cut_masses(TreeId block) {
     target[i] = target_mass(id);
     const double change = target[i] - record(id).sim_mass;
     if (change < 0) {
-      lost -= change;
       momentum -= change * to_eigen(m_nodes[record(id).bullet].m_v);
     } else if (change > 0 && !tree().node(id).pinned()) {
       gained += change;
