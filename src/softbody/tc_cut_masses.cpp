@@ -89,7 +89,7 @@ double TcSoftBody::cut_mass(TreeId id, bool committed) const {
   return mass;
 }
 
-void TcSoftBody::settle_cut_masses(TreeId block) {
+const std::vector<TreeId>& TcSoftBody::ring_nodes(TreeId block) {
   std::vector<TreeId>& nodes = settle_scratch_;
   nodes.clear();
   const auto add = [&](TreeId id) {
@@ -117,7 +117,23 @@ void TcSoftBody::settle_cut_masses(TreeId block) {
     add_holders(b.leaf_x0 - 1, z);
     add_holders(b.leaf_x1, z);
   }
+  return nodes;
+}
 
+void TcSoftBody::settle_ring(TreeId block) {
+  const std::vector<TreeId>& nodes = ring_nodes(block);
+  if (cut_masses()) settle_cut_masses(nodes);
+  if (!vertex_edges()) return;
+  for (const TreeId id : nodes)
+    for (const std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
+      Material* m = edge_material(li);
+      if (m_links[li].m_material == m) continue;
+      m_links[li].m_material = m;
+      refresh_link_constant(li);
+    }
+}
+
+void TcSoftBody::settle_cut_masses(const std::vector<TreeId>& nodes) {
   // The mass that moves keeps its momentum: nodes that lose mass keep their velocity, and what they lose goes to the
   // nodes that gain, each in proportion to its gain (pinned nodes keep the pin's velocity whatever they gain).
   double gained = 0;

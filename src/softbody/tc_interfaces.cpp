@@ -41,8 +41,8 @@ void TcSoftBody::pair_into_interface(int link) {
     if (tree().placement() == RestPlacement::kVertex) make_vertex_interface(interfaces_.back());
     link_meta_[static_cast<std::size_t>(li)].interface = index;
     link_meta_[static_cast<std::size_t>(link)].interface = index;
-    m_links[li].m_material = handle_material(li);  // (a kept handle on a -x or -z side: the finer level's)
-    m_links[link].m_material = handle_material(link);
+    m_links[li].m_material = edge_material(li);  // (a kept handle on a -x or -z side: the finer level's)
+    m_links[link].m_material = edge_material(link);
     write_link_constant(li);
     write_link_constant(link);
     return;
@@ -98,13 +98,22 @@ btScalar TcSoftBody::level_stiffness(int level) const {
   return calibrated() ? level_materials_[static_cast<std::size_t>(level)]->m_kLST : m_materials[0]->m_kLST;
 }
 
-btSoftBody::Material* TcSoftBody::handle_material(int link) const {
+btSoftBody::Material* TcSoftBody::edge_material(int link) const {
   const CutLink& meta = link_meta_[static_cast<std::size_t>(link)];
-  if (!calibrated() || !kept_handle(link)) return link_material(meta.a, meta.b);
-  const InterfaceConstraint& c = interfaces_[static_cast<std::size_t>(meta.interface)];
-  if (c.kind != InterfaceKind::kVertexNear) return link_material(meta.a, meta.b);
-  // On a -x or -z side the kept link spans one spacing of the finer cloth.
-  return level_materials_[static_cast<std::size_t>(tree().node(c.fine[0]).level)];
+  if (!calibrated()) return m_materials[0];
+  if (!vertex_edges() || meta.role == LinkRole::kTether) return link_material(meta.a, meta.b);
+  // On a first-leaf tree a link along a row or column is the edge between two cells of the cut: the block its lower
+  // end starts (above or to the right of it) and the one holding the leaf just below or to the left. It takes the
+  // finer one's stiffness, as the edge a coarse cell shares with finer cloth is, in the reference, that cloth's.
+  const LodNode& a = tree().node(leaf_under(meta.a));
+  const LodNode& b = tree().node(leaf_under(meta.b));
+  if (a.gx != b.gx && a.gy != b.gy) return link_material(meta.a, meta.b);  // a slanted handle (never solved)
+  const bool along_x = a.gy == b.gy;
+  const LodNode& low = (along_x ? a.gx < b.gx : a.gy < b.gy) ? a : b;
+  int level = tree().node(holding(low.gx, low.gy, true)).level;
+  const int x = along_x ? low.gx : low.gx - 1, z = along_x ? low.gy - 1 : low.gy;
+  if (x >= 0 && z >= 0) level = std::min<int>(level, tree().node(holding(x, z, true)).level);
+  return level_materials_[static_cast<std::size_t>(level)];
 }
 
 btScalar TcSoftBody::interface_stiffness(int fine_level) const {
@@ -122,7 +131,7 @@ void TcSoftBody::dissolve_interface(int link) {
   const InterfaceConstraint gone = interfaces_[index];
   for (const std::int32_t handle : gone.links) link_meta_[static_cast<std::size_t>(handle)].interface = -1;
   const std::int32_t partner = gone.links[0] == link ? gone.links[1] : gone.links[0];
-  m_links[partner].m_material = handle_material(partner);
+  m_links[partner].m_material = edge_material(partner);
   write_link_constant(partner);  // a plain link again, until its own removal (both go in the same operation)
   if (index + 1 != interfaces_.size()) {
     interfaces_[index] = interfaces_.back();

@@ -193,7 +193,7 @@ void TcSoftBody::begin_refine(TreeId p) {
         });
     add_link(p, c, LinkRole::kTether, op);
   }
-  if (cut_masses()) settle_cut_masses(p);
+  if (tree().placement() == RestPlacement::kVertex) settle_ring(p);
   emit(OpKind::kRefine, p, t1 - t0, op_clock() - t1);
 }
 
@@ -251,7 +251,7 @@ void TcSoftBody::begin_coarse(TreeId p) {
       tree(), p, [this](TreeId n) { return probe_committed(n); },
       [&](TreeId n) { add_link(p, n, LinkRole::kFadeIn, op); });
   for (int i = 0; i < pn.child_count; ++i) add_link(p, pn.children[static_cast<std::size_t>(i)], LinkRole::kTether, op);
-  if (cut_masses()) settle_cut_masses(p);
+  if (tree().placement() == RestPlacement::kVertex) settle_ring(p);
   emit(OpKind::kCoarse, p, t1 - t0, op_clock() - t1);
 }
 
@@ -353,7 +353,7 @@ void TcSoftBody::end_refine(const Op& op) {
   const std::int64_t t2 = op_clock();
 
   for (int i = 0; i < pn.child_count; ++i) refresh_incident_constants(pn.children[static_cast<std::size_t>(i)]);
-  if (cut_masses()) settle_cut_masses(p);
+  if (tree().placement() == RestPlacement::kVertex) settle_ring(p);
   const std::int64_t t3 = op_clock();
   emit(OpKind::kEndRefine, p, t2 - t1, (t1 - t0) + (t3 - t2));
 }
@@ -392,7 +392,7 @@ void TcSoftBody::end_coarse(const Op& op) {
   const std::int64_t t2 = op_clock();
 
   refresh_incident_constants(p);
-  if (cut_masses()) settle_cut_masses(p);
+  if (tree().placement() == RestPlacement::kVertex) settle_ring(p);
   const std::int64_t t3 = op_clock();
   emit(OpKind::kEndCoarse, p, t2 - t1, (t1 - t0) + (t3 - t2));
 }

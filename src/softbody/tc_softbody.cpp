@@ -205,6 +205,7 @@ int TcSoftBody::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
   l.m_rl = rest_length(a, b);
   l.m_c1 = l.m_rl * l.m_rl;
   link_meta_.push_back({a, b, role, op});
+  if (vertex_edges()) l.m_material = edge_material(index);
   incidence_[static_cast<std::size_t>(a)].add(index);
   incidence_[static_cast<std::size_t>(b)].add(index);
   write_link_constant(index);

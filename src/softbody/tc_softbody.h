@@ -330,9 +330,15 @@ class TcSoftBody : public btSoftBody {
   void dissolve_interface(int link);
   /// A level's link stiffness: its calibrated one, or the solver's when uncalibrated.
   btScalar level_stiffness(int level) const;
-  /// The material a link takes: link_material() of its endpoints, except a kept handle on a block's -x or -z side,
-  /// which spans one spacing of the finer cloth and takes the finer level's.
-  Material* handle_material(int link) const;
+  /// The material a link takes: link_material() of its endpoints; with vertex_edges(), the finer of the levels of the
+  /// two cells of the committed cut the link is the edge between (docs/design.md, "Interfaces between levels").
+  /// O(levels).
+  Material* edge_material(int link) const;
+  /// Whether links take edge_material()'s rule: calibrated, hanging interfaces, a tree resting on first leaves (with
+  /// the paper's fans the rule made a first-leaf tree err more: docs/investigations/cut-masses.md).
+  bool vertex_edges() const {
+    return calibrated() && settings_.interfaces == Interfaces::kHanging && tree().placement() == RestPlacement::kVertex;
+  }
   /// On a tree resting on first leaves, makes a new constraint the vertex kind (InterfaceKind). O(1).
   void make_vertex_interface(InterfaceConstraint& c) const;
   /// On a tree resting on first leaves: the leaf a node rests on (where it rests at its centroid along an axis it
@@ -372,7 +378,14 @@ class TcSoftBody : public btSoftBody {
   /// After an operation on `block` changed a cut: every simulated node whose mass that can change (the block's
   /// nodes and those holding the ring of leaves around it) goes to target_mass(), the mass moving from the nodes
   /// that lose it to those that gain it with its momentum, and their links' constants follow. O(block perimeter).
-  void settle_cut_masses(TreeId block);
+  void settle_cut_masses(const std::vector<TreeId>& nodes);
+  /// After an operation on `block`: the simulated nodes whose masses or links' materials it can have changed (the
+  /// block's nodes and those holding the ring of leaves around it, in either cut) into settle_scratch_. O(block
+  /// perimeter x levels).
+  const std::vector<TreeId>& ring_nodes(TreeId block);
+  /// On a first-leaf tree after an operation on `block`: masses that follow the cut settled, and every link of the ring's
+  /// nodes given edge_material() (its constant rewritten where that changed).
+  void settle_ring(TreeId block);
   /// Writes a tree node's Bullet index (or -1) to its record and to the bullet_ mirror together.
   void set_bullet_index(TreeId id, std::int32_t index);
   NodeRecord& record(TreeId id) { return record_[static_cast<std::size_t>(id)]; }

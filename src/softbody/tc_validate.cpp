@@ -105,7 +105,7 @@ Validation TcSoftBody::validate() const {
     if (l.m_rl != rest_length(meta.a, meta.b) || l.m_c1 != l.m_rl * l.m_rl) fail(name + ": rest length changed");
     const bool blended = meta.role == LinkRole::kFadeIn || meta.role == LinkRole::kFadeOut;
     if ((meta.role == LinkRole::kSteady) != (meta.op < 0)) fail(name + ": steady links own no operation");
-    if (l.m_material != handle_material(static_cast<int>(li))) fail(name + ": not the material of its level");
+    if (l.m_material != edge_material(static_cast<int>(li))) fail(name + ": not the material of its level");
     if (meta.interface >= 0 && !kept_handle(static_cast<int>(li))) {
       if (l.m_c0 != 0) fail(name + ": a handle of an interface constraint, but Bullet's link solver would solve it");
       continue;

@@ -72,6 +72,41 @@ TEST(TcVertexInterfaces, OnACoarseBlocksNearSideTheHangingLinkMeetsTheSideAtItsM
   EXPECT_TRUE(tc->validate().ok()) << tc->validate().summary();
 }
 
+TEST(TcVertexInterfaces, AnEdgeACoarseCellSharesWithFinerClothTakesTheFinerStiffness) {
+  // A 3 x 3 group of level-1 blocks in a fine 17^2 net, calibrated: a link between two of its blocks is the edge of
+  // two coarse cells where the group's blocks lie on both sides of it, and of a coarse and a fine cell on the group's
+  // low sides, where it takes the finer level's stiffness (edge_material).
+  const auto net = testing::square_net(17, kAllCorners, RestPlacement::kVertex);
+  TcSettings settings;
+  settings.interfaces = Interfaces::kHanging;
+  settings.level_stiffness = {0.5, 0.25};
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), settings);
+  const LodTree& tree = net->lod();
+  for (bool began = true; began;) {
+    began = false;
+    for (int gy = 2; gy < 5; ++gy)
+      for (int gx = 2; gx < 5; ++gx)
+        if (tc.can_coarsen(tree.at(1, gx, gy)).ok) {
+          tc.begin_coarse(tree.at(1, gx, gy));
+          began = true;
+        }
+    while (tc.interpolations() > 0) tc.advance_blends();
+  }
+  const auto stiffness = [&](int ax, int ay, int bx, int by) {
+    const TreeId a = tree.at(1, ax, ay), b = tree.at(1, bx, by);
+    for (const std::int32_t li : tc.incidence(a))
+      if (tc.cut_links()[static_cast<std::size_t>(li)].other(a) == b) return tc.m_links[li].m_material->m_kLST;
+    ADD_FAILURE() << "no link between the blocks";
+    return btScalar(0);
+  };
+  EXPECT_EQ(stiffness(3, 3, 4, 3), 0.5f);  // the group's blocks above and below it
+  EXPECT_EQ(stiffness(3, 3, 3, 4), 0.5f);  // ... to its left and right
+  EXPECT_EQ(stiffness(2, 2, 3, 2), 1.0f);  // the group's bottom row: fine cloth below
+  EXPECT_EQ(stiffness(2, 2, 2, 3), 1.0f);  // its left column: fine cloth to the left
+  EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
+}
+
 TEST(TcVertexInterfaces, ANetAtRestWithVertexInterfacesStaysAtRest) {
   WorldSettings no_gravity;
   no_gravity.gravity = 0;
