@@ -383,8 +383,8 @@ class TcSoftBody : public btSoftBody {
   /// block's nodes and those holding the ring of leaves around it, in either cut) into settle_scratch_. O(block
   /// perimeter x levels).
   const std::vector<TreeId>& ring_nodes(TreeId block);
-  /// On a first-leaf tree after an operation on `block`: masses that follow the cut settled, and every link of the ring's
-  /// nodes given edge_material() (its constant rewritten where that changed).
+  /// On a first-leaf tree after an operation on `block`: masses that follow the cut settled, and every link of the
+  /// ring's nodes given edge_material() (its constant rewritten where that changed).
   void settle_ring(TreeId block);
   /// Writes a tree node's Bullet index (or -1) to its record and to the bullet_ mirror together.
   void set_bullet_index(TreeId id, std::int32_t index);
