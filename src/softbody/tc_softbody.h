@@ -375,9 +375,8 @@ class TcSoftBody : public btSoftBody {
   /// What a simulated node carries: the mean of its masses in the old and the committed cut, so that an operation's
   /// two sides each carry half, as with block masses. O(levels).
   double target_mass(TreeId id) const { return 0.5 * (cut_mass(id, true) + cut_mass(id, false)); }
-  /// After an operation on `block` changed a cut: every simulated node whose mass that can change (the block's
-  /// nodes and those holding the ring of leaves around it) goes to target_mass(), the mass moving from the nodes
-  /// that lose it to those that gain it with its momentum, and their links' constants follow. O(block perimeter).
+  /// Every node of `nodes` (ring_nodes() of an operation's block) goes to target_mass(), the mass moving from the
+  /// nodes that lose it to those that gain it with its momentum, and their links' constants follow. O(nodes x levels).
   void settle_cut_masses(const std::vector<TreeId>& nodes);
   /// After an operation on `block`: the simulated nodes whose masses or links' materials it can have changed (the
   /// block's nodes and those holding the ring of leaves around it, in either cut) into settle_scratch_. O(block
