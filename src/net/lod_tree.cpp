@@ -79,8 +79,7 @@ LodTree::LodTree(int width, int height, std::span<const Eigen::Vector3d> leaf_re
           // rows 0, 2^k, 2 * 2^k, ... (docs/investigations/lod-rest-placement.md). Along an axis the block spans
           // whole, its centroid.
           const bool span_x = n.leaf_x0 == 0 && n.leaf_x1 == width, span_y = n.leaf_y0 == 0 && n.leaf_y1 == height;
-          const int vx = n.leaf_x1 == width ? width - 1 : n.leaf_x0, vy = n.leaf_y1 == height ? height - 1 : n.leaf_y0;
-          const Eigen::Vector3d& vertex = leaf_rest[static_cast<std::size_t>(at(0, vx, vy))];
+          const Eigen::Vector3d& vertex = leaf_rest[static_cast<std::size_t>(rest_leaf(id))];
           if (!span_x && !span_y) {
             rest_[i] = vertex;
           } else {

@@ -62,6 +62,16 @@ class LodTree {
   /// border (along an axis where it spans the whole net, at its centroid). Leaves rest where the net puts them.
   const Eigen::Vector3d& rest(TreeId id) const { return rest_[static_cast<std::size_t>(id)]; }
   RestPlacement placement() const { return placement_; }
+  /// With RestPlacement::kVertex, the leaf a node rests on: its pinned leaf, else its first leaf, or along an axis
+  /// where its block touches only the net's last border the last one (along an axis its block spans whole it rests at
+  /// its centroid, and its first leaf stands in). O(1).
+  TreeId rest_leaf(TreeId id) const {
+    const LodNode& n = node(id);
+    if (n.anchor_leaf != kNoTreeNode) return n.anchor_leaf;
+    const int width = level_width(0), height = level_height(0);
+    return at(0, n.leaf_x1 == width && n.leaf_x0 != 0 ? width - 1 : n.leaf_x0,
+              n.leaf_y1 == height && n.leaf_y0 != 0 ? height - 1 : n.leaf_y0);
+  }
   /// Whether the node's block touches a border of the net. Reads the node alone (not the rest and centroid arrays,
   /// which an operation avoids).
   bool touches_border(const LodNode& n) const {

@@ -29,7 +29,7 @@ void TcSoftBody::build_corner_shares() {
   for (std::size_t id = 0; id < lod.size(); ++id) {
     const LodNode& n = lod.nodes()[id];
     CornerShares& c = corner_shares_[id];
-    const LodNode& rest_leaf = lod.node(leaf_under(static_cast<TreeId>(id)));
+    const LodNode& rest_leaf = lod.node(tree().rest_leaf(static_cast<TreeId>(id)));
     c.x = rest_leaf.gx;
     c.z = rest_leaf.gy;
     c.next_x = n.leaf_x1 < width ? n.leaf_x1 : -1;
@@ -121,6 +121,7 @@ const std::vector<TreeId>& TcSoftBody::ring_nodes(TreeId block) {
 }
 
 void TcSoftBody::settle_ring(TreeId block) {
+  if (!cut_masses() && !vertex_edges()) return;  // (the paper's tree and masses: nothing around the block changes)
   const std::vector<TreeId>& nodes = ring_nodes(block);
   if (cut_masses()) settle_cut_masses(nodes);
   if (!vertex_edges()) return;

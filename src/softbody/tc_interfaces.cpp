@@ -62,15 +62,15 @@ void TcSoftBody::make_vertex_interface(InterfaceConstraint& c) const {
     c.kept = static_cast<std::int8_t>(k);
     c.kind = near ? InterfaceKind::kVertexNear : InterfaceKind::kVertexFar;
   }
+  if (c.kept < 0) return;  // (no fine node in line: the midpoint constraint stays)
   // Both kinds stand for the finer cloth (a fine link to a point of the coarse side, or a fine node on a coarse
   // edge): the finer level's stiffness.
-  if (c.kept >= 0) c.stiffness = level_stiffness(f.level);
-  if (c.kept < 0) return;  // (no fine node in line: the midpoint constraint stays)
+  c.stiffness = level_stiffness(f.level);
   // The far corner the constraint needs: near, the block's corner along the side (+z for a pair on its -x side, +x
   // for one on its -z side), whose node and the coarse node span the side the hanging node's link meets; far, the
   // block's diagonal corner, whose node and the kept fine node span the coarse cell's edge the hanging node lies on.
   const int width = tree().level_width(0), height = tree().level_height(0);
-  const LodNode& rest_leaf = tree().node(leaf_under(c.coarse));
+  const LodNode& rest_leaf = tree().node(tree().rest_leaf(c.coarse));
   const int x = near ? (along_z ? rest_leaf.gx : block.leaf_x1) : block.leaf_x1;
   const int z = near ? (along_z ? block.leaf_y1 : rest_leaf.gy) : block.leaf_y1;
   if (x >= width || z >= height) {
@@ -83,30 +83,18 @@ void TcSoftBody::make_vertex_interface(InterfaceConstraint& c) const {
   c.rest = (hanging - (other + record(c.corner_leaf).rest_position()) * btScalar(0.5)).length();
 }
 
-TreeId TcSoftBody::leaf_under(TreeId id) const {
-  // LodTree's vertex placement: on the pinned leaf, else the first leaf, or the last along an axis where the block
-  // touches only the net's last border (along an axis it spans whole it rests at its centroid: the first leaf stands
-  // in).
-  const LodNode& n = tree().node(id);
-  if (n.anchor_leaf != kNoTreeNode) return n.anchor_leaf;
-  const int width = tree().level_width(0), height = tree().level_height(0);
-  return tree().at(0, n.leaf_x1 == width && n.leaf_x0 != 0 ? width - 1 : n.leaf_x0,
-                   n.leaf_y1 == height && n.leaf_y0 != 0 ? height - 1 : n.leaf_y0);
-}
-
 btScalar TcSoftBody::level_stiffness(int level) const {
   return calibrated() ? level_materials_[static_cast<std::size_t>(level)]->m_kLST : m_materials[0]->m_kLST;
 }
 
 btSoftBody::Material* TcSoftBody::edge_material(int link) const {
   const CutLink& meta = link_meta_[static_cast<std::size_t>(link)];
-  if (!calibrated()) return m_materials[0];
   if (!vertex_edges() || meta.role == LinkRole::kTether) return link_material(meta.a, meta.b);
   // On a first-leaf tree a link along a row or column is the edge between two cells of the cut: the block its lower
   // end starts (above or to the right of it) and the one holding the leaf just below or to the left. It takes the
   // finer one's stiffness, as the edge a coarse cell shares with finer cloth is, in the reference, that cloth's.
-  const LodNode& a = tree().node(leaf_under(meta.a));
-  const LodNode& b = tree().node(leaf_under(meta.b));
+  const LodNode& a = tree().node(tree().rest_leaf(meta.a));
+  const LodNode& b = tree().node(tree().rest_leaf(meta.b));
   if (a.gx != b.gx && a.gy != b.gy) return link_material(meta.a, meta.b);  // a slanted handle (never solved)
   const bool along_x = a.gy == b.gy;
   const LodNode& low = (along_x ? a.gx < b.gx : a.gy < b.gy) ? a : b;
@@ -117,13 +105,12 @@ btSoftBody::Material* TcSoftBody::edge_material(int link) const {
 }
 
 btScalar TcSoftBody::interface_stiffness(int fine_level) const {
-  if (!calibrated()) return m_materials[0]->m_kLST;
   // The constraint spans cloth of both levels (from the coarse node to its block's edge, then into the finer
   // block), so it takes the mean of their calibrated stiffnesses. Measured on fixed cuts of the converged suite's
   // nets against the coarser level's stiffness alone, the finer's, their series combinations and fixed values
   // (docs/investigations/hanging-interfaces.md): the mean is within the broad best range on every cut tried.
-  const auto level = static_cast<std::size_t>(fine_level);
-  return (level_materials_[level]->m_kLST + level_materials_[level + 1]->m_kLST) / 2;
+  // (Uncalibrated both are the solver's, and so is their mean.)
+  return (level_stiffness(fine_level) + level_stiffness(fine_level + 1)) / 2;
 }
 
 void TcSoftBody::dissolve_interface(int link) {

@@ -155,7 +155,7 @@ void TcSoftBody::begin_refine(TreeId p) {
   }
   // Children take the parent's velocity and half their mass; the parent keeps the other half. Total mass and
   // linear momentum are unchanged. (With masses that follow the cut the parent's mass is not its block's: the
-  // children share its half as their blocks share the block, and settle_cut_masses() then moves the rest.)
+  // children share its half as their blocks share the block, and settle_ring() then moves the rest.)
   const double parent_mass = record(p).sim_mass;
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
@@ -193,7 +193,7 @@ void TcSoftBody::begin_refine(TreeId p) {
         });
     add_link(p, c, LinkRole::kTether, op);
   }
-  if (tree().placement() == RestPlacement::kVertex) settle_ring(p);
+  settle_ring(p);
   emit(OpKind::kRefine, p, t1 - t0, op_clock() - t1);
 }
 
@@ -251,7 +251,7 @@ void TcSoftBody::begin_coarse(TreeId p) {
       tree(), p, [this](TreeId n) { return probe_committed(n); },
       [&](TreeId n) { add_link(p, n, LinkRole::kFadeIn, op); });
   for (int i = 0; i < pn.child_count; ++i) add_link(p, pn.children[static_cast<std::size_t>(i)], LinkRole::kTether, op);
-  if (tree().placement() == RestPlacement::kVertex) settle_ring(p);
+  settle_ring(p);
   emit(OpKind::kCoarse, p, t1 - t0, op_clock() - t1);
 }
 
@@ -334,7 +334,7 @@ void TcSoftBody::end_refine(const Op& op) {
   // The parent's half of the mass and its momentum go to the children in proportion to their masses.
   const Eigen::Vector3d vp = to_eigen(m_nodes[record(p).bullet].m_v);
   ++work_.nodes;  // p's velocity
-  // (With masses that follow the cut, in proportion to the halves they carry; settle_cut_masses() follows.)
+  // (With masses that follow the cut, in proportion to the halves they carry; settle_ring() follows.)
   double children_half = 0;
   if (cut_masses())
     for (int i = 0; i < pn.child_count; ++i) children_half += record(pn.children[static_cast<std::size_t>(i)]).sim_mass;
@@ -353,7 +353,7 @@ void TcSoftBody::end_refine(const Op& op) {
   const std::int64_t t2 = op_clock();
 
   for (int i = 0; i < pn.child_count; ++i) refresh_incident_constants(pn.children[static_cast<std::size_t>(i)]);
-  if (tree().placement() == RestPlacement::kVertex) settle_ring(p);
+  settle_ring(p);
   const std::int64_t t3 = op_clock();
   emit(OpKind::kEndRefine, p, t2 - t1, (t1 - t0) + (t3 - t2));
 }
@@ -392,7 +392,7 @@ void TcSoftBody::end_coarse(const Op& op) {
   const std::int64_t t2 = op_clock();
 
   refresh_incident_constants(p);
-  if (tree().placement() == RestPlacement::kVertex) settle_ring(p);
+  settle_ring(p);
   const std::int64_t t3 = op_clock();
   emit(OpKind::kEndCoarse, p, t2 - t1, (t1 - t0) + (t3 - t2));
 }

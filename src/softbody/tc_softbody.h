@@ -72,15 +72,9 @@ struct CutLink {
   TreeId other(TreeId end) const { return a == end ? b : a; }
 };
 
-/// With TcSettings::interfaces = kHanging, what replaces a fan: where the block of `coarse` meets the two finer
-/// nodes `fine` across one of its sides (children of the block beside it), one distance constraint between the
-/// coarse node and the fine nodes' midpoint, weights 1/2 each, at the rest distance between them. The fan's two
-/// links stay in Bullet's link array as the constraint's handles — the operations fade, relabel and remove them as
-/// they do every link, so the constraint follows the cut in O(degree) — with m_c0 = 0, which Bullet's link solver
-/// skips (btSoftBody::PSolve_Links solves only m_c0 > 0); their blend weight is the constraint's.
-///
-///
-/// On a tree whose blocks rest on their first leaf (RestPlacement::kVertex) a block's node is its cell's corner, and
+/// Which form an interface constraint takes: kMidpoint, the one described at InterfaceConstraint, on a tree whose
+/// blocks rest at their centroids. On a tree whose blocks rest on their first leaf (RestPlacement::kVertex) a block's
+/// node is its cell's corner, and
 /// the interface is the vertex kind an adaptive mesh has: of the two fine nodes, the one in line with the coarse node
 /// (`kept`) stays joined to it by its handle as an ordinary link, and the other one hangs. On the block's +x and +z
 /// sides it lies on the coarse cell's edge, and is held to the midpoint of that edge's ends, the kept fine node and
@@ -89,11 +83,18 @@ struct CutLink {
 /// rest distance to their midpoint (kVertexNear). The corner's node (`corner_leaf`'s) is found at each step; where
 /// none rests there, a far constraint is skipped and a near one holds the hanging node to the coarse node.
 enum class InterfaceKind : std::uint8_t { kMidpoint, kVertexFar, kVertexNear };
+
+/// With TcSettings::interfaces = kHanging, what replaces a fan: where the block of `coarse` meets the two finer
+/// nodes `fine` across one of its sides (children of the block beside it), one distance constraint between the
+/// coarse node and the fine nodes' midpoint, weights 1/2 each, at the rest distance between them. The fan's two
+/// links stay in Bullet's link array as the constraint's handles — the operations fade, relabel and remove them as
+/// they do every link, so the constraint follows the cut in O(degree) — with m_c0 = 0, which Bullet's link solver
+/// skips (btSoftBody::PSolve_Links solves only m_c0 > 0); their blend weight is the constraint's.
 struct InterfaceConstraint {
   TreeId coarse = kNoTreeNode;
   std::array<TreeId, 2> fine{kNoTreeNode, kNoTreeNode};
   std::array<std::int32_t, 2> links{-1, -1};  ///< the handles: links coarse-fine[0] and coarse-fine[1]
-  btScalar rest = 0;       ///< rest distance from the coarse node to the fine nodes' midpoint (vertex kinds: see above)
+  btScalar rest = 0;  ///< rest distance from the coarse node to the fine nodes' midpoint (vertex kinds: InterfaceKind)
   btScalar stiffness = 1;  ///< kLST: the mean of the two levels' (interface_stiffness); vertex kinds the finer's
   InterfaceKind kind = InterfaceKind::kMidpoint;
   std::int8_t kept = -1;             ///< vertex kinds: which handle stays an ordinary link (the other fine node hangs)
@@ -341,9 +342,6 @@ class TcSoftBody : public btSoftBody {
   }
   /// On a tree resting on first leaves, makes a new constraint the vertex kind (InterfaceKind). O(1).
   void make_vertex_interface(InterfaceConstraint& c) const;
-  /// On a tree resting on first leaves: the leaf a node rests on (where it rests at its centroid along an axis it
-  /// spans whole, its first leaf along that axis). O(1).
-  TreeId leaf_under(TreeId id) const;
   /// The stiffness of an interface constraint between cloth of `fine_level` and the level above: the solver's when
   /// uncalibrated, else the mean of the two levels' calibrated stiffnesses.
   btScalar interface_stiffness(int fine_level) const;
@@ -382,8 +380,9 @@ class TcSoftBody : public btSoftBody {
   /// block's nodes and those holding the ring of leaves around it, in either cut) into settle_scratch_. O(block
   /// perimeter x levels).
   const std::vector<TreeId>& ring_nodes(TreeId block);
-  /// On a first-leaf tree after an operation on `block`: masses that follow the cut settled, and every link of the
-  /// ring's nodes given edge_material() (its constant rewritten where that changed).
+  /// After every operation on `block`: with masses that follow the cut they are settled, and with vertex_edges()
+  /// every link of the ring's nodes is given edge_material() (its constant rewritten where that changed); else
+  /// nothing.
   void settle_ring(TreeId block);
   /// Writes a tree node's Bullet index (or -1) to its record and to the bullet_ mirror together.
   void set_bullet_index(TreeId id, std::int32_t index);
@@ -483,8 +482,8 @@ class TcSoftBody : public btSoftBody {
   /// Primitives count into it whenever they run; between operations (the blend ramp) nothing reads it.
   OpWork work_;
   std::vector<CornerShares> corner_shares_;  // per tree node, with masses that follow the cut
-  std::vector<TreeId> settle_scratch_;       // settle_cut_masses()' nodes and their targets, kept to reuse the room
-  std::vector<double> settle_targets_;
+  std::vector<TreeId> settle_scratch_;       // ring_nodes()' nodes, kept to reuse the room
+  std::vector<double> settle_targets_;       // settle_cut_masses()' targets, likewise
 };
 
 }  // namespace tcsb
