@@ -182,7 +182,8 @@ class TcSoftBody : public btSoftBody {
   /// before beginning new operations. O(interpolations); when TcSettings::restore_order is on and operations have
   /// displaced more than TcSettings::kReorderFraction of the arrays' elements, it then restores their order
   /// (restore_order(): O(N + L + T) once per (N + L)/4 displacements, T the tree's size, so amortised O(1 + T/N) per
-  /// displacement: O(1) at any fixed compression, 4.4 N at 30 %). On bodies that shrank by
+  /// displacement: O(1) at any fixed compression, 4.4 N at 30 %); with TcSettings::exact_order, whenever anything
+  /// was displaced (O(N + L + T) per such boundary). On bodies that shrank by
   /// TcSettings::kDbvtRebuildShrink since their node DBVT was built it rebuilds that tree too (rebuild_node_dbvt()).
   void advance_blends();
   /// One solo step (predictMotion, solve_constraints(), integrateMotion), as a plain body outside any collision

@@ -51,6 +51,8 @@ const AxisSetting kAxisSettings[] = {
      }},
     {"tcsb.restore_order",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.tcsb.restore_order = r.boolean(v, at); }},
+    {"tcsb.exact_order",
+     [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.tcsb.exact_order = r.boolean(v, at); }},
     {"tcsb.restore_order_min_nodes", [](const Reader& r, const json& v, const std::string& at,
                                         Suite& s) { s.tcsb.restore_order_min_nodes = whole(r, v, at, 0, INT_MAX); }},
     {"tcsb.rebuild_dbvt",

@@ -105,6 +105,9 @@ TEST(CalibrationFile, FitsOnlyTheRegimeItWasFittedIn) {
   other.tcsb.masses = Masses::kCut;  // nor with TC-SB's masses following the cut: every coarse level is other cloth
   EXPECT_NE(calibration_mismatch(c, other).find("tcsb calibrate"), std::string::npos);
   other = suite;
+  other.tcsb.exact_order = true;  // nor with the links solved in a plain body's order: the order is the material
+  EXPECT_NE(calibration_mismatch(c, other).find("tcsb calibrate"), std::string::npos);
+  other = suite;
   other.name = "renamed";  // name, description, repetitions and fidelity settings do not matter
   other.repetitions = 9;
   EXPECT_EQ(calibration_mismatch(c, other), "");

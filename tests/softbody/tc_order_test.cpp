@@ -191,6 +191,46 @@ TEST(TcSoftBodyOrder, BodiesBelowTheMinimumNodeCountAreLeftInTheOperationsOrder)
   EXPECT_TRUE(below.validate().ok()) << below.validate().summary();
 }
 
+/// True when Bullet's arrays are in the order restore_order() gives: nodes by their blocks' spatial ranks, links by
+/// (lower endpoint, higher endpoint).
+bool in_plain_order(const TcSoftBody& body) {
+  const LodTree& lod = body.tree();
+  for (int i = 1; i < body.node_count(); ++i)
+    if (lod.spatial_rank(body.tree_id(i - 1)) >= lod.spatial_rank(body.tree_id(i))) return false;
+  const auto ends = [&](int li) {
+    const int a = index_of(body, body.m_links[li].m_n[0]), b = index_of(body, body.m_links[li].m_n[1]);
+    return std::pair{std::min(a, b), std::max(a, b)};
+  };
+  for (int li = 1; li < body.link_count(); ++li)
+    if (!(ends(li - 1) < ends(li))) return false;
+  return true;
+}
+
+TEST(TcSoftBodyOrder, WithExactOrderEveryBoundaryLeavesTheArraysInAPlainBodysOrder) {
+  const auto net = testing::square_net(33);  // below restore_order_min_nodes: only exact_order restores here
+  SceneWorld world({});
+  TcSettings settings;
+  settings.exact_order = true;
+  TcSoftBody exact(world.info(), net, testing::test_solver(), settings);
+  TcSoftBody amortised(world.info(), net, testing::test_solver(), TcSettings{});
+  RandomPolicy policy_exact(5), policy_amortised(5);
+  int out_of_order = 0;
+  for (int s = 0; s < 200; ++s) {
+    const int target = 300 + (s / 40) * 150;
+    exact.advance_blends();
+    ASSERT_EQ(exact.displaced(), 0) << "step " << s;
+    ASSERT_TRUE(in_plain_order(exact)) << "step " << s;
+    policy_exact.apply(exact, target, 32);
+    exact.simulate_step(kDt);
+    operate(amortised, policy_amortised, target, 1);
+    if (!in_plain_order(amortised)) ++out_of_order;
+  }
+  EXPECT_GT(exact.order_restorations(), 50);
+  EXPECT_EQ(amortised.order_restorations(), 0);
+  EXPECT_GT(out_of_order, 150);  // the default leaves a body this small in the operations' order
+  EXPECT_TRUE(exact.validate().ok()) << exact.validate().summary();
+}
+
 TEST(TcSoftBodyDbvt, ABodyThatShrankGetsAFreshTreeAndMovesExactlyAsWithout) {
   const auto net = testing::square_net(33);
   SceneWorld world({});

@@ -274,7 +274,7 @@ TEST(TcSoftBody, RefiningEverythingBackGivesThePlainCounts) {
 /// largest number of interface constraints seen at a check.
 std::size_t random_operations_keep_every_invariant(Interfaces interfaces, long total,
                                                    RestPlacement rest = RestPlacement::kCentroid,
-                                                   Masses masses = Masses::kBlocks) {
+                                                   Masses masses = Masses::kBlocks, bool exact_order = false) {
   const auto net = testing::square_net(65, kAllCorners, rest);
   SceneWorld world({});
   TcSettings settings;
@@ -282,6 +282,7 @@ std::size_t random_operations_keep_every_invariant(Interfaces interfaces, long t
   settings.masses = masses;
   settings.blend_steps = 3;
   settings.restore_order_min_nodes = 0;  // restore_order() between the operations too, whatever the body's size
+  settings.exact_order = exact_order;
   TcSoftBody tc(world.info(), net, testing::test_solver(), settings);
   RandomPolicy policy(20261122);
   std::mt19937 rng(5);
@@ -345,6 +346,13 @@ TEST(TcSoftBodyProperty, WithMassesThatFollowTheCutRandomOperationsKeepEveryInva
   EXPECT_EQ(random_operations_keep_every_invariant(Interfaces::kLinks, 30000, RestPlacement::kVertex, Masses::kCut),
             0u);
   EXPECT_GT(random_operations_keep_every_invariant(Interfaces::kHanging, 30000, RestPlacement::kVertex, Masses::kCut),
+            0u);
+}
+
+TEST(TcSoftBodyProperty, WithExactOrderRandomOperationsKeepEveryInvariant) {
+  // restore_order() at every boundary that displaced anything (TcSettings::exact_order), with operations in flight.
+  EXPECT_GT(random_operations_keep_every_invariant(Interfaces::kHanging, 30000, RestPlacement::kVertex, Masses::kCut,
+                                                   true),
             0u);
 }
 

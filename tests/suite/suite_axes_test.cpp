@@ -188,7 +188,7 @@ TEST(SuiteAxes, TheFidelityPassIsNotCombinedWithAxes) {
 TEST(SuiteAxes, EverySettingThatCanBeAnAxisIsReadThroughTheAxisTable) {
   // Each axis-able path is a real setting whose reader accepts a valid value.
   const std::vector<std::string> paths = axis_setting_paths();
-  EXPECT_EQ(paths.size(), 30u);
+  EXPECT_EQ(paths.size(), 31u);
   for (const std::string& path : paths) {
     json value;
     if (path == "tcsb.placement")
@@ -197,8 +197,8 @@ TEST(SuiteAxes, EverySettingThatCanBeAnAxisIsReadThroughTheAxisTable) {
       value = "hanging";
     else if (path == "feedback.policy")
       value = "random";
-    else if (path == "feedback.illumination" || path == "tcsb.restore_order" || path == "tcsb.rebuild_dbvt" ||
-             path == "feedback.view")  // on, the view terms need a camera
+    else if (path == "feedback.illumination" || path == "tcsb.restore_order" || path == "tcsb.exact_order" ||
+             path == "tcsb.rebuild_dbvt" || path == "feedback.view")  // on, the view terms need a camera
       value = false;
     else if (path == "solver.damping" || path == "solver.stiffness" || path == "dt")
       value = 0.5;

@@ -235,6 +235,13 @@ TEST(SuiteParse, MassesThatFollowTheCutRestTheTreesBlocksOnTheirFirstLeaf) {
   for (const NetSpec& n : s.nets) EXPECT_EQ(n.lod_rest, RestPlacement::kVertex);
 }
 
+TEST(SuiteParse, ExactOrderIsReadAndOffByDefault) {
+  json j = minimal();
+  EXPECT_FALSE(parse_suite_text(j.dump(), "order.json").tcsb.exact_order);
+  j["tcsb"] = {{"exact_order", true}};
+  EXPECT_TRUE(parse_suite_text(j.dump(), "order.json").tcsb.exact_order);
+}
+
 TEST(SuiteParse, PinnedMassAndSettingForms) {
   json j = minimal();
   j["nets"][0]["pinned"] = {"min_min", "max_max"};
@@ -694,6 +701,7 @@ TEST(SuiteReject, OtherRanges) {
   rejected_edit([](json& j) { j["tcsb"] = {{"start_level", -1}}; }, "tcsb.start_level");
   rejected_edit([](json& j) { j["tcsb"] = {{"start_level", "coarse"}}; }, "tcsb.start_level");
   rejected_edit([](json& j) { j["tcsb"] = {{"masses", "lumped"}}; }, "tcsb.masses");
+  rejected_edit([](json& j) { j["tcsb"] = {{"exact_order", 1}}; }, "tcsb.exact_order");
   rejected_edit([](json& j) { j["axes"] = {{"tcsb.masses", {"blocks", "cut"}}}; }, "axes.tcsb.masses");
   rejected_edit([](json& j) { j["tcsb"] = {{"placement", "bilinear"}}; }, "tcsb.placement");
   rejected_edit([](json& j) { j["feedback"] = {{"policy", "salience"}}; }, "feedback.policy");
