@@ -12,7 +12,10 @@ class RandomController final : public Controller {
  public:
   RandomController(int target_nodes, int max_ops, std::uint64_t seed)
       : policy_(seed), target_(target_nodes), max_ops_(max_ops) {}
-  void before_step(TcSoftBody& body) override { policy_.apply(body, target_, max_ops_); }
+  void before_step(TcSoftBody& body) override {
+    policy_.apply(body, target_, max_ops_);
+    body.settle_order();  // TcSettings::exact_order: the operations just begun too
+  }
 
  private:
   RandomPolicy policy_;

@@ -298,11 +298,10 @@ void TcSoftBody::advance_blends() {
     for (int c = 0; c < pn.child_count; ++c) ramp(pn.children[static_cast<std::size_t>(c)]);
   }
   const bool large = settings_.restore_order && m_nodes.size() >= settings_.restore_order_min_nodes;
-  const bool reorder =
-      settings_.exact_order
-          ? displaced_ > 0
-          : large && displaced_ > TcSettings::kReorderFraction * static_cast<double>(m_nodes.size() + m_links.size());
-  if (reorder) restore_order();
+  if (settings_.exact_order)
+    settle_order();
+  else if (large && displaced_ > TcSettings::kReorderFraction * static_cast<double>(m_nodes.size() + m_links.size()))
+    restore_order();
   if (!large) return;
   dbvt_peak_nodes_ = std::max(dbvt_peak_nodes_, m_nodes.size());
   if (settings_.rebuild_dbvt && dbvt_peak_nodes_ >= TcSettings::kDbvtRebuildShrink * m_nodes.size())

@@ -105,6 +105,10 @@ void TcSoftBody::restore_order() {
   if (listener_ != nullptr) listener_->arrays_reordered();
 }
 
+void TcSoftBody::settle_order() {
+  if (settings_.exact_order && displaced_ > 0) restore_order();
+}
+
 void TcSoftBody::rebuild_node_dbvt() {
   m_ndbvt.clear();
   m_ndbvt.m_leaves = 0;  // Bullet's clear() frees every node but leaves the count as it was

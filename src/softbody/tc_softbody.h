@@ -183,7 +183,7 @@ class TcSoftBody : public btSoftBody {
   /// displaced more than TcSettings::kReorderFraction of the arrays' elements, it then restores their order
   /// (restore_order(): O(N + L + T) once per (N + L)/4 displacements, T the tree's size, so amortised O(1 + T/N) per
   /// displacement: O(1) at any fixed compression, 4.4 N at 30 %); with TcSettings::exact_order, whenever anything
-  /// was displaced (O(N + L + T) per such boundary). On bodies that shrank by
+  /// was displaced (settle_order(): O(N + L + T) per such boundary). On bodies that shrank by
   /// TcSettings::kDbvtRebuildShrink since their node DBVT was built it rebuilds that tree too (rebuild_node_dbvt()).
   void advance_blends();
   /// One solo step (predictMotion, solve_constraints(), integrateMotion), as a plain body outside any collision
@@ -240,6 +240,10 @@ class TcSoftBody : public btSoftBody {
   /// O(N + L + T), T the tree's size (a scan of one slot per tree node), no allocation after the first call. Must
   /// not run while a worker reads the cut (CutView).
   void restore_order();
+  /// With TcSettings::exact_order, restore_order() if anything was displaced since the arrays were last in order;
+  /// else nothing. advance_blends() calls it, and a controller calls it again once it has begun its boundary's
+  /// operations, before it hands the cut to a worker, so Bullet's next step sweeps every link in a plain body's order.
+  void settle_order();
   /// Nodes and links moved by operations since the arrays were last in order (appended, or moved into a hole).
   int displaced() const { return displaced_; }
   /// Times restore_order() has run (by advance_blends() or a direct call).

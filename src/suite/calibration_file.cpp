@@ -106,7 +106,7 @@ std::string calibration_key(const Suite& suite) {
   text << "blend " << suite.tcsb.blend_steps << '\n';
   // The mass model changes every coarse level's cloth; only when not the paper's, so older keys stay as they were.
   if (suite.tcsb.masses == Masses::kCut) text << "masses cut\n";
-  // So does the link order where the solver does not converge (TcSettings::exact_order).
+  // So does the order Bullet solves the links in, where its solver does not converge (TcSettings::exact_order).
   if (suite.tcsb.exact_order) text << "order exact\n";
   // Not tcsb.interfaces: a calibration fits whole-level cuts, which have no boundary between levels.
   // A fit holds only in the scene it was made in. Only with colliders, so the keys of suites without a scene (and

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -56,17 +57,18 @@ TEST(BudgetPolicy, ThresholdPreventsOscillationOnAConstantField) {
 
 struct Trace {
   std::vector<int> n, l, i;
+  int most_displaced_at_step = 0;  ///< displaced() right before a step, at most
   std::vector<btVector3> final_positions;
 };
 
 /// `pause_every` > 0: the controller is paused and resumed before every such step, as the fidelity pass does
 /// between its blocks.
-Trace run_swinging(const FeedbackSettings& settings, int steps, int pause_every = 0) {
+Trace run_swinging(const FeedbackSettings& settings, int steps, int pause_every = 0, const TcSettings& tc = {}) {
   const auto net = net_of(33);
   SceneWorld world({});
   SolverSettings solver;
   solver.piterations = 2;
-  TcSoftBody body(world.info(), net, solver, {});
+  TcSoftBody body(world.info(), net, solver, tc);
   SaliencyController controller(settings, 400);
   Trace t;
   for (int s = 0; s < steps; ++s) {
@@ -76,6 +78,7 @@ Trace run_swinging(const FeedbackSettings& settings, int steps, int pause_every 
     }
     body.advance_blends();
     controller.before_step(body);
+    t.most_displaced_at_step = std::max(t.most_displaced_at_step, body.displaced());
     body.simulate_step(kDt);
     controller.after_step(body);
     t.n.push_back(body.node_count());
@@ -113,6 +116,26 @@ TEST(SaliencyController, HoldsTheNodeBudgetAndIsIdenticalSyncAndParallel) {
         ASSERT_EQ(t.final_positions[k], reference.final_positions[k]) << what << ", node " << k;
     }
   }
+}
+
+TEST(SaliencyController, WithExactOrderEveryStepStartsInAPlainBodysOrderAndParallelStaysIdentical) {
+  // The controller settles the order after beginning its operations and before its worker reads the cut
+  // (TcSettings::exact_order): no step begins displaced, and the worker never sees the arrays move under it.
+  TcSettings tc;
+  tc.exact_order = true;
+  FeedbackSettings sync;
+  sync.max_ops_per_step = 32;
+  const Trace reference = run_swinging(sync, 300, 0, tc);
+  EXPECT_EQ(reference.most_displaced_at_step, 0);
+  EXPECT_GT(run_swinging(sync, 300).most_displaced_at_step, 0);  // without it the operations leave their order
+  FeedbackSettings parallel = sync;
+  parallel.parallel = true;
+  const Trace t = run_swinging(parallel, 300, 0, tc);
+  EXPECT_EQ(t.n, reference.n);
+  EXPECT_EQ(t.l, reference.l);
+  ASSERT_EQ(t.final_positions.size(), reference.final_positions.size());
+  for (std::size_t k = 0; k < t.final_positions.size(); ++k)
+    ASSERT_EQ(t.final_positions[k], reference.final_positions[k]) << "node " << k;
 }
 
 TEST(SaliencyController, ATimeBudgetLowersTheNodeBudget) {
