@@ -31,6 +31,23 @@ const std::vector<double> kConvergedStiffness = {0.4323772094142622, 0.122273552
 /// converged.calibration.json since 2026-12-02; docs/investigations/cut-masses.md).
 const std::vector<double> kCutMassStiffness = {0.424, 0.115, 0.026};
 
+/// The converged suite's regime: an 8 m square net of 1 kg hanging from its four corners, 32 solver iterations.
+NetSpec converged_net(int width) {
+  NetSpec spec;
+  spec.name = "fixed";
+  spec.width = spec.height = width;
+  spec.mass_mode = MassMode::kTotal;
+  spec.mass = 1.0;
+  spec.pinned_corners = kAllCorners;
+  return spec;
+}
+
+SolverSettings converged_solver() {
+  SolverSettings solver;
+  solver.piterations = 32;
+  return solver;
+}
+
 /// Mean over steps [steps / 4, steps) of the RMS distance to the reference, % of the net's extent.
 /// `whole`: coarsen in rounds until every block of the pattern is coarse; else in one pass, where a block whose
 /// neighbour has just begun may not (so "the left half" is a checker of its blocks; the tables below were made so).
@@ -39,15 +56,8 @@ double fixed_cut_error(int width, Interfaces interfaces, const Pattern& coarse, 
                        RestPlacement rest = RestPlacement::kCentroid, Masses masses = Masses::kBlocks,
                        const std::vector<double>& stiffness = kConvergedStiffness, bool whole = false,
                        bool exact_order = false) {
-  NetSpec spec;
-  spec.name = "fixed";
-  spec.width = spec.height = width;
-  spec.mass_mode = MassMode::kTotal;
-  spec.mass = 1.0;
-  spec.pinned_corners = kAllCorners;
-  const auto net = std::make_shared<const Net>(spec, rest);
-  SolverSettings solver;
-  solver.piterations = 32;
+  const auto net = std::make_shared<const Net>(converged_net(width), rest);
+  const SolverSettings solver = converged_solver();
   SceneWorld world({});
   const auto reference = make_plain_softbody(world.info(), *net, solver);
   TcSettings settings;
@@ -139,15 +149,8 @@ TEST(FixedCutInterfaces, LinksSolvedInAPlainBodysOrderHoldTheMixedCutsMaterial) 
 /// The full-resolution stock body with its links shuffled (Bullet's btSoftBody::randomizeConstraints) against the
 /// same body in the net's order, measured as fixed_cut_error measures: what the order alone changes.
 double shuffled_links_error(int width, int steps) {
-  NetSpec spec;
-  spec.name = "shuffled";
-  spec.width = spec.height = width;
-  spec.mass_mode = MassMode::kTotal;
-  spec.mass = 1.0;
-  spec.pinned_corners = kAllCorners;
-  const Net net(spec);
-  SolverSettings solver;
-  solver.piterations = 32;
+  const Net net(converged_net(width));
+  const SolverSettings solver = converged_solver();
   SceneWorld world({});
   const auto reference = make_plain_softbody(world.info(), net, solver);
   const auto shuffled = make_plain_softbody(world.info(), net, solver);
