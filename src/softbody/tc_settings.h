@@ -62,9 +62,10 @@ struct TcSettings {
   /// twice the passes; 1/2 fewer passes, but half the arrays out of order (callgrind, scripts/profile/step-profile.sh;
   /// docs/methodology.md).
   static constexpr double kReorderFraction = 1.0 / 4;
-  /// Restore the order at every step boundary whose operations moved an element, on a body of any size (whatever
-  /// restore_order and restore_order_min_nodes say): Bullet then sweeps the links in a plain body's order at every
-  /// step but the ones right after an operation begins. Off by default, as the paper's body is. Where the solver does
+  /// Restore the order whenever operations moved an element, on a body of any size (whatever restore_order and
+  /// restore_order_min_nodes say; TcSoftBody::settle_order, after advance_blends() and after a controller's
+  /// operations): Bullet then sweeps the links in a plain body's order at every step. Off by default, as the paper's
+  /// body is. Where the solver does
   /// not converge the order is part of the cloth's material: Bullet's position solve is a Gauss-Seidel sweep, and a
   /// sweep in grid order carries a correction along a row within one iteration where a scattered order does not; a
   /// cut mostly at level 0 with a coarse disk in it errs 1.17 % RMS on an 81^2 net at 32 iterations with its arrays

@@ -74,14 +74,14 @@ struct CutLink {
 
 /// Which form an interface constraint takes: kMidpoint, the one described at InterfaceConstraint, on a tree whose
 /// blocks rest at their centroids. On a tree whose blocks rest on their first leaf (RestPlacement::kVertex) a block's
-/// node is its cell's corner, and
-/// the interface is the vertex kind an adaptive mesh has: of the two fine nodes, the one in line with the coarse node
-/// (`kept`) stays joined to it by its handle as an ordinary link, and the other one hangs. On the block's +x and +z
-/// sides it lies on the coarse cell's edge, and is held to the midpoint of that edge's ends, the kept fine node and
-/// the node at the block's diagonal corner (kVertexFar); on its -x and -z sides its link to the coarse side meets
-/// the block's side between the coarse node and the node at the block's corner along that side, and is held at its
-/// rest distance to their midpoint (kVertexNear). The corner's node (`corner_leaf`'s) is found at each step; where
-/// none rests there, a far constraint is skipped and a near one holds the hanging node to the coarse node.
+/// node is its cell's corner, and the interface is the vertex kind an adaptive mesh has: of the two fine nodes, the
+/// one in line with the coarse node (`kept`) stays joined to it by its handle as an ordinary link, and the other one
+/// hangs. On the block's +x and +z sides it lies on the coarse cell's edge, and is held to the midpoint of that edge's
+/// ends, the kept fine node and the node at the block's diagonal corner (kVertexFar); on its -x and -z sides its link
+/// to the coarse side meets the block's side between the coarse node and the node at the block's corner along that
+/// side, and is held at its rest distance to their midpoint (kVertexNear). The corner's node (`corner_leaf`'s) is found
+/// at each step; where none rests there, a far constraint is skipped and a near one holds the hanging node to the
+/// coarse node.
 enum class InterfaceKind : std::uint8_t { kMidpoint, kVertexFar, kVertexNear };
 
 /// With TcSettings::interfaces = kHanging, what replaces a fan: where the block of `coarse` meets the two finer
