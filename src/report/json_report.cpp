@@ -110,6 +110,8 @@ ojson suite_json(const Suite& s) {
                     {"margin", json_number(s.scene.margin)},
                     {"friction", json_number(s.scene.friction)},
                     {"sdf_voxel", json_number(s.scene.sdf_voxel)}};
+    // Only when not Bullet's default, so results written before the setting read as before.
+    if (!s.scene.rigid_contact) out["scene"]["collisions"] = ojson::array();
     if (const std::optional<Camera>& c = s.scene.camera)
       out["scene"]["camera"] = {
           {"fov_deg", json_number(c->fov_deg)}, {"image", {c->width_px, c->height_px}}, {"keyframes", c->path.size()}};

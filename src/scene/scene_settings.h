@@ -103,6 +103,11 @@ struct SceneSettings {
   /// distance field between samples this far apart (btSparseSdf), so a collider much smaller than a few voxels is
   /// blurred and nodes sink into it; Bullet's default is 0.25 m.
   double sdf_voxel = 0.25;
+  /// The soft bodies' collision flags (btSoftBody::Config::collisions), as the suite's `collisions` lists them:
+  /// contact with the colliders on their sparse SDF ("SDF_RS", Bullet's default and the only rigid-soft mode of a
+  /// btSoftRigidDynamicsWorld without clusters), or none (an empty list: the cloth passes through the colliders,
+  /// which still meet each other and the world). The other flags are refused where the suite is read (suite.cpp).
+  bool rigid_contact = true;
   /// The spectator's camera: what the BSWDF's view terms (feedback.view) and the fidelity pass's error in pixels see
   /// through. None: no spectator, world-space errors only. It watches; it never changes the simulation.
   std::optional<Camera> camera;

@@ -190,7 +190,7 @@ SceneWorld::Attachment SceneWorld::attach(btSoftBody& body) {
   if (dynamics_) {
     body.getCollisionShape()->setMargin(static_cast<btScalar>(scene_.margin));
     body.m_cfg.kDF = static_cast<btScalar>(scene_.friction);
-    body.m_cfg.collisions = btSoftBody::fCollision::SDF_RS;
+    body.m_cfg.collisions = scene_.rigid_contact ? btSoftBody::fCollision::SDF_RS : 0;
     dynamics_->addSoftBody(&body);
   }
   const bool stock = dynamic_cast<TcSoftBody*>(&body) == nullptr;

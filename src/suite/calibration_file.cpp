@@ -118,6 +118,8 @@ std::string calibration_key(const Suite& suite) {
   if (scene.has_colliders()) {
     text << "scene " << fmt_number(scene.margin) << ' ' << fmt_number(scene.friction) << ' '
          << fmt_number(scene.sdf_voxel) << '\n';
+    // Without contact the cloth falls through the colliders: another regime. Only then, so the keys stay.
+    if (!scene.rigid_contact) text << "collisions none\n";
     for (const Collider& c : scene.colliders) {
       text << "collider " << static_cast<int>(c.shape) << ' ' << static_cast<int>(c.motion) << ' ' << triple(c.position)
            << ' ' << fmt_number(c.radius) << ' ' << triple(c.half_extents) << ' ' << triple(c.normal) << ' '

@@ -339,8 +339,34 @@ Wind parse_wind(const Reader& r, const json& j, const std::string& path) {
   return w;
 }
 
+/// `scene.collisions`: Bullet's fCollision names for the soft bodies. Only what a btSoftRigidDynamicsWorld can do
+/// for a lone soft body of the harness is accepted; the rest are refused with the reason, not silently ignored.
+bool parse_rigid_contact(const Reader& r, const json& j, const std::string& path) {
+  r.array(j, path, EmptyArray::kAllowed);
+  bool rigid_contact = false;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string at = index_path(path, i);
+    const std::string flag = r.string(j[i], at);
+    if (flag == "SDF_RS") {
+      rigid_contact = true;
+    } else if (flag == "CL_RS" || flag == "CL_SS" || flag == "CL_SELF") {
+      r.fail(at, "\"" + flag +
+                     "\" needs Bullet's clusters, which no body here has (TC-SB's changing node array "
+                     "could not keep them)");
+    } else if (flag == "VF_SS" || flag == "VF_DD") {
+      r.fail(at, "\"" + flag + "\" collides two soft bodies, and every compared body has a world of its own");
+    } else if (flag == "SDF_RD" || flag == "SDF_RDF" || flag == "SDF_MDF" || flag == "SDF_RDN") {
+      r.fail(at, "\"" + flag + "\" is for btDeformableMultiBodyDynamicsWorld's solver, not btSoftRigidDynamicsWorld's");
+    } else {
+      r.fail(at, "expected \"SDF_RS\" (contact with the colliders; an empty list for none), got " + describe(j[i]));
+    }
+  }
+  return rigid_contact;
+}
+
 SceneSettings parse_scene(const Reader& r, const json& j) {
-  const Object o(r, j, "scene", {"colliders", "margin", "friction", "sdf_voxel", "camera", "wind", "pin_path"});
+  const Object o(r, j, "scene",
+                 {"colliders", "margin", "friction", "sdf_voxel", "collisions", "camera", "wind", "pin_path"});
   SceneSettings scene;
   if (const json* colliders = o.find("colliders")) {
     r.array(*colliders, o.at("colliders"), EmptyArray::kAllowed);
@@ -356,6 +382,8 @@ SceneSettings parse_scene(const Reader& r, const json& j) {
   o.read("friction", scene.friction, kUnit);
   // A voxel below a millimetre would make the SDF's cells (and their memory, clamped by Bullet) explode for nothing.
   o.read("sdf_voxel", scene.sdf_voxel, NumberRange{0.001, false, 10.0, false});
+  if (const json* flags = o.find("collisions"))
+    scene.rigid_contact = parse_rigid_contact(r, *flags, o.at("collisions"));
   if (const json* camera = o.find("camera")) scene.camera = parse_camera(r, *camera, o.at("camera"));
   if (const json* wind = o.find("wind")) scene.wind = parse_wind(r, *wind, o.at("wind"));
   if (const json* pins = o.find("pin_path")) scene.pin_path = parse_pin_path(r, *pins, o.at("pin_path"));

@@ -34,6 +34,7 @@ TEST_F(Cli, ASceneSuiteRunsEveryMethodInItsWorldAndCountsPenetrations) {
   EXPECT_NE(o.err.find("contacts"), std::string::npos) << o.err;
   const json doc = json::parse(read_file(dir_ / "result.json"));
   EXPECT_EQ(doc["suite"]["scene"]["colliders"], json::array({"static sphere", "static plane"}));
+  EXPECT_FALSE(doc["suite"]["scene"].contains("collisions"));  // Bullet's default, SDF_RS: as results before it
   EXPECT_EQ(doc["suite"]["feedback"]["contact_saliency"], 1.0);
   ASSERT_EQ(doc["cases"].size(), 4u);  // plain, tcsb at 1.0 and 0.5, plain_equal at 0.5
   for (const json& c : doc["cases"]) {
@@ -50,6 +51,23 @@ TEST_F(Cli, ASceneSuiteRunsEveryMethodInItsWorldAndCountsPenetrations) {
   // What run wrote, the readers take (each checks it against the result schema first).
   for (const char* format : {"markdown", "gbench", "github-action-smaller"})
     EXPECT_EQ(tcsb(std::string("export result.json --format ") + format).exit_code, 0) << format;
+}
+
+TEST_F(Cli, WithoutRigidContactNoBodyTouchesTheSphereAndTheResultSaysSo) {
+  json suite = json::parse(kSceneSuite);
+  suite["scene"]["collisions"] = json::array();
+  suite["fidelity"]["enabled"] = false;
+  write_file(dir_ / "scene.json", suite.dump());
+  const Outcome o = tcsb("run scene.json --out result.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const json doc = json::parse(read_file(dir_ / "result.json"));
+  EXPECT_EQ(doc["suite"]["scene"]["collisions"], json::array());
+  for (const json& c : doc["cases"])
+    for (const json& r : c["repetitions"]) {
+      EXPECT_EQ(r["penetrations"]["mean_contacts"].get<double>(), 0.0) << c["label"];
+      EXPECT_GT(r["penetrations"]["node_steps"].get<long long>(), 0) << c["label"];  // it falls through the sphere
+    }
+  EXPECT_EQ(tcsb("export result.json --format markdown").exit_code, 0);  // the reader takes it (schema first)
 }
 
 TEST_F(Cli, ASuiteWithoutASceneWritesNoSceneFields) {

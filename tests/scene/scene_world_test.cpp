@@ -120,6 +120,22 @@ TEST(SceneWorld, APlainSheetDrapesOverAStaticSphereInsteadOfFallingThrough) {
   EXPECT_GT(body->m_rcontacts.size(), 0);
 }
 
+TEST(SceneWorld, WithoutRigidContactTheSheetFallsThroughTheSphere) {
+  SceneSettings scene;
+  scene.colliders.push_back(sphere(0.5, {0, 0, 0}));
+  scene.sdf_voxel = 0.05;
+  scene.rigid_contact = false;  // the suite's "collisions": []
+  SceneWorld world(WorldSettings{}, scene);
+  const auto net = sheet(17, 2.0, 0.8);
+  const auto body = make_plain_softbody(world.info(), *net, solver());
+  const SceneWorld::Attachment attachment = world.attach(*body);
+  EXPECT_EQ(body->m_cfg.collisions, 0);
+  for (int s = 0; s < 60; ++s) world.step(kDt);
+  // One second of free fall from 0.8 m: the middle node is far below the sphere, and nothing ever held it.
+  EXPECT_LT(body->m_nodes[static_cast<int>(net->index(8, 8))].m_x.y(), -0.5);
+  EXPECT_EQ(body->m_rcontacts.size(), 0);
+}
+
 TEST(SceneWorld, TheHangingNetCatchesADynamicBall) {
   SceneSettings scene;
   Collider ball = sphere(0.4, {0, 2.0, 0});

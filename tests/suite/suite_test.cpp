@@ -447,6 +447,15 @@ TEST(SuiteParse, SceneBlock) {
   EXPECT_EQ(collider_name(s.scene.colliders[3]), "dynamic sphere");
 }
 
+TEST(SuiteParse, SceneCollisionFlags) {
+  json j = minimal();
+  EXPECT_TRUE(parse_suite_text(j.dump(), "plain.json").scene.rigid_contact);  // Bullet's default, SDF_RS
+  j["scene"] = {{"collisions", json::array()}};
+  EXPECT_FALSE(parse_suite_text(j.dump(), "plain.json").scene.rigid_contact);
+  j["scene"] = {{"collisions", json::array({"SDF_RS"})}};
+  EXPECT_TRUE(parse_suite_text(j.dump(), "plain.json").scene.rigid_contact);
+}
+
 TEST(SuiteReject, SceneFields) {
   const auto scene = [](const char* text) { return [text](json& j) { j["scene"] = json::parse(text); }; };
   rejected_edit(scene(R"({"wind": 1})"), "scene.wind");
@@ -464,6 +473,14 @@ TEST(SuiteReject, SceneFields) {
   rejected_edit(scene(R"({"margin": 0})"), "scene.margin");
   rejected_edit(scene(R"({"friction": 1.5})"), "scene.friction");
   rejected_edit(scene(R"({"sdf_voxel": 0})"), "scene.sdf_voxel");
+  rejected_edit(scene(R"({"collisions": "SDF_RS"})"), "scene.collisions");
+  rejected_edit(scene(R"({"collisions": [1]})"), "scene.collisions[0]");
+  for (const char* flag : {"CL_RS", "CL_SELF", "VF_SS", "SDF_RD", "SDF_RDF", "RS"})
+    rejected_edit(
+        [flag](json& j) {
+          j["scene"] = {{"collisions", json::array({"SDF_RS", flag})}};
+        },
+        "scene.collisions[1]");
   json many = json::array();
   for (int i = 0; i < 65; ++i) many.push_back({{"shape", "sphere"}});
   rejected_edit([&](json& j) { j["scene"] = {{"colliders", many}}; }, "scene.colliders");
