@@ -90,9 +90,10 @@ class TreeCutBody final : public CaseBody {
   void step(btScalar dt) override {
     // Five clock reads a step (tens of ns against a step of 0.1 ms and more), none inside Bullet's loops.
     const StepClock::time_point t0 = StepClock::now();
-    body_->advance_blends();
+    body_->advance_blends(OrderSettling::kByCaller);
     const StepClock::time_point t1 = StepClock::now();
     if (controller_) controller_->before_step(*body_);
+    body_->settle_order();  // (the controllers settle before their snapshot already: then a no-op)
     const StepClock::time_point t2 = StepClock::now();
     end_part(StepPart::kOwn);
     world_.step(dt);

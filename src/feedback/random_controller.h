@@ -13,8 +13,11 @@ class RandomController final : public Controller {
   RandomController(int target_nodes, int max_ops, std::uint64_t seed)
       : policy_(seed), target_(target_nodes), max_ops_(max_ops) {}
   void before_step(TcSoftBody& body) override {
+    // TcSettings::exact_order: the policy picks nodes by their place in the array, so it picks from the settled
+    // order (advance_blends() may have left that to its caller), and the operations it begins are settled after.
+    body.settle_order();
     policy_.apply(body, target_, max_ops_);
-    body.settle_order();  // TcSettings::exact_order: the operations just begun too
+    body.settle_order();
   }
 
  private:

@@ -64,12 +64,14 @@ void SaliencyController::before_step(TcSoftBody& body) {
   double worker_ms = 0;
   if (evaluation_ready_ && evaluation_.snapshot_step == boundary_ - 1) {
     apply_evaluation(body, evaluation_, budget(), settings_, budget_state_);
-    body.settle_order();  // the operations just begun too, before the snapshot below hands the cut to a worker
     if (workers_) worker_ms = evaluation_ms_;
   } else if (!budget_state_.converged && body.node_count() <= budget()) {
     budget_state_.converged = true;
   }
   evaluation_ready_ = false;
+  // TcSettings::exact_order: the operations advance_blends() ended and those just begun, in one restore, before the
+  // snapshot below hands the cut to a worker.
+  body.settle_order();
   if (boundary_ % settings_.evaluation_interval == 0) {
     extent_ = body.net().extent();
     if (settings_.interface_charge > 0 && settings_.interface_tension > 0 && interface_weights_.empty())

@@ -52,8 +52,9 @@ class TreeCutSubject final : public FidelitySubject {
   ~TreeCutSubject() override { body_->set_op_sink(nullptr); }
   void boundary(int step) override {
     const std::int64_t before = ops_.count;
-    body_->advance_blends();
+    body_->advance_blends(OrderSettling::kByCaller);
     if (controller_) controller_->before_step(*body_);
+    body_->settle_order();  // (the controllers settle before their snapshot already: then a no-op)
     // A geomorphed surface also moves at a boundary without operations while it spreads an earlier jump.
     changed_ = ops_.count != before || (morph_ && morph_->morphing());
     // The morph records the boundary's jump at the next reconstruct(), which the pass makes right away when the

@@ -277,7 +277,7 @@ int TcSoftBody::coarsen_to_level(int level) {
 
 // ---- blending and end operations -----------------------------------------------------------------------------
 
-void TcSoftBody::advance_blends() {
+void TcSoftBody::advance_blends(OrderSettling settling) {
   // Backwards, so ending an operation (which moves the last in-flight entry into its slot) skips nothing.
   for (std::size_t i = inflight_.size(); i-- > 0;) {
     const std::int32_t index = inflight_[i];
@@ -298,14 +298,16 @@ void TcSoftBody::advance_blends() {
     for (int c = 0; c < pn.child_count; ++c) ramp(pn.children[static_cast<std::size_t>(c)]);
   }
   const bool large = settings_.restore_order && m_nodes.size() >= settings_.restore_order_min_nodes;
-  if (settings_.exact_order)
+  dbvt_peak_nodes_ = large ? std::max(dbvt_peak_nodes_, m_nodes.size()) : dbvt_peak_nodes_;
+  const bool rebuild =
+      large && settings_.rebuild_dbvt && dbvt_peak_nodes_ >= TcSettings::kDbvtRebuildShrink * m_nodes.size();
+  // The rebuilt tree takes its leaves in the node array's order: that order must be the settled one.
+  if (settings_.exact_order && (settling == OrderSettling::kNow || rebuild))
     settle_order();
-  else if (large && displaced_ > TcSettings::kReorderFraction * static_cast<double>(m_nodes.size() + m_links.size()))
+  else if (!settings_.exact_order && large &&
+           displaced_ > TcSettings::kReorderFraction * static_cast<double>(m_nodes.size() + m_links.size()))
     restore_order();
-  if (!large) return;
-  dbvt_peak_nodes_ = std::max(dbvt_peak_nodes_, m_nodes.size());
-  if (settings_.rebuild_dbvt && dbvt_peak_nodes_ >= TcSettings::kDbvtRebuildShrink * m_nodes.size())
-    rebuild_node_dbvt();
+  if (rebuild) rebuild_node_dbvt();
 }
 
 void TcSoftBody::end_op(std::int32_t index) {

@@ -58,12 +58,14 @@ TEST(BudgetPolicy, ThresholdPreventsOscillationOnAConstantField) {
 struct Trace {
   std::vector<int> n, l, i;
   int most_displaced_at_step = 0;  ///< displaced() right before a step, at most
+  int restorations = 0;            ///< restore_order() runs over the whole run
   std::vector<btVector3> final_positions;
 };
 
 /// `pause_every` > 0: the controller is paused and resumed before every such step, as the fidelity pass does
 /// between its blocks.
-Trace run_swinging(const FeedbackSettings& settings, int steps, int pause_every = 0, const TcSettings& tc = {}) {
+Trace run_swinging(const FeedbackSettings& settings, int steps, int pause_every = 0, const TcSettings& tc = {},
+                   OrderSettling settling = OrderSettling::kNow) {
   const auto net = net_of(33);
   SceneWorld world({});
   SolverSettings solver;
@@ -76,8 +78,9 @@ Trace run_swinging(const FeedbackSettings& settings, int steps, int pause_every 
       controller.pause();
       controller.resume();
     }
-    body.advance_blends();
+    body.advance_blends(settling);
     controller.before_step(body);
+    body.settle_order();  // as the runner's loops do (a no-op after OrderSettling::kNow and the controller's own)
     t.most_displaced_at_step = std::max(t.most_displaced_at_step, body.displaced());
     body.simulate_step(kDt);
     controller.after_step(body);
@@ -91,6 +94,7 @@ Trace run_swinging(const FeedbackSettings& settings, int steps, int pause_every 
   EXPECT_TRUE(controller.converged());
   EXPECT_TRUE(body.validate().ok()) << body.validate().summary();
   for (int k = 0; k < body.node_count(); ++k) t.final_positions.push_back(body.m_nodes[k].m_x);
+  t.restorations = body.order_restorations();
   return t;
 }
 
@@ -136,6 +140,30 @@ TEST(SaliencyController, WithExactOrderEveryStepStartsInAPlainBodysOrderAndParal
   ASSERT_EQ(t.final_positions.size(), reference.final_positions.size());
   for (std::size_t k = 0; k < t.final_positions.size(); ++k)
     ASSERT_EQ(t.final_positions[k], reference.final_positions[k]) << "node " << k;
+}
+
+TEST(SaliencyController, WithExactOrderOneRestorePerBoundaryGivesTheSameCloth) {
+  // OrderSettling::kByCaller: the operations advance_blends() ends and those the controller begins are put in order
+  // by one restore instead of two; restore_order() makes one order of any arrangement, so nothing else changes.
+  TcSettings tc;
+  tc.exact_order = true;
+  tc.blend_steps = 4;  // as the bundled suites: operations end at the boundaries where the next evaluation's begin
+  FeedbackSettings settings;
+  settings.max_ops_per_step = 32;
+  settings.evaluation_interval = 4;
+  for (const bool parallel : {false, true}) {
+    settings.parallel = parallel;
+    const Trace twice = run_swinging(settings, 300, 0, tc, OrderSettling::kNow);
+    const Trace once = run_swinging(settings, 300, 0, tc, OrderSettling::kByCaller);
+    EXPECT_EQ(once.most_displaced_at_step, 0);
+    EXPECT_LT(once.restorations, twice.restorations);
+    EXPECT_EQ(once.n, twice.n);
+    EXPECT_EQ(once.l, twice.l);
+    EXPECT_EQ(once.i, twice.i);
+    ASSERT_EQ(once.final_positions.size(), twice.final_positions.size());
+    for (std::size_t k = 0; k < once.final_positions.size(); ++k)
+      ASSERT_EQ(once.final_positions[k], twice.final_positions[k]) << "node " << k << (parallel ? ", parallel" : "");
+  }
 }
 
 TEST(SaliencyController, ATimeBudgetLowersTheNodeBudget) {
