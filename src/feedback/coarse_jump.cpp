@@ -59,8 +59,8 @@ double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours,
     return tree.rest(snapshot.cut.tree_of[static_cast<std::size_t>(i)]);
   };
 
-  // Where begin_coarse puts the parent: its children's centre of mass (its rest position if it holds a pin; where
-  // their fit puts its rest position if it rests on the net's border).
+  // Where begin_coarse puts the parent: its children's centre of mass (where the pins are now if it holds one: its
+  // rest position moved by the pin path; where their fit puts its rest position if it rests on the net's border).
   std::array<Eigen::Vector3d, 4> child_x;
   Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
   double mass = 0;
@@ -71,7 +71,9 @@ double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours,
     mass += tree.node(c).mass;
   }
   const Eigen::Vector3d rp = tree.rest(parent);
-  Eigen::Vector3d xp = p.pinned() || mass <= 0 ? rp : Eigen::Vector3d(weighted / mass);
+  const std::array<float, 3>& pins = snapshot.cut.pin_offset;
+  const Eigen::Vector3d pinned_at = rp + Eigen::Vector3d(pins[0], pins[1], pins[2]);
+  Eigen::Vector3d xp = p.pinned() ? pinned_at : mass <= 0 ? rp : Eigen::Vector3d(weighted / mass);
   if (const std::optional<Eigen::Vector3d> border = border_arrival(tree, parent, child_x)) xp = *border;
 
   // The parent's fit while it arrives: its tethers to the children and its links to their outside neighbours.

@@ -3,7 +3,9 @@
 namespace tcsb {
 
 CutView cut_view(const TcSoftBody& body) {
-  return {&body.tree(), body.states(), body.bullet_indices(), body.tree_ids(), body.cut_links()};
+  const btVector3& pins = body.pin_offset();
+  return {&body.tree(),    body.states(),    body.bullet_indices(),
+          body.tree_ids(), body.cut_links(), {pins.x(), pins.y(), pins.z()}};
 }
 
 FinestCut::FinestCut(const Net& net)

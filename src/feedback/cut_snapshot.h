@@ -23,6 +23,9 @@ struct CutView {
   std::span<const std::int32_t> index;  ///< per tree node: simulated node index, or -1
   std::span<const TreeId> tree_of;      ///< per simulated node
   std::span<const CutLink> links;       ///< the simulated links (those with joins_committed() are the cut's adjacency)
+  /// Where the pins are, as an offset from their rest positions (TcSoftBody::pin_offset: the scene's pin path moved
+  /// them); a pinned node sits at its rest position plus this. Zero for pins at rest.
+  std::array<float, 3> pin_offset{0, 0, 0};
 
   bool committed(TreeId id) const {
     const CutState s = state[static_cast<std::size_t>(id)];
@@ -39,7 +42,7 @@ CutView cut_view(const TcSoftBody& body);
 class FinestCut {
  public:
   explicit FinestCut(const Net& net);
-  CutView view() const { return {tree_, state_, index_, tree_of_, links_}; }
+  CutView view() const { return {tree_, state_, index_, tree_of_, links_, {0, 0, 0}}; }
 
  private:
   const LodTree* tree_;
