@@ -298,7 +298,7 @@ void TcSoftBody::advance_blends(OrderSettling settling) {
     for (int c = 0; c < pn.child_count; ++c) ramp(pn.children[static_cast<std::size_t>(c)]);
   }
   const bool large = settings_.restore_order && m_nodes.size() >= settings_.restore_order_min_nodes;
-  dbvt_peak_nodes_ = large ? std::max(dbvt_peak_nodes_, m_nodes.size()) : dbvt_peak_nodes_;
+  if (large) dbvt_peak_nodes_ = std::max(dbvt_peak_nodes_, m_nodes.size());
   const bool rebuild =
       large && settings_.rebuild_dbvt && dbvt_peak_nodes_ >= TcSettings::kDbvtRebuildShrink * m_nodes.size();
   // The rebuilt tree takes its leaves in the node array's order: that order must be the settled one.
