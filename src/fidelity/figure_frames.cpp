@@ -49,6 +49,7 @@ FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, dou
   out.net = spec.name;
   out.width = spec.width;
   out.height = spec.height;
+  out.extent = net->extent();
   out.compression = compression;
   out.calibrated = calibrated;
 

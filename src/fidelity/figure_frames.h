@@ -40,6 +40,7 @@ struct FigureFrame {
 struct FigureFrames {
   std::string net;
   int width = 0, height = 0;
+  double extent = 0.0;  ///< metres, the net's larger side: what the fidelity pass's % of the extent is of
   double compression = 1.0;
   bool calibrated = false;                    ///< TC-SB with the suite's calibration (per-level link stiffness)
   int uniform_width = 0, uniform_height = 0;  ///< the uniform grid's, in a scene with a camera

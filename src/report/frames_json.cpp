@@ -28,7 +28,7 @@ nlohmann::ordered_json frames_json(const Suite& suite, const Context& context, c
   doc["kind"] = "frames";
   doc["context"] = context_json(context, suite);
   doc["suite"] = suite_json(suite);
-  doc["net"] = {{"name", f.net}, {"width", f.width}, {"height", f.height}};
+  doc["net"] = {{"name", f.net}, {"width", f.width}, {"height", f.height}, {"extent", json_number(f.extent)}};
   doc["compression"] = f.compression;
   doc["calibrated"] = f.calibrated;
   doc["dt"] = suite.world.dt;

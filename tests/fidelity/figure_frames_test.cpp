@@ -26,6 +26,7 @@ Suite one_net_suite() {
 TEST(FigureFrames, WithoutCompressionTheSurfaceIsPlainBulletExactly) {
   const FigureFrames f = record_figure_frames(one_net_suite(), 0, 1.0, {0, 10, 40});
   EXPECT_EQ(f.net, "n17");
+  EXPECT_EQ(f.extent, one_net_suite().nets[0].size_x);  // a square net: its side
   EXPECT_FALSE(f.diverged_step);
   ASSERT_EQ(f.frames.size(), 3u);
   for (const FigureFrame& frame : f.frames) {
