@@ -91,6 +91,7 @@ ojson suite_json(const Suite& s) {
   if (s.tcsb.interfaces == Interfaces::kHanging) out["tcsb"]["interfaces"] = "hanging";
   if (s.tcsb.masses == Masses::kCut) out["tcsb"]["masses"] = "cut";
   if (s.tcsb.exact_order) out["tcsb"]["exact_order"] = true;
+  if (!s.tcsb.arrivals_collide) out["tcsb"]["arrivals_collide"] = false;
   if (s.tcsb.start_level > 0) out["tcsb"]["start_level"] = s.tcsb.start_level;
   if (f.popping_charge > 0) out["feedback"]["popping_charge"] = json_number(f.popping_charge);
   if (f.interface_charge > 0) out["feedback"]["interface_charge"] = json_number(f.interface_charge);

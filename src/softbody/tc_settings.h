@@ -77,6 +77,13 @@ struct TcSettings {
   /// scattered over the full tree's allocation, and the per-step leaf updates miss the cache where a plain body of its
   /// size does not (docs/methodology.md, "The node DBVT as a plain body has it").
   bool rebuild_dbvt = true;
+  /// Whether the nodes an operation adds (a refine's children, a coarse's parent) take part in soft-rigid contact
+  /// while it blends. True (the default): from the moment they appear, so no arriving node passes through a
+  /// collider unheld. False: the paper's rule (sections 3.3-3.4: new nodes "are excluded from collision
+  /// calculations, for now" and their "collision shapes are inserted" when the operation ends), through Bullet's
+  /// per-node m_battach, which btSoftColliders::CollideSDF_RS::DoNode skips; the nodes keep their DBVT leaves.
+  /// Leaving nodes collide until they go either way.
+  bool arrivals_collide = true;
   static constexpr double kDbvtRebuildShrink = 1.3;
 };
 

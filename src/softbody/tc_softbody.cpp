@@ -136,6 +136,8 @@ int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, Tree
   NodeRecord& r = record(id);
   r.inv_mass = added.m_im = inverse_mass(id, r.sim_mass);
   added.m_material = m_materials[0];
+  // Every added node arrives in an operation (TcSettings::arrivals_collide); settle_in_cut() lets it collide.
+  added.m_battach = settings_.arrivals_collide ? 0 : 1;
   btDbvtNode* beside_leaf = m_nodes[record(beside).bullet].m_leaf;
   added.m_leaf =
       insert_leaf_beside(m_ndbvt, dbvt_nodes_, beside_leaf, btDbvtVolume::FromCR(x, getCollisionShape()->getMargin()),

@@ -55,6 +55,11 @@ Validation TcSoftBody::validate() const {
     if (r.bullet != i) fail(name + ": Bullet index does not map back");
     if (state(id) == CutState::kOff) fail(name + ": simulated but off the cut");
     if (n.m_leaf == nullptr || n.m_leaf->data != &n) fail(name + ": DBVT leaf missing or pointing elsewhere");
+    // Out of contact exactly while it arrives, and only under the paper's rule (TcSettings::arrivals_collide).
+    // (Bullet's appendAnchor sets the same flag on an anchored node.)
+    if ((n.m_battach != 0) != (anchored(id) || (!settings_.arrivals_collide && state(id) == CutState::kArriving)))
+      fail(name + (n.m_battach != 0 ? ": out of collisions but not an arriving node of the paper's rule"
+                                    : ": arriving under the paper's rule but taking part in collisions"));
     if (!finite(n.m_x) || !finite(n.m_v)) fail(name + ": NaN or Inf position/velocity");
     const LodNode& t = lod.node(id);
     const double m = r.sim_mass;

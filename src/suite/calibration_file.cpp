@@ -108,6 +108,8 @@ std::string calibration_key(const Suite& suite) {
   if (suite.tcsb.masses == Masses::kCut) text << "masses cut\n";
   // So does the order Bullet solves the links in, where its solver does not converge (TcSettings::exact_order).
   if (suite.tcsb.exact_order) text << "order exact\n";
+  // Whole-level cuts are reached by operations, in the scene: arrivals that collide later may settle elsewhere.
+  if (!suite.tcsb.arrivals_collide) text << "arrivals at_end\n";
   // Not tcsb.interfaces: a calibration fits whole-level cuts, which have no boundary between levels.
   // A fit holds only in the scene it was made in. Only with colliders, so the keys of suites without a scene (and
   // the calibrations written for them) stay as they were.

@@ -110,9 +110,9 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
   if (const json* j = root.find("tcsb")) {
     const Object tc(r, *j, "tcsb",
                     {"blend_steps", "start_level", "placement", "interfaces", "masses", "restore_order",
-                     "restore_order_min_nodes", "exact_order", "rebuild_dbvt"});
+                     "restore_order_min_nodes", "exact_order", "rebuild_dbvt", "arrivals_collide"});
     for (const char* key : {"blend_steps", "start_level", "placement", "interfaces", "restore_order",
-                            "restore_order_min_nodes", "exact_order", "rebuild_dbvt"})
+                            "restore_order_min_nodes", "exact_order", "rebuild_dbvt", "arrivals_collide"})
       read_axis_setting(r, tc, key, s);
     // Not an axis: the mass model decides where the tree's blocks rest, and every case of a net shares its tree.
     if (const json* m = tc.find("masses")) {

@@ -57,6 +57,8 @@ const AxisSetting kAxisSettings[] = {
                                         Suite& s) { s.tcsb.restore_order_min_nodes = whole(r, v, at, 0, INT_MAX); }},
     {"tcsb.rebuild_dbvt",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.tcsb.rebuild_dbvt = r.boolean(v, at); }},
+    {"tcsb.arrivals_collide", [](const Reader& r, const json& v, const std::string& at,
+                                 Suite& s) { s.tcsb.arrivals_collide = r.boolean(v, at); }},
     {"feedback.policy",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) {
        s.feedback.policy =

@@ -188,7 +188,7 @@ TEST(SuiteAxes, TheFidelityPassIsNotCombinedWithAxes) {
 TEST(SuiteAxes, EverySettingThatCanBeAnAxisIsReadThroughTheAxisTable) {
   // Each axis-able path is a real setting whose reader accepts a valid value.
   const std::vector<std::string> paths = axis_setting_paths();
-  EXPECT_EQ(paths.size(), 31u);
+  EXPECT_EQ(paths.size(), 32u);
   for (const std::string& path : paths) {
     json value;
     if (path == "tcsb.placement")
@@ -198,7 +198,8 @@ TEST(SuiteAxes, EverySettingThatCanBeAnAxisIsReadThroughTheAxisTable) {
     else if (path == "feedback.policy")
       value = "random";
     else if (path == "feedback.illumination" || path == "tcsb.restore_order" || path == "tcsb.exact_order" ||
-             path == "tcsb.rebuild_dbvt" || path == "feedback.view")  // on, the view terms need a camera
+             path == "tcsb.arrivals_collide" || path == "tcsb.rebuild_dbvt" ||
+             path == "feedback.view")  // on, the view terms need a camera
       value = false;
     else if (path == "solver.damping" || path == "solver.stiffness" || path == "dt")
       value = 0.5;
