@@ -61,12 +61,12 @@ def report(path, worst_pct):
     print(f"  {'step':>5}  {'RMS %':>7}  {'share':>6}  {'RMS % if exact':>14}")
     rows = []
     for i, frame in enumerate(frames):
-        reference = field(frame, path, "plain")
-        subject = field(frame, path, "tcsb_surface")
+        reference = field(doc, path, f"frames.{i}.plain")
+        subject = field(doc, path, f"frames.{i}.tcsb_surface")
         if len(reference) != len(subject) or not reference:
             raise InputError(f"{path}: field 'frames.{i}.tcsb_surface' does not match 'frames.{i}.plain' in length")
         rows.append(concentration(reference, subject, extent, worst_pct))
-        print(f"  {field(frame, path, 'step'):>5}  {rows[-1][0]:7.3f}  {rows[-1][1]:6.2f}  {rows[-1][2]:14.3f}")
+        print(f"  {field(doc, path, f'frames.{i}.step'):>5}  {rows[-1][0]:7.3f}  {rows[-1][1]:6.2f}  {rows[-1][2]:14.3f}")
     mean = [sum(r[k] for r in rows) / len(rows) for k in range(3)]
     print(f"  {'mean':>5}  {mean[0]:7.3f}  {mean[1]:6.2f}  {mean[2]:14.3f}")
 
