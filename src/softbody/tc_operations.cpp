@@ -417,7 +417,8 @@ void TcSoftBody::make_faded_in_links_steady(TreeId id) {
 void TcSoftBody::settle_in_cut(TreeId id, double mass) {
   set_simulated_mass(id, mass);
   state_[static_cast<std::size_t>(id)] = CutState::kActive;
-  if (!settings_.arrivals_collide) m_nodes[record(id).bullet].m_battach = 0;  // its collision shape joins
+  // Its collision shape joins, unless an application anchored it meanwhile (appendAnchor sets the same flag).
+  if (!settings_.arrivals_collide && !anchored(id)) m_nodes[record(id).bullet].m_battach = 0;
   record(id).op = -1;
 }
 
