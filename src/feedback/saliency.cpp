@@ -130,12 +130,13 @@ void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settin
   for (std::size_t i = 0; i < motion.size(); ++i) {
     double s = largest > 0 ? motion[i] / largest : 0.0;
     s = std::min(s, cap);
-    // Seen, a block is worth its apparent size; its motion ranks it among blocks that look alike, so a quiet block
-    // in view still outranks any block out of view, at rest too. A node leaving the cut is worth nothing, as without
-    // the view terms.
+    // Seen, a block is worth its apparent size times a mix of a static share and its motion, so with any static
+    // share a quiet block in view still outranks every block out of view, at rest too. A node leaving the cut is
+    // worth nothing, as without the view terms.
     if (view)
       s = snapshot.cut.committed(snapshot.cut.tree_of[i])
-              ? apparent_detail(snapshot, i, *view, leaf_spacing, settings.view_detail_px) * 0.5 * (1.0 + s)
+              ? apparent_detail(snapshot, i, *view, leaf_spacing, settings.view_detail_px) *
+                    (settings.view_static_share + (1.0 - settings.view_static_share) * s)
               : 0.0;
     if (settings.illumination && s > 0) s *= lambert_factor(snapshot, i, settings.light_direction);
     if (!snapshot.contact.empty() && snapshot.contact[i]) s = std::max(s, settings.contact_saliency);

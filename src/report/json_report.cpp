@@ -102,6 +102,7 @@ ojson suite_json(const Suite& s) {
     out["feedback"]["view"] = true;
     out["feedback"]["view_motion_scale"] = json_number(f.view_motion_scale);
     out["feedback"]["view_detail_px"] = json_number(f.view_detail_px);
+    out["feedback"]["view_static_share"] = json_number(f.view_static_share);
   }
   // Only in a scene with colliders, a camera, wind or moving pins, like the penetrations of its repetitions.
   if (s.scene.has_colliders() || s.scene.camera || s.scene.wind || s.scene.pin_path.moves()) {

@@ -127,7 +127,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
                     {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale",
                      "illumination", "light_direction", "parallel", "threads", "max_step_ms", "popping_charge",
                      "interface_charge", "interface_tension", "pin_level_pull", "contact_saliency", "view",
-                     "view_motion_scale", "view_detail_px"});
+                     "view_motion_scale", "view_detail_px", "view_static_share"});
     FeedbackSettings& f = s.feedback;
     for (const char* key :
          {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale", "illumination"})
@@ -147,6 +147,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     read_axis_setting(r, fb, "view", s);
     read_axis_setting(r, fb, "view_motion_scale", s);
     read_axis_setting(r, fb, "view_detail_px", s);
+    read_axis_setting(r, fb, "view_static_share", s);
   }
 
   if (const json* j = root.find("fidelity")) {

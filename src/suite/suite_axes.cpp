@@ -88,6 +88,8 @@ const AxisSetting kAxisSettings[] = {
                                       Suite& s) { s.feedback.view_motion_scale = r.number(v, at, kPositive); }},
     {"feedback.view_detail_px", [](const Reader& r, const json& v, const std::string& at,
                                    Suite& s) { s.feedback.view_detail_px = r.number(v, at, kPositive); }},
+    {"feedback.view_static_share", [](const Reader& r, const json& v, const std::string& at,
+                                      Suite& s) { s.feedback.view_static_share = r.number(v, at, kUnit); }},
     {"seed",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.seed = r.unsigned_integer(v, at); }},
     {"dt",

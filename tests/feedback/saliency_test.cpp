@@ -146,6 +146,36 @@ TEST(SaliencyView, DetailTooSmallToSeeWeighsLess) {
   EXPECT_GT(s_far[4 * 9 + 6], 0.0f);
 }
 
+TEST(SaliencyView, TheStaticShareWeighsApparentSizeAgainstMotion) {
+  Field quiet, moving;
+  quiet.take(true);
+  moving.set(4 * 9 + 6, btVector3(0, 0, -1));  // in view, moving across the image
+  moving.take(true);
+  const ScreenProjection view = looking_down();
+  FeedbackSettings settings;
+  settings.view = true;
+  settings.view_motion_scale = 1e9;  // no global cap
+  const auto saliency = [&](const Field& f, double share) {
+    settings.view_static_share = share;
+    return compute_saliency(f.snapshot, settings, &view);
+  };
+  // All static: apparent size alone, so motion changes nothing.
+  EXPECT_EQ(saliency(moving, 1.0), saliency(quiet, 1.0));
+  const std::vector<float> size_only = saliency(quiet, 1.0);
+  // No static share: the projected motion alone, so a cloth at rest has none anywhere.
+  for (float v : saliency(quiet, 0.0)) EXPECT_EQ(v, 0.0f);
+  const std::vector<float> motion_only = saliency(moving, 0.0);
+  EXPECT_GT(motion_only[4 * 9 + 6], 0.0f);
+  EXPECT_EQ(motion_only[8], 0.0f) << "a node in view moving with its neighbours";
+  // A small share keeps a quiet node in view above the nodes out of view, in proportion to its apparent size.
+  const std::vector<float> small = saliency(quiet, 0.001);
+  for (int i = 0; i < 81; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_NEAR(small[static_cast<std::size_t>(i)], 0.001f * size_only[static_cast<std::size_t>(i)], 1e-9f);
+    if (i % 9 > 3) EXPECT_GT(small[static_cast<std::size_t>(i)], 0.0f);
+  }
+}
+
 TEST(Evaluator, RanksRefinesHighFirstAndCoarsensLowFirst) {
   Field f(17);
   f.take();

@@ -590,7 +590,7 @@ TEST(SuiteParse, CameraAndViewTerms) {
   EXPECT_FALSE(parse_suite_text(j.dump(), "plain.json").scene.camera);  // no camera: no spectator
   j["scene"] = json::parse(R"({"camera": {"position": [0, 5, 10], "target": [0, 0, 0], "fov_deg": 50,
                                           "image": [640, 480]}})");
-  j["feedback"] = {{"view", true}, {"view_motion_scale", 10}, {"view_detail_px", 4}};
+  j["feedback"] = {{"view", true}, {"view_motion_scale", 10}, {"view_detail_px", 4}, {"view_static_share", 0.25}};
   const Suite s = parse_suite_text(j.dump(), "camera.json");
   ASSERT_TRUE(s.scene.camera);
   EXPECT_FALSE(s.scene.has_colliders()) << "a camera watches: the bodies still step solo";
@@ -601,6 +601,8 @@ TEST(SuiteParse, CameraAndViewTerms) {
   EXPECT_TRUE(s.feedback.view);
   EXPECT_DOUBLE_EQ(s.feedback.view_motion_scale, 10.0);
   EXPECT_DOUBLE_EQ(s.feedback.view_detail_px, 4.0);
+  EXPECT_DOUBLE_EQ(s.feedback.view_static_share, 0.25);
+  EXPECT_DOUBLE_EQ(FeedbackSettings{}.view_static_share, 0.5) << "the form the view terms had before the setting";
   ASSERT_TRUE(suite_spectator(s));
   EXPECT_DOUBLE_EQ(suite_spectator(s)->dt, s.world.dt);
   j["feedback"]["view"] = false;
@@ -635,6 +637,12 @@ TEST(SuiteReject, CameraFields) {
   rejected_edit([](json& j) { j["feedback"] = {{"view", true}}; }, "feedback.view");
   rejected_edit([](json& j) { j["axes"] = {{"feedback.view", {false, true}}}; }, "feedback.view");
   rejected_edit([](json& j) { j["feedback"] = {{"view_detail_px", 0}}; }, "feedback.view_detail_px");
+  rejected_edit([](json& j) { j["feedback"] = {{"view_static_share", 1.5}}; }, "feedback.view_static_share");
+  rejected_edit(
+      [](json& j) {
+        j["axes"] = {{"feedback.view_static_share", {0.1, -1}}};
+      },
+      "axes.feedback.view_static_share[1]");
 }
 
 TEST(ShippedSuites, ViewerSuitesWatchThroughACameraWithTheViewTermsOn) {
