@@ -11,8 +11,9 @@
 //    salient, after the cap and the light.
 //  * View (optional, feedback.view): with a spectator (a ScreenProjection), local and global motion are measured on
 //    the image — the relative velocity's projection, in degrees of visual angle per second — so motion far away or
-//    along the line of sight counts little, and a node out of view gets 0 whatever else it has (docs/design.md,
-//    "The spectator").
+//    along the line of sight counts little; a node in view is worth its block's apparent size x (view_static_share
+//    + (1 - view_static_share) x its capped motion), and a node out of view gets 0 whatever else it has
+//    (docs/design.md, "The spectator").
 #pragma once
 
 #include <array>
