@@ -62,10 +62,8 @@ struct FeedbackSettings {
   /// cloth does: Koh, Narain and O'Brien 2014), so detail a spectator could not resolve is the first to go.
   double view_detail_px = 8.0;
   /// With view: the share of a visible node's saliency that its apparent size gives it whatever it moves; the rest
-  /// is its capped motion. In [0, 1]. A cloth at rest on a collider has no motion to rank it, and there the static
-  /// share places the detail (the viewer-drape suite keeps 0.5); a hanging cloth is always in motion, and a large
-  /// static share dilutes the motion's ranking (the hanging-net viewer suites use 0.001, which still keeps a quiet
-  /// node in view above every node out of view). docs/design.md, "The spectator".
+  /// is its capped motion. In [0, 1]; above 0, a quiet node in view still outranks every node out of view. Which
+  /// share suits which scene: docs/design.md, "The spectator".
   double view_static_share = 0.5;
 };
 

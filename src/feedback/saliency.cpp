@@ -130,8 +130,8 @@ void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settin
   for (std::size_t i = 0; i < motion.size(); ++i) {
     double s = largest > 0 ? motion[i] / largest : 0.0;
     s = std::min(s, cap);
-    // Seen, a block is worth its apparent size times a mix of a static share and its motion, so with any static
-    // share a quiet block in view still outranks every block out of view, at rest too. A node leaving the cut is
+    // Seen, a block is worth its apparent size times a mix of a static share and its motion, so with a static share
+    // above 0 a quiet block in view still outranks every block out of view, at rest too. A node leaving the cut is
     // worth nothing, as without the view terms.
     if (view)
       s = snapshot.cut.committed(snapshot.cut.tree_of[i])
