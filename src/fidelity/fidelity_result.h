@@ -28,6 +28,11 @@ inline MetricSummary summarize_metric(std::span<const double> values) {
   return {s.count, s.mean, s.p95, s.max};
 }
 
+/// A summary's mean, or nothing when it summarised no step (a subject that never reached a measured step).
+inline std::optional<double> summary_mean(const MetricSummary& s) {
+  return s.count > 0 ? std::optional(s.mean) : std::nullopt;
+}
+
 /// Error as the spectator sees it, in a scene with a camera (fidelity/screen_error.h): per measured step the mean,
 /// p95 and maximum distance on the image, pixels, between the reference's and the subject's grid points that the
 /// reference shows in view; each summarised over the steps that show any.

@@ -70,10 +70,6 @@ std::optional<double> mean_floor(const FidelityResult& result, const std::vector
   return finite_mean(values);
 }
 
-std::optional<double> summary_mean(const MetricSummary& s) {
-  return s.count > 0 ? std::optional(s.mean) : std::nullopt;
-}
-
 }  // namespace
 
 std::vector<FidelityRow> fidelity_rows(const FidelityResult& result) {

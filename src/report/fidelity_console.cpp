@@ -2,6 +2,7 @@
 
 #include <ostream>
 
+#include "fidelity/fidelity_result.h"
 #include "paper/paper_tables.h"
 #include "report/claims_console.h"
 #include "report/text_table.h"
@@ -43,10 +44,6 @@ void print_rows(const std::vector<FidelityRow>& rows, std::ostream& out) {
          "nets; max and pop: max over steps and nets; time/plain: mean steps of this pass; noise fl, interp fl: "
          "the floors below):\n";
   t.print(out);
-}
-
-std::optional<double> summary_mean(const MetricSummary& s) {
-  return s.count > 0 ? std::optional(s.mean) : std::nullopt;
 }
 
 /// Per net: the noise floor and the interpolation floor at each of the suite's compression targets below 1.

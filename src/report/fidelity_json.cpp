@@ -1,5 +1,6 @@
 #include "report/fidelity_json.h"
 
+#include "fidelity/fidelity_result.h"
 #include "paper/fidelity_tables.h"
 #include "report/json_number.h"
 
@@ -77,10 +78,6 @@ ojson case_json(const FidelityCase& c) {
   // Only in a scene with a camera: every other result stays as it was.
   if (c.screen) out["screen"] = screen_json(*c.screen);
   return out;
-}
-
-std::optional<double> summary_mean(const MetricSummary& s) {
-  return s.count > 0 ? std::optional(s.mean) : std::nullopt;
 }
 
 ojson floors_json(const FidelityFloors& f) {

@@ -17,7 +17,7 @@ constexpr double kMicrosecondsPerMs = 1000.0;
 
 /// A context field, or `fallback` when a (hand-made) file lacks it or has another type.
 template <class T>
-T field(const ojson& object, const char* key, T fallback) {
+T member_or(const ojson& object, const char* key, T fallback) {
   const auto it = object.find(key);
   if (it == object.end()) return fallback;
   try {
@@ -32,32 +32,32 @@ ojson context_json(const ResultView& r) {
   ojson caches = ojson::array();
   if (const auto it = c.find("caches"); it != c.end() && it->is_array()) {
     for (const ojson& cache : *it) {
-      caches.push_back({{"type", field<std::string>(cache, "type", "")},
-                        {"level", field<int>(cache, "level", 0)},
-                        {"size", field<std::int64_t>(cache, "size_bytes", 0)},
-                        {"num_sharing", field<int>(cache, "num_sharing", 0)}});
+      caches.push_back({{"type", member_or<std::string>(cache, "type", "")},
+                        {"level", member_or<int>(cache, "level", 0)},
+                        {"size", member_or<std::int64_t>(cache, "size_bytes", 0)},
+                        {"num_sharing", member_or<int>(cache, "num_sharing", 0)}});
     }
   }
-  const std::string governor = field<std::string>(c, "cpu_governor", "");
+  const std::string governor = member_or<std::string>(c, "cpu_governor", "");
   // Google Benchmark's keys first (its tools read them by name), then tcsb's own as custom context, as
   // --benchmark_context=key=value would add them.
   return {
-      {"date", field<std::string>(c, "date_utc", "")},
-      {"host_name", field<std::string>(c, "host", "")},
+      {"date", member_or<std::string>(c, "date_utc", "")},
+      {"host_name", member_or<std::string>(c, "host", "")},
       {"executable", "tcsb"},
-      {"num_cpus", field<int>(c, "cores", 0)},
-      {"mhz_per_cpu", static_cast<std::int64_t>(std::llround(field<double>(c, "mhz", 0.0)))},
+      {"num_cpus", member_or<int>(c, "cores", 0)},
+      {"mhz_per_cpu", static_cast<std::int64_t>(std::llround(member_or<double>(c, "mhz", 0.0)))},
       {"cpu_scaling_enabled", !governor.empty() && governor != "performance"},
       {"caches", std::move(caches)},
       // tcsb records only the 1-minute load average.
-      {"load_avg", ojson::array({json_number(field<double>(c, "load_average_1m", 0.0))})},
-      {"library_build_type", field<bool>(c, "optimized", false) ? "release" : "debug"},
-      {"tcsb_suite", field<std::string>(r.suite, "name", "")},
-      {"tcsb_suite_sha256", field<std::string>(r.suite, "sha256", "")},
-      {"tcsb_git_commit", field<std::string>(c, "git_commit", "")},
-      {"tcsb_cpu_model", field<std::string>(c, "cpu_model", "")},
-      {"tcsb_build_type", field<std::string>(c, "build_type", "")},
-      {"tcsb_bullet_version", field<std::string>(c, "bullet_version", "")},
+      {"load_avg", ojson::array({json_number(member_or<double>(c, "load_average_1m", 0.0))})},
+      {"library_build_type", member_or<bool>(c, "optimized", false) ? "release" : "debug"},
+      {"tcsb_suite", member_or<std::string>(r.suite, "name", "")},
+      {"tcsb_suite_sha256", member_or<std::string>(r.suite, "sha256", "")},
+      {"tcsb_git_commit", member_or<std::string>(c, "git_commit", "")},
+      {"tcsb_cpu_model", member_or<std::string>(c, "cpu_model", "")},
+      {"tcsb_build_type", member_or<std::string>(c, "build_type", "")},
+      {"tcsb_bullet_version", member_or<std::string>(c, "bullet_version", "")},
   };
 }
 

@@ -2,16 +2,17 @@
 
 #include <gtest/gtest.h>
 
-#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "non_finite.h"
+
 namespace tcsb {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using testing::kInf;
+using testing::kNaN;
 
 /// A deterministic claim is decided on its value.
 bool passes(Comparison c, double expected, double tolerance, std::optional<double> measured) {

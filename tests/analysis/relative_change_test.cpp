@@ -2,14 +2,15 @@
 
 #include <gtest/gtest.h>
 
-#include <limits>
 #include <stdexcept>
+
+#include "non_finite.h"
 
 namespace tcsb {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using testing::kInf;
+using testing::kNaN;
 
 TEST(RelativeChange, Basic) {
   EXPECT_DOUBLE_EQ(relative_change(100.0, 125.0), 0.25);

@@ -3,17 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 #include <random>
 #include <stdexcept>
 #include <vector>
+
+#include "non_finite.h"
 
 namespace tcsb {
 namespace {
 
 const std::vector<double> kOneToTen{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using testing::kInf;
+using testing::kNaN;
 
 TEST(Percentile, OneToTenMatchesNumpyLinear) {
   // numpy.percentile(range(1, 11), q): index = 9 * q / 100, interpolated between neighbours.

@@ -62,6 +62,10 @@ inline std::string nine_by_nine_suite(const std::string& name, int repetitions) 
 })";
 }
 
+/// The 9 x 9 suite with two repetitions ("tiny") and with one ("small"), as the CLI tests write them.
+inline const std::string kTinySuite = nine_by_nine_suite("tiny", 2);
+inline const std::string kSmallSuite = nine_by_nine_suite("small", 1);
+
 /// A fresh temporary directory per test, and tcsb run inside it.
 class Cli : public ::testing::Test {
  protected:

@@ -15,7 +15,6 @@ namespace {
 using namespace tcsb::cli_test;
 
 /// Two repetitions: the CLI tests check files and exit codes, not timings.
-const std::string kTinySuite = nine_by_nine_suite("tiny", 2);
 
 TEST_F(Cli, UnknownFlagIsOneErrorLineAndExit2) {
   const Outcome o = tcsb("--bogus");

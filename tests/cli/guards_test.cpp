@@ -14,8 +14,6 @@ namespace {
 
 using namespace tcsb::cli_test;
 
-const std::string kTinySuite = nine_by_nine_suite("tiny", 2);
-
 /// `text` with every occurrence of `from` replaced by `to`.
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))

@@ -16,8 +16,6 @@ namespace {
 
 using namespace tcsb::cli_test;
 
-const std::string kSmallSuite = nine_by_nine_suite("small", 1);
-
 class Input : public Cli {
  protected:
   void SetUp() override {

@@ -18,7 +18,6 @@ namespace {
 
 using namespace tcsb::cli_test;
 
-const std::string kSmallSuite = nine_by_nine_suite("small", 1);
 const std::string kBinary = TCSB_BINARY;
 
 /// "tcsb: error: cannot write to stdout: <reason>" somewhere in `err`, and no "internal error".

@@ -18,7 +18,7 @@
 namespace tcsb {
 namespace {
 
-constexpr btScalar kDt = 1.0f / 60;
+using testing::kDt;
 
 using testing::square_net;
 using testing::test_solver;

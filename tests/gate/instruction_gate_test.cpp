@@ -36,7 +36,7 @@ ojson counted_doc(std::int64_t own = 1000) {
   return doc;
 }
 
-GateOutcome gate(const ojson& base, const ojson& next, double threshold = 0.005) {
+GateOutcome instruction_gate(const ojson& base, const ojson& next, double threshold = 0.005) {
   GateSettings settings;
   settings.threshold = threshold;
   return decide_gate(compare_results(read_result(base, "base.json"), read_result(next, "new.json")), settings, false);
@@ -79,15 +79,15 @@ TEST(InstructionGate, WorkWhereTheBaseCountedNoneRegresses) {
 
 TEST(InstructionGate, CountResultsGateOnCountsAlone) {
   // One repetition: the timings could never be decided, the counts are.
-  const GateOutcome same = gate(counted_doc(), counted_doc());
+  const GateOutcome same = instruction_gate(counted_doc(), counted_doc());
   EXPECT_TRUE(same.counts);
   EXPECT_TRUE(same.pass());
   EXPECT_EQ(same.gated_metrics, 4u);
-  const GateOutcome more = gate(counted_doc(), counted_doc(2000));  // +1000 of 101000: +0.99 %
+  const GateOutcome more = instruction_gate(counted_doc(), counted_doc(2000));  // +1000 of 101000: +0.99 %
   EXPECT_FALSE(more.pass());
   EXPECT_EQ(more.regressions, 2u);
   EXPECT_EQ(more.verdict(), Verdict::kFail);
-  EXPECT_TRUE(gate(counted_doc(), counted_doc(2000), 0.01).pass());
+  EXPECT_TRUE(instruction_gate(counted_doc(), counted_doc(2000), 0.01).pass());
 }
 
 TEST(InstructionGate, ATimeResultIsNeverComparedWithACountResult) {

@@ -14,13 +14,13 @@
 namespace tcsb {
 namespace {
 
-struct Size {
+struct TreeSize {
   int w, h;
 };
-const std::vector<Size> kSizes = {{2, 2}, {3, 3},  {2, 9},   {9, 2},   {4, 8},  {16, 16},
-                                  {5, 7}, {17, 9}, {33, 17}, {65, 65}, {64, 32}};
+const std::vector<TreeSize> kTreeSizes = {{2, 2}, {3, 3},  {2, 9},   {9, 2},   {4, 8},  {16, 16},
+                                          {5, 7}, {17, 9}, {33, 17}, {65, 65}, {64, 32}};
 
-std::unique_ptr<Net> make_net(int w, int h, unsigned pins = kAllCorners, MassMode mode = MassMode::kTotal,
+std::unique_ptr<Net> tree_net(int w, int h, unsigned pins = kAllCorners, MassMode mode = MassMode::kTotal,
                               RestPlacement rest = RestPlacement::kCentroid) {
   NetSpec spec;
   spec.width = w;
@@ -37,10 +37,10 @@ std::string label(int w, int h) { return std::to_string(w) + "x" + std::to_strin
 /// Runs `check(tree, net)` over every size, with all corners pinned and with one corner pinned.
 template <class Check>
 void for_each_tree(Check&& check) {
-  for (const Size s : kSizes)
+  for (const TreeSize s : kTreeSizes)
     for (const unsigned pins : {unsigned(kAllCorners), unsigned(kCornerMaxMin), 0u}) {
       SCOPED_TRACE(label(s.w, s.h) + " pins " + std::to_string(pins));
-      const auto net = make_net(s.w, s.h, pins);
+      const auto net = tree_net(s.w, s.h, pins);
       check(net->lod(), *net);
     }
 }
@@ -70,11 +70,11 @@ TEST(LodTree, LevelSizesCeilHalveDownToOneNode) {
 }
 
 TEST(LodTree, KnownLevelCounts) {
-  EXPECT_EQ(make_net(2, 2)->lod().level_count(), 2);
-  EXPECT_EQ(make_net(65, 65)->lod().level_count(), 8);  // 65 33 17 9 5 3 2 1
-  EXPECT_EQ(make_net(64, 64)->lod().level_count(), 7);  // 64 32 16 8 4 2 1
-  EXPECT_EQ(make_net(2, 9)->lod().level_count(), 5);    // 9 5 3 2 1
-  EXPECT_EQ(make_net(65, 65)->lod().size(), 65u * 65 + 33 * 33 + 17 * 17 + 9 * 9 + 5 * 5 + 3 * 3 + 2 * 2 + 1);
+  EXPECT_EQ(tree_net(2, 2)->lod().level_count(), 2);
+  EXPECT_EQ(tree_net(65, 65)->lod().level_count(), 8);  // 65 33 17 9 5 3 2 1
+  EXPECT_EQ(tree_net(64, 64)->lod().level_count(), 7);  // 64 32 16 8 4 2 1
+  EXPECT_EQ(tree_net(2, 9)->lod().level_count(), 5);    // 9 5 3 2 1
+  EXPECT_EQ(tree_net(65, 65)->lod().size(), 65u * 65 + 33 * 33 + 17 * 17 + 9 * 9 + 5 * 5 + 3 * 3 + 2 * 2 + 1);
 }
 
 TEST(LodTree, AtMatchesNodeCoordinatesAndOrdering) {
@@ -225,7 +225,7 @@ TEST(LodTree, ChildrenPartitionTheParentsBlock) {
 }
 
 TEST(LodTree, FullBlocksHaveFourChildrenAndBorderBlocksFewer) {
-  const auto net = make_net(17, 9);
+  const auto net = tree_net(17, 9);
   const LodTree& tree = net->lod();
   EXPECT_EQ(tree.node(tree.at(1, 0, 0)).child_count, 4);
   EXPECT_EQ(tree.node(tree.at(1, 8, 0)).child_count, 2);  // leaf column 16 alone
@@ -236,7 +236,7 @@ TEST(LodTree, FullBlocksHaveFourChildrenAndBorderBlocksFewer) {
 TEST(LodTree, MassIsTheSumOfTheChildrenAndTheRootHoldsItAll) {
   for (const MassMode mode : {MassMode::kTotal, MassMode::kPerNode}) {
     for_each_tree([mode](const LodTree&, const Net& base) {
-      const auto net = make_net(base.width(), base.height(), base.spec().pinned_corners, mode);
+      const auto net = tree_net(base.width(), base.height(), base.spec().pinned_corners, mode);
       const LodTree& tree = net->lod();
       for (const LodNode& n : tree.nodes()) {
         if (n.is_leaf()) continue;
@@ -277,7 +277,7 @@ TEST(LodTree, CentroidIsTheMassWeightedMeanOfTheBlocksLeaves) {
 
 TEST(LodTree, CentroidOfUniformBlockIsItsMidpoint) {
   // Uniform masses: the centroid of a block is the midpoint of its corner leaves. Independent of the weighting code.
-  const auto net = make_net(33, 17);
+  const auto net = tree_net(33, 17);
   const LodTree& tree = net->lod();
   for (std::size_t id = 0; id < tree.size(); ++id) {
     const LodNode& n = tree.node(static_cast<TreeId>(id));
@@ -332,7 +332,7 @@ TEST(LodTree, BlocksOnTheBorderRestOnIt) {
   // 10x10 (full blocks) and 9x9 (the last column and row of blocks one leaf wide), no pins.
   for (const int side : {10, 9}) {
     SCOPED_TRACE(side);
-    const auto net = make_net(side, side, 0);
+    const auto net = tree_net(side, side, 0);
     const LodTree& t = net->lod();
     const auto leaf = [&](int x, int y) { return net->rest_positions()[static_cast<std::size_t>(net->index(x, y))]; };
     for (int i = 0; i < side * side; ++i) EXPECT_EQ(t.rest(i), net->rest_positions()[static_cast<std::size_t>(i)]);
@@ -357,10 +357,10 @@ TEST(LodTree, BlocksOnTheBorderRestOnIt) {
 }
 
 TEST(LodTree, VertexBlocksRestOnTheirFirstLeafOrOnTheLastBorder) {
-  for (const Size sz : kSizes)
+  for (const TreeSize sz : kTreeSizes)
     for (const unsigned pins : {unsigned(kAllCorners), unsigned(kCornerMaxMin), 0u}) {
       SCOPED_TRACE(label(sz.w, sz.h) + " pins " + std::to_string(pins));
-      const auto net = make_net(sz.w, sz.h, pins, MassMode::kTotal, RestPlacement::kVertex);
+      const auto net = tree_net(sz.w, sz.h, pins, MassMode::kTotal, RestPlacement::kVertex);
       const LodTree& tree = net->lod();
       ASSERT_EQ(tree.placement(), RestPlacement::kVertex);
       const auto leaf = [&](int x, int y) { return net->rest_positions()[static_cast<std::size_t>(net->index(x, y))]; };
@@ -390,7 +390,7 @@ TEST(LodTree, VertexBlocksRestOnTheirFirstLeafOrOnTheLastBorder) {
         ASSERT_EQ(tree.rest(id), expected) << "node " << id;
       }
       // The rest placement changes where blocks rest, nothing else of the tree.
-      const auto centroid_net = make_net(sz.w, sz.h, pins);
+      const auto centroid_net = tree_net(sz.w, sz.h, pins);
       for (std::size_t i = 0; i < tree.size(); ++i) {
         const auto id = static_cast<TreeId>(i);
         ASSERT_EQ(tree.node(id).mass, centroid_net->lod().node(id).mass);
@@ -406,10 +406,10 @@ TEST(LodTree, VertexWholeLevelCutsOfPowerOfTwoPlusOneNetsAreEvenlySpacedSubGrids
   // A (2^k m + 1)-wide net: level l <= k rests on leaf columns and rows 0, 2^l, 2 * 2^l, ..., the last one included
   // (a partial block of one leaf), pinned corners too. Centroid placement does not: level 1 of 45 wide rests at
   // leaves 0, 2.5, 4.5, ..., 42.5, 44.
-  for (const Size sz : std::vector<Size>{{45, 45}, {33, 17}, {81, 81}, {9, 5}})
+  for (const TreeSize sz : std::vector<TreeSize>{{45, 45}, {33, 17}, {81, 81}, {9, 5}})
     for (const unsigned pins : {unsigned(kAllCorners), 0u}) {
       SCOPED_TRACE(label(sz.w, sz.h) + " pins " + std::to_string(pins));
-      const auto net = make_net(sz.w, sz.h, pins, MassMode::kTotal, RestPlacement::kVertex);
+      const auto net = tree_net(sz.w, sz.h, pins, MassMode::kTotal, RestPlacement::kVertex);
       const LodTree& tree = net->lod();
       const auto leaf = [&](int x, int y) { return net->rest_positions()[static_cast<std::size_t>(net->index(x, y))]; };
       int levels = 0;
@@ -423,14 +423,14 @@ TEST(LodTree, VertexWholeLevelCutsOfPowerOfTwoPlusOneNetsAreEvenlySpacedSubGrids
                 << "level " << l << " " << gx << "," << gy;
       }
       EXPECT_GE(levels, 1);
-      const auto centroid_net = make_net(sz.w, sz.h, pins);
+      const auto centroid_net = tree_net(sz.w, sz.h, pins);
       EXPECT_NE(centroid_net->lod().rest(centroid_net->lod().at(1, 1, 1)), leaf(2, 2));
     }
 }
 
 TEST(LodTree, BlocksHoldingTwoCornersAreNotSimulable) {
   // 2x9 with all corners: the two corners of each short side share a level-1 block at once.
-  const auto net = make_net(2, 9);
+  const auto net = tree_net(2, 9);
   const LodTree& tree = net->lod();
   EXPECT_EQ(tree.node(tree.at(1, 0, 0)).pinned_leaf_count, 2);
   EXPECT_FALSE(tree.node(tree.at(1, 0, 0)).simulable());
@@ -441,7 +441,7 @@ TEST(LodTree, BlocksHoldingTwoCornersAreNotSimulable) {
   EXPECT_FALSE(tree.node(tree.root()).simulable());
   // 65x65: the blocks of the last row and column are partial (65 = 64 + 1), so the (64, 64) corner is alone in its
   // block at every level below the root, and only the root holds two corners or more.
-  const auto big = make_net(65, 65);
+  const auto big = tree_net(65, 65);
   const LodTree& t = big->lod();
   for (int l = 0; l + 1 < t.level_count(); ++l) {
     const TreeId corner = t.at(l, t.level_width(l) - 1, t.level_height(l) - 1);
@@ -462,7 +462,7 @@ TEST(LodTree, BlocksHoldingTwoCornersAreNotSimulable) {
   EXPECT_EQ(t.node(t.root()).pinned_leaf_count, 4);
   EXPECT_FALSE(t.node(t.root()).simulable());
   // 64x64: the level-5 (2x2) blocks each hold one corner; with a 32-leaf side, level 5's blocks are 32x32.
-  const auto even = make_net(64, 64);
+  const auto even = tree_net(64, 64);
   const LodTree& e = even->lod();
   EXPECT_EQ(e.node(e.at(5, 1, 0)).pinned_leaf_count, 1);
   EXPECT_EQ(e.node(e.at(5, 1, 0)).anchor_leaf, even->index(63, 0));

@@ -13,13 +13,13 @@
 namespace tcsb {
 namespace {
 
-struct Size {
+struct NetSize {
   int w, h;
 };
 // Square and not, powers of two (plus one) and not, the smallest net and thin ones.
-const std::vector<Size> kSizes = {{2, 2}, {3, 7}, {7, 3}, {2, 9}, {17, 9}, {33, 17}, {65, 65}};
+const std::vector<NetSize> kNetSizes = {{2, 2}, {3, 7}, {7, 3}, {2, 9}, {17, 9}, {33, 17}, {65, 65}};
 
-NetSpec spec_of(int w, int h, bool shear = false, bool bend = false) {
+NetSpec net_spec(int w, int h, bool shear = false, bool bend = false) {
   NetSpec spec;
   spec.width = w;
   spec.height = h;
@@ -41,8 +41,8 @@ std::size_t bend_formula(long long w, long long h) {
 }
 
 TEST(Net, NodeCountIsWidthTimesHeight) {
-  for (const Size s : kSizes) {
-    const NetSpec spec = spec_of(s.w, s.h);
+  for (const NetSize s : kNetSizes) {
+    const NetSpec spec = net_spec(s.w, s.h);
     const Net net(spec);
     EXPECT_EQ(net.node_count(), static_cast<std::size_t>(s.w * s.h)) << label(spec);
     EXPECT_EQ(spec.node_count(), s.w * s.h) << label(spec);
@@ -56,7 +56,7 @@ TEST(Net, NodeCountIsWidthTimesHeight) {
 }
 
 TEST(Net, IndexIsRowMajorAlongX) {
-  const Net net(spec_of(17, 9));
+  const Net net(net_spec(17, 9));
   EXPECT_EQ(net.index(0, 0), 0);
   EXPECT_EQ(net.index(1, 0), 1);
   EXPECT_EQ(net.index(0, 1), 17);
@@ -65,10 +65,10 @@ TEST(Net, IndexIsRowMajorAlongX) {
 }
 
 TEST(Net, LinkCountsMatchExpectedAndClosedFormulas) {
-  for (const Size s : kSizes) {
+  for (const NetSize s : kNetSizes) {
     for (const bool shear : {false, true}) {
       for (const bool bend : {false, true}) {
-        const NetSpec spec = spec_of(s.w, s.h, shear, bend);
+        const NetSpec spec = net_spec(s.w, s.h, shear, bend);
         const Net net(spec);
         const std::size_t formula =
             structural_formula(s.w, s.h) + (shear ? shear_formula(s.w, s.h) : 0) + (bend ? bend_formula(s.w, s.h) : 0);
@@ -87,19 +87,19 @@ TEST(Net, LinkCountsMatchExpectedAndClosedFormulas) {
 TEST(Net, KnownSmallLinkCounts) {
   // Hand-counted: 2x2 has 4 edges, 2 diagonals, no room for a bend; 3x7: 3*6 + 7*2 = 32 structural, 2*2*6 = 24
   // shear, 1*7 + 5*3 = 22 bend.
-  EXPECT_EQ(Net(spec_of(2, 2)).links().size(), 4u);
-  EXPECT_EQ(Net(spec_of(2, 2, true)).links().size(), 6u);
-  EXPECT_EQ(Net(spec_of(2, 2, true, true)).links().size(), 6u);
-  EXPECT_EQ(Net(spec_of(3, 7)).links().size(), 32u);
-  EXPECT_EQ(Net(spec_of(3, 7, true)).links().size(), 56u);
-  EXPECT_EQ(Net(spec_of(3, 7, false, true)).links().size(), 54u);
-  EXPECT_EQ(Net(spec_of(3, 7, true, true)).links().size(), 78u);
-  EXPECT_EQ(Net(spec_of(65, 65)).links().size(), 8320u);  // W(H-1) + H(W-1) structural links
+  EXPECT_EQ(Net(net_spec(2, 2)).links().size(), 4u);
+  EXPECT_EQ(Net(net_spec(2, 2, true)).links().size(), 6u);
+  EXPECT_EQ(Net(net_spec(2, 2, true, true)).links().size(), 6u);
+  EXPECT_EQ(Net(net_spec(3, 7)).links().size(), 32u);
+  EXPECT_EQ(Net(net_spec(3, 7, true)).links().size(), 56u);
+  EXPECT_EQ(Net(net_spec(3, 7, false, true)).links().size(), 54u);
+  EXPECT_EQ(Net(net_spec(3, 7, true, true)).links().size(), 78u);
+  EXPECT_EQ(Net(net_spec(65, 65)).links().size(), 8320u);  // W(H-1) + H(W-1) structural links
 }
 
 TEST(Net, LinksJoinTheRightGridNeighboursOnceEach) {
-  for (const Size s : kSizes) {
-    const NetSpec spec = spec_of(s.w, s.h, true, true);
+  for (const NetSize s : kNetSizes) {
+    const NetSpec spec = net_spec(s.w, s.h, true, true);
     const Net net(spec);
     std::set<std::pair<TreeId, TreeId>> seen;
     for (const NetLink& l : net.links()) {
@@ -120,8 +120,8 @@ TEST(Net, LinksJoinTheRightGridNeighboursOnceEach) {
 }
 
 TEST(Net, CanonicalOrderStartsWithPlusXThenPlusZ) {
-  for (const Size s : kSizes) {
-    const Net net(spec_of(s.w, s.h));
+  for (const NetSize s : kNetSizes) {
+    const Net net(net_spec(s.w, s.h));
     ASSERT_GE(net.links().size(), 2u);
     EXPECT_EQ(net.links()[0].a, 0);
     EXPECT_EQ(net.links()[0].b, 1);
@@ -132,7 +132,7 @@ TEST(Net, CanonicalOrderStartsWithPlusXThenPlusZ) {
   }
   // With shear and bend, node 0's links are +x, +z, the two diagonals of its cell, then the two bends.
   const int w = 17;
-  const Net net(spec_of(w, 9, true, true));
+  const Net net(net_spec(w, 9, true, true));
   const std::vector<std::tuple<TreeId, TreeId, LinkKind>> first = {
       {0, 1, LinkKind::kStructural}, {0, w, LinkKind::kStructural}, {0, w + 1, LinkKind::kShear},
       {1, w, LinkKind::kShear},      {0, 2, LinkKind::kBend},       {0, 2 * w, LinkKind::kBend}};
@@ -145,8 +145,8 @@ TEST(Net, CanonicalOrderStartsWithPlusXThenPlusZ) {
 
 TEST(Net, StructuralOrderIsCreatePatchOrder) {
   // btSoftBodyHelpers::CreatePatch: for each node row-major, its +x link (if any) then its +z link (if any).
-  for (const Size s : kSizes) {
-    const Net net(spec_of(s.w, s.h));
+  for (const NetSize s : kNetSizes) {
+    const Net net(net_spec(s.w, s.h));
     std::vector<std::pair<TreeId, TreeId>> patch;
     for (int y = 0; y < s.h; ++y)
       for (int x = 0; x < s.w; ++x) {
@@ -165,7 +165,7 @@ TEST(Net, StructuralOrderIsCreatePatchOrder) {
 TEST(Net, LinksOfEachNodeAreGroupedRowMajor) {
   // The first endpoint never decreases along the canonical order, shear diagonals of a cell included (their first
   // endpoint is the cell's min corner or its +x neighbour, listed with the min corner).
-  const Net net(spec_of(9, 5, true, true));
+  const Net net(net_spec(9, 5, true, true));
   int cell_owner = -1;
   for (const NetLink& l : net.links()) {
     const int owner = l.kind == LinkKind::kShear && l.b == l.a + 9 - 1 ? l.a - 1 : l.a;
@@ -175,8 +175,8 @@ TEST(Net, LinksOfEachNodeAreGroupedRowMajor) {
 }
 
 TEST(Net, RestPositionsSpanTheNetAtItsElevation) {
-  for (const Size s : kSizes) {
-    NetSpec spec = spec_of(s.w, s.h);
+  for (const NetSize s : kNetSizes) {
+    NetSpec spec = net_spec(s.w, s.h);
     spec.size_x = 6.0;
     spec.size_z = 2.5;
     spec.elevation = 3.25;
@@ -198,15 +198,15 @@ TEST(Net, RestPositionsSpanTheNetAtItsElevation) {
     EXPECT_DOUBLE_EQ(max_z, 1.25) << label(spec);
     EXPECT_DOUBLE_EQ(net.extent(), 6.0);
   }
-  NetSpec tall = spec_of(3, 7);
+  NetSpec tall = net_spec(3, 7);
   tall.size_x = 1.0;
   tall.size_z = 4.0;
   EXPECT_DOUBLE_EQ(Net(tall).extent(), 4.0);
 }
 
 TEST(Net, TotalMassModeSpreadsTheMassEvenly) {
-  for (const Size s : kSizes) {
-    NetSpec spec = spec_of(s.w, s.h);
+  for (const NetSize s : kNetSizes) {
+    NetSpec spec = net_spec(s.w, s.h);
     spec.mass_mode = MassMode::kTotal;
     spec.mass = 2.5;
     const Net net(spec);
@@ -217,8 +217,8 @@ TEST(Net, TotalMassModeSpreadsTheMassEvenly) {
 }
 
 TEST(Net, PerNodeMassModeGivesEachNodeTheMass) {
-  for (const Size s : kSizes) {
-    NetSpec spec = spec_of(s.w, s.h);
+  for (const NetSize s : kNetSizes) {
+    NetSpec spec = net_spec(s.w, s.h);
     spec.mass_mode = MassMode::kPerNode;
     spec.mass = 0.125;
     const Net net(spec);
@@ -229,9 +229,9 @@ TEST(Net, PerNodeMassModeGivesEachNodeTheMass) {
 }
 
 TEST(Net, PinnedCornersFollowTheBitFlags) {
-  for (const Size s : kSizes) {
+  for (const NetSize s : kNetSizes) {
     for (unsigned mask = 0; mask <= kAllCorners; ++mask) {
-      NetSpec spec = spec_of(s.w, s.h);
+      NetSpec spec = net_spec(s.w, s.h);
       spec.pinned_corners = mask;
       const Net net(spec);
       std::set<TreeId> expected;
@@ -253,7 +253,7 @@ TEST(Net, PinnedCornersFollowTheBitFlags) {
 }
 
 TEST(Net, PinnedCornerIsAtTheNamedPosition) {
-  NetSpec spec = spec_of(5, 3);
+  NetSpec spec = net_spec(5, 3);
   spec.pinned_corners = kCornerMaxMin;  // x max, z min
   const Net net(spec);
   for (std::size_t i = 0; i < net.node_count(); ++i) {
@@ -264,15 +264,15 @@ TEST(Net, PinnedCornerIsAtTheNamedPosition) {
 }
 
 TEST(Net, RejectsInvalidSpecs) {
-  EXPECT_THROW(Net(spec_of(1, 5)), std::invalid_argument);
-  EXPECT_THROW(Net(spec_of(5, 1)), std::invalid_argument);
-  NetSpec no_mass = spec_of(3, 3);
+  EXPECT_THROW(Net(net_spec(1, 5)), std::invalid_argument);
+  EXPECT_THROW(Net(net_spec(5, 1)), std::invalid_argument);
+  NetSpec no_mass = net_spec(3, 3);
   no_mass.mass = 0;
   EXPECT_THROW(Net{no_mass}, std::invalid_argument);
-  NetSpec flat = spec_of(3, 3);
+  NetSpec flat = net_spec(3, 3);
   flat.size_z = 0;
   EXPECT_THROW(Net{flat}, std::invalid_argument);
-  EXPECT_NO_THROW(Net(spec_of(2, 2)));
+  EXPECT_NO_THROW(Net(net_spec(2, 2)));
 }
 
 }  // namespace

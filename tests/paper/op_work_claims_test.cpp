@@ -48,7 +48,7 @@ RunResult flat_run() {
   return r;
 }
 
-const Claim& find(const std::vector<Claim>& claims, const std::string& id) {
+const Claim& op_claim(const std::vector<Claim>& claims, const std::string& id) {
   for (const Claim& c : claims)
     if (c.id == id) return c;
   throw std::runtime_error("no claim " + id);
@@ -81,9 +81,9 @@ TEST(OpWorkClaims, AnInteriorMeanGrowingWithTheNetFailsThoughTheMaximumIsFlat) {
     for (OpSample& s : r.cases[i].ops.samples)
       if (s.kind == OpKind::kEndCoarse && s.work.links == 10) s.work.links += 2;
   const std::vector<Claim> claims = op_work_claims(r);
-  EXPECT_FALSE(passed(find(claims, "op_work_end-coarse")));
-  EXPECT_TRUE(passed(find(claims, "op_work_coarse")));
-  EXPECT_NEAR(*find(claims, "op_work_end-coarse").measured, (1.0 / 16) / 0.05, 1e-12);
+  EXPECT_FALSE(passed(op_claim(claims, "op_work_end-coarse")));
+  EXPECT_TRUE(passed(op_claim(claims, "op_work_coarse")));
+  EXPECT_NEAR(*op_claim(claims, "op_work_end-coarse").measured, (1.0 / 16) / 0.05, 1e-12);
 }
 
 TEST(OpWorkClaims, BorderCallsThatDifferWhileInteriorCallsAgreePass) {
@@ -116,13 +116,13 @@ TEST(OpWorkClaims, RelocationWorkIsBoundedButNotCompared) {
         s.work.relocation_nodes = op_work_bounds::kEndCoarse.relocation_nodes;
         s.work.relocation_links = 60;
       }
-  EXPECT_TRUE(passed(find(op_work_claims(r), "op_work_end-coarse")));
+  EXPECT_TRUE(passed(op_claim(op_work_claims(r), "op_work_end-coarse")));
   // One call more than the bound fails, on any net.
   r.cases[4].ops.samples[6].work.relocation_links = op_work_bounds::kEndCoarse.relocation_links + 1;
-  EXPECT_FALSE(passed(find(op_work_claims(r), "op_work_end-coarse")));
+  EXPECT_FALSE(passed(op_claim(op_work_claims(r), "op_work_end-coarse")));
   // Refine removes nothing: its relocation bound is 0, so any relocation fails.
   r.cases[4].ops.samples[0].work.relocation_nodes = 1;
-  EXPECT_FALSE(passed(find(op_work_claims(r), "op_work_refine")));
+  EXPECT_FALSE(passed(op_claim(op_work_claims(r), "op_work_refine")));
 }
 
 TEST(OpWorkClaims, WithoutInteriorCallsOnSomeNetTheClaimIsUnmeasured) {
@@ -143,12 +143,12 @@ TEST(OpWorkClaims, ACountGrowingWithTheNetFails) {
     for (OpSample& s : r.cases[i].ops.samples)
       if (s.kind == OpKind::kEndCoarse) s.work.links += 2;
   const std::vector<Claim> claims = op_work_claims(r);
-  EXPECT_FALSE(passed(find(claims, "op_work_end-coarse")));
-  EXPECT_TRUE(passed(find(claims, "op_work_refine")));
-  EXPECT_TRUE(passed(find(claims, "op_work_end-refine")));
-  EXPECT_TRUE(passed(find(claims, "op_work_coarse")));
+  EXPECT_FALSE(passed(op_claim(claims, "op_work_end-coarse")));
+  EXPECT_TRUE(passed(op_claim(claims, "op_work_refine")));
+  EXPECT_TRUE(passed(op_claim(claims, "op_work_end-refine")));
+  EXPECT_TRUE(passed(op_claim(claims, "op_work_coarse")));
   // The worst spread is the mean's: (17 - 15) / 17 = 11.8 %, 2.35 x the 5 % allowed (the max's is 9.1 %).
-  EXPECT_NEAR(*find(claims, "op_work_end-coarse").measured, (2.0 / 17) / 0.05, 1e-12);
+  EXPECT_NEAR(*op_claim(claims, "op_work_end-coarse").measured, (2.0 / 17) / 0.05, 1e-12);
 }
 
 TEST(OpWorkClaims, AMeanWithinFivePercentStillPasses) {
@@ -157,7 +157,7 @@ TEST(OpWorkClaims, AMeanWithinFivePercentStillPasses) {
   OpWork less = typical();
   less.tree_records -= 1;
   r.cases[1].ops.samples[0] = sample(OpKind::kRefine, less);
-  EXPECT_TRUE(passed(find(op_work_claims(r), "op_work_refine")));
+  EXPECT_TRUE(passed(op_claim(op_work_claims(r), "op_work_refine")));
 }
 
 TEST(OpWorkClaims, AMaximumOverItsBoundFailsEvenWhenEveryNetAgrees) {
@@ -167,7 +167,7 @@ TEST(OpWorkClaims, AMaximumOverItsBoundFailsEvenWhenEveryNetAgrees) {
   for (CaseResult& c : r.cases)
     if (c.key.method == Method::kTcsb) c.ops.samples[4] = sample(OpKind::kCoarse, over);
   const std::vector<Claim> claims = op_work_claims(r);
-  const Claim& coarse = find(claims, "op_work_coarse");
+  const Claim& coarse = op_claim(claims, "op_work_coarse");
   EXPECT_FALSE(passed(coarse));
   EXPECT_DOUBLE_EQ(*coarse.measured, 2.0);  // 2 leaves against a bound of 1
 }
@@ -177,7 +177,7 @@ TEST(OpWorkClaims, TheDbvtAncestorWalkIsReportedButNotJudged) {
   OpWork deep = typical();  // replaces a typical() call: only the ancestor walk differs
   deep.dbvt_ancestors = 40;
   r.cases[7].ops.samples[0] = sample(OpKind::kRefine, deep);
-  EXPECT_TRUE(passed(find(op_work_claims(r), "op_work_refine")));
+  EXPECT_TRUE(passed(op_claim(op_work_claims(r), "op_work_refine")));
 }
 
 TEST(OpWorkClaims, WithoutCallsOnSomeNetTheClaimIsUnmeasuredAndFails) {
@@ -186,9 +186,9 @@ TEST(OpWorkClaims, WithoutCallsOnSomeNetTheClaimIsUnmeasuredAndFails) {
     if (c.net_name == "n55")
       std::erase_if(c.ops.samples, [](const OpSample& s) { return s.kind == OpKind::kEndRefine; });
   const std::vector<Claim> claims = op_work_claims(r);
-  EXPECT_FALSE(passed(find(claims, "op_work_end-refine")));
-  EXPECT_FALSE(find(claims, "op_work_end-refine").measured.has_value());
-  EXPECT_TRUE(passed(find(claims, "op_work_refine")));
+  EXPECT_FALSE(passed(op_claim(claims, "op_work_end-refine")));
+  EXPECT_FALSE(op_claim(claims, "op_work_end-refine").measured.has_value());
+  EXPECT_TRUE(passed(op_claim(claims, "op_work_refine")));
 }
 
 TEST(OpWorkClaims, OneNetCannotShowFlatnessSoItIsUnmeasured) {

@@ -9,6 +9,7 @@
 #include <memory>
 #include <random>
 
+#include "../softbody/test_bodies.h"
 #include "feedback/keyframe_path.h"
 #include "feedback/random_policy.h"
 #include "net/net.h"
@@ -20,9 +21,9 @@
 namespace tcsb {
 namespace {
 
-constexpr btScalar kDt = 1.0f / 60.0f;
+using testing::kDt;
 
-SolverSettings solver() {
+SolverSettings pins_solver() {
   SolverSettings s;
   s.piterations = 4;
   return s;
@@ -62,8 +63,8 @@ TEST(MovingPins, PlainAndTreeCutPinsFollowThePathAndTheFinestCutStepsBitForBitLi
   scene.pin_path = rod_path();
   SceneWorld world(WorldSettings{}, scene);
   const auto net = net_of(17, 0, kEdgeMinZ);
-  const auto plain = make_plain_softbody(world.info(), *net, solver());
-  TcSoftBody tc(world.info(), net, solver(), {});
+  const auto plain = make_plain_softbody(world.info(), *net, pins_solver());
+  TcSoftBody tc(world.info(), net, pins_solver(), {});
   const SceneWorld::Attachment a = world.attach(*plain), b = world.attach(tc);
   for (int step = 1; step <= 90; ++step) {  // 1.5 s: past the last keyframe
     tc.advance_blends();
@@ -96,7 +97,7 @@ TEST(MovingPins, AConstantVelocityCarriesThePinsInACollisionWorldToo) {
   scene.colliders.push_back(floor);
   SceneWorld world(WorldSettings{}, scene);
   const auto net = net_of(9, kAllCorners, 0);
-  const auto plain = make_plain_softbody(world.info(), *net, solver());
+  const auto plain = make_plain_softbody(world.info(), *net, pins_solver());
   const SceneWorld::Attachment a = world.attach(*plain);
   for (int step = 0; step < 60; ++step) world.step(kDt);
   const int corner = net->index(8, 8);
@@ -119,7 +120,7 @@ TEST(MovingPins, CoarseningAndRefiningAtAMovingPinPlaceItsNodeWhereThePinIsNow) 
   const auto net = net_of(17, kAllCorners, 0);
   TcSettings settings;
   settings.blend_steps = 2;
-  TcSoftBody tc(world.info(), net, solver(), settings);
+  TcSoftBody tc(world.info(), net, pins_solver(), settings);
   const SceneWorld::Attachment a = world.attach(tc);
   const auto run = [&](int steps) {
     for (int s = 0; s < steps; ++s) {
@@ -155,7 +156,7 @@ TEST(MovingPins, RandomOperationsUnderMovingPinsKeepEveryInvariant) {
   const auto net = net_of(17, kCornerMinMin | kCornerMaxMin, 0);
   TcSettings settings;
   settings.blend_steps = 3;
-  TcSoftBody tc(world.info(), net, solver(), settings);
+  TcSoftBody tc(world.info(), net, pins_solver(), settings);
   const SceneWorld::Attachment a = world.attach(tc);
   RandomPolicy policy(3);
   std::mt19937 rng(4);
@@ -181,7 +182,7 @@ TEST(KinematicCollider, AKeyframedBoxFollowsItsPath) {
   scene.colliders.push_back(box);
   SceneWorld world(WorldSettings{}, scene);
   const auto net = net_of(5, kAllCorners, 0);
-  const auto plain = make_plain_softbody(world.info(), *net, solver());
+  const auto plain = make_plain_softbody(world.info(), *net, pins_solver());
   const SceneWorld::Attachment a = world.attach(*plain);
   const auto centre = [&] { return world.dynamics()->getCollisionObjectArray()[0]->getWorldTransform().getOrigin(); };
   for (int s = 0; s < 30; ++s) world.step(kDt);  // 0.5 s

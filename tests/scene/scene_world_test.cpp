@@ -14,6 +14,7 @@
 #include <string>
 #include <tuple>
 
+#include "../softbody/test_bodies.h"
 #include "case/state_hash.h"
 #include "feedback/controller.h"
 #include "net/net.h"
@@ -24,9 +25,9 @@
 namespace tcsb {
 namespace {
 
-constexpr btScalar kDt = 1.0f / 60.0f;
+using testing::kDt;
 
-SolverSettings solver() {
+SolverSettings sheet_solver() {
   SolverSettings s;
   s.piterations = 8;
   return s;
@@ -68,10 +69,10 @@ TEST(SceneWorld, WithoutCollidersTheWorldStepsExactlyAsTheSoloStep) {
   const auto net = sheet(17, 2.0, 1.0, kAllCorners);
   SceneWorld world(WorldSettings{});
   EXPECT_EQ(world.info().m_broadphase, nullptr);  // no collision world at all
-  const auto stepped = make_plain_softbody(world.info(), *net, solver());
+  const auto stepped = make_plain_softbody(world.info(), *net, sheet_solver());
   const SceneWorld::Attachment attachment = world.attach(*stepped);
   SceneWorld other(WorldSettings{});
-  const auto solo = make_plain_softbody(other.info(), *net, solver());
+  const auto solo = make_plain_softbody(other.info(), *net, sheet_solver());
   for (int s = 0; s < 60; ++s) {
     world.step(kDt);
     step_soft_body(*solo, kDt);
@@ -108,7 +109,7 @@ TEST(SceneWorld, APlainSheetDrapesOverAStaticSphereInsteadOfFallingThrough) {
   scene.sdf_voxel = 0.05;
   SceneWorld world(WorldSettings{}, scene);
   const auto net = sheet(17, 2.0, 0.8);
-  const auto body = make_plain_softbody(world.info(), *net, solver());
+  const auto body = make_plain_softbody(world.info(), *net, sheet_solver());
   const SceneWorld::Attachment attachment = world.attach(*body);
   EXPECT_EQ(body->m_cfg.collisions, static_cast<int>(btSoftBody::fCollision::SDF_RS));
   for (int s = 0; s < 120; ++s) world.step(kDt);
@@ -127,7 +128,7 @@ TEST(SceneWorld, WithoutRigidContactTheSheetFallsThroughTheSphere) {
   scene.rigid_contact = false;  // the suite's "collisions": []
   SceneWorld world(WorldSettings{}, scene);
   const auto net = sheet(17, 2.0, 0.8);
-  const auto body = make_plain_softbody(world.info(), *net, solver());
+  const auto body = make_plain_softbody(world.info(), *net, sheet_solver());
   const SceneWorld::Attachment attachment = world.attach(*body);
   EXPECT_EQ(body->m_cfg.collisions, 0);
   for (int s = 0; s < 60; ++s) world.step(kDt);
@@ -148,7 +149,7 @@ TEST(SceneWorld, TheHangingNetCatchesADynamicBall) {
   NetSpec heavy = net->spec();
   heavy.mass = 4.0;
   const Net cloth(heavy);
-  const auto body = make_plain_softbody(world.info(), cloth, solver());
+  const auto body = make_plain_softbody(world.info(), cloth, sheet_solver());
   const SceneWorld::Attachment attachment = world.attach(*body);
   for (int s = 0; s < 180; ++s) world.step(kDt);
   // Free fall would have taken it 45 m down by now; the net holds it a little below its rest plane.
@@ -173,7 +174,7 @@ TEST(SceneWorld, AKinematicBoxFollowsItsPath) {
   scene.sdf_voxel = 0.05;
   SceneWorld world(WorldSettings{}, scene);
   const auto net = sheet(17, 2.0, 0.0, kAllCorners);
-  const auto body = make_plain_softbody(world.info(), *net, solver());
+  const auto body = make_plain_softbody(world.info(), *net, sheet_solver());
   const SceneWorld::Attachment attachment = world.attach(*body);
   for (int s = 0; s < 120; ++s) world.step(kDt);
   // After 2 s the box's centre is at y = 0.2 and its top at 0.4: it has lifted the middle of the sagging net above
@@ -188,7 +189,7 @@ TEST(SceneWorld, ReleasingAnAttachmentTakesTheBodyOutOfTheWorld) {
   scene.colliders.push_back(sphere(0.5, {0, 0, 0}));
   SceneWorld world(WorldSettings{}, scene);
   const auto net = sheet(9, 2.0, 0.8);
-  const auto body = make_plain_softbody(world.info(), *net, solver());
+  const auto body = make_plain_softbody(world.info(), *net, sheet_solver());
   SceneWorld::Attachment attachment = world.attach(*body);
   EXPECT_EQ(world.dynamics()->getSoftBodyArray().size(), 1);
   attachment.release();
@@ -231,7 +232,7 @@ TreeCutDrape drape_tree_cut_sheet(double contact_saliency, bool arrivals_collide
   const auto net = sheet(33, 2.0, 0.7);
   TcSettings settings;
   settings.arrivals_collide = arrivals_collide;
-  TcSoftBody body(world.info(), net, solver(), settings);
+  TcSoftBody body(world.info(), net, sheet_solver(), settings);
   const SceneWorld::Attachment attachment = world.attach(body);
   FeedbackSettings feedback;
   feedback.contact_saliency = contact_saliency;

@@ -13,7 +13,7 @@
 namespace tcsb {
 namespace {
 
-constexpr btScalar kDt = 1.0f / 60;
+using testing::kDt;
 
 /// A 33 x 33 body in the middle of its operations: blends in flight, so fading links and half masses exist.
 class MemberRule : public ::testing::Test {

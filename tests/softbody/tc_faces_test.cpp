@@ -16,7 +16,7 @@
 namespace tcsb {
 namespace {
 
-constexpr btScalar kDt = 1.0f / 60;
+using testing::kDt;
 
 SceneSettings windy(AeroModel model = AeroModel::kVTwoSided) {
   SceneSettings scene;

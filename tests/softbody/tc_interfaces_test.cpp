@@ -11,7 +11,7 @@
 namespace tcsb {
 namespace {
 
-constexpr btScalar kDt = 1.0f / 60;
+using testing::kDt;
 
 TcSettings hanging() {
   TcSettings s;

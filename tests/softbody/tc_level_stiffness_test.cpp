@@ -11,7 +11,7 @@
 namespace tcsb {
 namespace {
 
-constexpr btScalar kDt = 1.0f / 60;
+using testing::kDt;
 
 /// Node positions and velocities equal bit for bit.
 bool same_state(const btSoftBody& a, const btSoftBody& b) {

@@ -15,7 +15,7 @@
 namespace tcsb {
 namespace {
 
-constexpr btScalar kDt = 1.0f / 60;
+using testing::kDt;
 
 std::shared_ptr<const Net> net_pinned(int width, unsigned edges, std::vector<GridNode> nodes) {
   NetSpec spec;

@@ -17,7 +17,7 @@
 namespace tcsb {
 namespace {
 
-constexpr btScalar kDt = 1.0f / 60;
+using testing::kDt;
 
 /// Steps like the runner: blends advance at the step boundary, then operations begin, then Bullet steps.
 void step_with_random_ops(TcSoftBody& body, RandomPolicy& policy, int target, int ops) {

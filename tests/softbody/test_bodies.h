@@ -1,6 +1,8 @@
 // Shared fixtures for the soft-body tests: a net, a world, and bodies built from them.
 #pragma once
 
+#include <LinearMath/btScalar.h>
+
 #include <memory>
 
 #include "net/net.h"
@@ -8,6 +10,9 @@
 #include "softbody/solver_settings.h"
 
 namespace tcsb::testing {
+
+/// The step every soft-body test takes: Bullet's usual 60 Hz.
+inline constexpr btScalar kDt = 1.0f / 60;
 
 inline std::shared_ptr<const Net> square_net(int width, unsigned pinned = kAllCorners,
                                              RestPlacement rest = RestPlacement::kCentroid) {
