@@ -61,7 +61,8 @@ struct BodyError {
   double p95_px = 0, rms_pct = 0;
 };
 
-/// Steps `reconstruct` (after `step`) through the suite's measured steps against the reference.
+/// Runs a body through the suite's steps (`step(s)` advances it by one, `reconstruct` gives its surface) and measures
+/// it against the reference on the measured ones.
 template <class Step, class Reconstruct>
 BodyError measure(const Suite& suite, const Net& net, const ReferenceRun& reference, Step step,
                   Reconstruct reconstruct) {
@@ -80,8 +81,8 @@ BodyError measure(const Suite& suite, const Net& net, const ReferenceRun& refere
   return {0, series.finish().p95_px.mean, 100 * rms / suite.steps / net.extent()};
 }
 
-/// Where a block lies for the camera: 0 in view (a leaf in view on at least `share` of the measured steps), 1 near
-/// (a leaf's rest within `near_m` of such a leaf), 2 elsewhere.
+/// Where each grid node (leaf) lies for the camera: 0 in view (the reference shows it on at least `share` of the
+/// measured steps), 1 near (at rest within `near_m` of such a leaf), 2 elsewhere. A block takes its finest leaf's.
 std::vector<int> leaf_regions(const Net& net, const ReferenceRun& reference, double share, double near_m) {
   const LodTree& tree = net.lod();
   const std::size_t n = net.node_count();
@@ -116,7 +117,8 @@ BodyError fixed_cut(const Suite& suite, const std::shared_ptr<const Net>& net, c
         for (int gx = 0; gx < tree.level_width(level); ++gx) {
           const TreeId id = tree.at(level, gx, gy);
           int finest = 2;
-          for_each_leaf(tree, id, [&](TreeId leaf) { finest = std::min(finest, region[static_cast<std::size_t>(leaf)]); });
+          for_each_leaf(tree, id,
+                        [&](TreeId leaf) { finest = std::min(finest, region[static_cast<std::size_t>(leaf)]); });
           if (levels[finest] >= level && body.can_coarsen(id).ok) {
             body.begin_coarse(id);
             began = true;

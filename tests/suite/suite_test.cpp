@@ -662,20 +662,20 @@ TEST(ShippedSuites, ViewerSuitesWatchThroughACameraWithTheViewTermsOn) {
   EXPECT_FALSE(parse_suite(kSourceDir / "suites/ci.json").feedback.view);
 }
 
-TEST(ShippedSuites, TheCornerViewAt128IterationsChangesOnlyTheIterationsAndItsCalibration) {
-  // viewer-corner-128 asks viewer-corner's question with the links relaxed four times as often: a second suite, not
+TEST(ShippedSuites, TheCornerViewAt256IterationsChangesOnlyTheIterationsAndItsCalibration) {
+  // viewer-corner-256 asks viewer-corner's question with the links relaxed eight times as often: a second suite, not
   // an edited copy, so any other difference would make the two answers incomparable.
   json corner = json::parse(read_bytes(kSourceDir / "suites/viewer-corner.json"));
-  json at128 = json::parse(read_bytes(kSourceDir / "suites/viewer-corner-128.json"));
-  EXPECT_EQ(at128["solver"]["piterations"], 128);
-  EXPECT_EQ(at128["fidelity"]["calibration"], "calibrations/viewer-net-128.calibration.json");
-  for (json* j : {&corner, &at128}) {
+  json at256 = json::parse(read_bytes(kSourceDir / "suites/viewer-corner-256.json"));
+  EXPECT_EQ(at256["solver"]["piterations"], 256);
+  EXPECT_EQ(at256["fidelity"]["calibration"], "calibrations/viewer-net-256.calibration.json");
+  for (json* j : {&corner, &at256}) {
     for (const char* key : {"name", "description"}) j->erase(key);
     (*j)["solver"].erase("piterations");
     (*j)["fidelity"].erase("calibration");
   }
-  EXPECT_EQ(corner, at128) << "viewer-corner-128 differs from viewer-corner beyond the iterations";
-  const Suite s = parse_suite(kSourceDir / "suites/viewer-corner-128.json");
+  EXPECT_EQ(corner, at256) << "viewer-corner-256 differs from viewer-corner beyond the iterations";
+  const Suite s = parse_suite(kSourceDir / "suites/viewer-corner-256.json");
   EXPECT_TRUE(s.calibration) << "calibrated at its own iterations";
 }
 
