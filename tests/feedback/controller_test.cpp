@@ -12,10 +12,12 @@
 #include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 
+#include "../softbody/test_bodies.h"
+
 namespace tcsb {
 namespace {
 
-constexpr btScalar kDt = 1.0f / 60;
+using testing::kDt;
 
 std::shared_ptr<const Net> net_of(int width) {
   NetSpec spec;
