@@ -14,6 +14,14 @@ Net::Net(const NetSpec& spec, RestPlacement rest) : spec_(spec) {
   const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
   rest_.resize(n);
   mass_.assign(n, spec.node_mass());
+  if (spec.mass_mode == MassMode::kDensity) {
+    // Lumped by area: a quarter of each cell the node is a corner of (1 inside, 1/2 on a border, 1/4 at a corner).
+    const double cell = spec.mass * (spec.size_x / (w - 1)) * (spec.size_z / (h - 1));
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        mass_[static_cast<std::size_t>(index(x, y))] =
+            cell * (x == 0 || x == w - 1 ? 0.5 : 1.0) * (y == 0 || y == h - 1 ? 0.5 : 1.0);
+  }
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       rest_[static_cast<std::size_t>(index(x, y))] =

@@ -38,8 +38,10 @@ struct GridNode {
 /// spaced sub-grid of the leaves. Both rest a block holding one pinned leaf on that leaf.
 enum class RestPlacement : std::uint8_t { kCentroid, kVertex };
 
-/// How the net's mass is given: the whole net's, or each node's.
-enum class MassMode { kTotal, kPerNode };
+/// How the net's mass is given: the whole net's, each node's (both spread evenly over the nodes), or an areal
+/// density lumped by area (each node carries the density times its share of the cells around it: a quarter of each,
+/// so border nodes carry half and corners a quarter of an inner node's; the compliant material's masses).
+enum class MassMode { kTotal, kPerNode, kDensity };
 
 /// One regular W x H cloth net lying flat in the x-z plane at height `elevation`, gravity along -y.
 struct NetSpec {
@@ -50,7 +52,7 @@ struct NetSpec {
   double size_z = 8.0;       ///< physical extent along z, metres
   double elevation = 8.0;    ///< y of the rest plane, metres
   MassMode mass_mode = MassMode::kTotal;
-  double mass = 1.0;                      ///< total mass (kTotal) or per-node mass (kPerNode), kg
+  double mass = 1.0;                      ///< total mass (kTotal) or per-node mass (kPerNode), kg; kg/m^2 (kDensity)
   unsigned pinned_corners = kAllCorners;  ///< PinnedCorner bits
   /// PinnedEdge bits. Pins are the union of the corners, the edges and the listed nodes (net/net_pins.h): corners
   /// alone are what every suite had before edges and lists existed, so those nets are built exactly as before.
@@ -63,8 +65,19 @@ struct NetSpec {
 
   /// Number of grid nodes (leaves of the LOD tree).
   long long node_count() const { return static_cast<long long>(width) * height; }
-  /// Mass of one grid node, kg.
-  double node_mass() const { return mass_mode == MassMode::kPerNode ? mass : mass / static_cast<double>(node_count()); }
+  /// Total mass of the net, kg.
+  double total_mass() const {
+    switch (mass_mode) {
+      case MassMode::kTotal: return mass;
+      case MassMode::kPerNode: return mass * static_cast<double>(node_count());
+      case MassMode::kDensity: return mass * size_x * size_z;
+    }
+    return mass;
+  }
+  /// Mass of one grid node, kg: the mean over the nodes under kDensity (the nodes' masses differ there: Net).
+  double node_mass() const {
+    return mass_mode == MassMode::kPerNode ? mass : total_mass() / static_cast<double>(node_count());
+  }
 };
 
 }  // namespace tcsb

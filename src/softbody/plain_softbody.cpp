@@ -5,15 +5,21 @@
 #include <stdexcept>
 
 #include "softbody/bullet_setup.h"
+#include "softbody/compliant_solver.h"
 
 namespace tcsb {
 
 std::unique_ptr<btSoftBody> make_plain_softbody(btSoftBodyWorldInfo& world, const Net& net,
                                                 const SolverSettings& settings) {
-  auto body = std::make_unique<btSoftBody>(&world, 0, nullptr, nullptr);
+  std::unique_ptr<btSoftBody> body;
+  if (settings.compliant_model())
+    body = std::make_unique<CompliantSoftBody>(world, settings);
+  else
+    body = std::make_unique<btSoftBody>(&world, 0, nullptr, nullptr);
   init_net_nodes(*body, net);
   apply_solver_settings(*body, settings);
   append_net_links(*body, net);
+  if (settings.compliant_model()) write_compliant_grid_constants(*body, net, settings);
   return body;
 }
 

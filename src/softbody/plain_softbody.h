@@ -12,7 +12,8 @@ namespace tcsb {
 
 /// Stock btSoftBody whose nodes and links are exactly the net's finest level, in the net's canonical link order
 /// (row-major; for each node its +x link then its +z link — CreatePatch's order). No faces: the paper's model needs
-/// only nodes and links, and TC-SB has none either.
+/// only nodes and links, and TC-SB has none either. Under the compliant material (SolverSettings::model) a
+/// CompliantSoftBody with the membrane rule's constants, stepped in small steps; else stock Bullet.
 std::unique_ptr<btSoftBody> make_plain_softbody(btSoftBodyWorldInfo& world, const Net& net,
                                                 const SolverSettings& settings);
 

@@ -1,6 +1,8 @@
 // SolverSettings: the btSoftBody configuration a suite states, applied identically to every body of a run.
 #pragma once
 
+#include "../softbody/material.h"
+
 namespace tcsb {
 
 /// Bullet soft-body solver settings (btSoftBody::Config and the default material). Bullet's own defaults are
@@ -12,6 +14,16 @@ struct SolverSettings {
   int diterations = 0;            ///< drift solver iterations
   double damping = 0.0;           ///< kDP, velocity damping in [0, 1)
   double linear_stiffness = 1.0;  ///< kLST of the material, in (0, 1]
+  /// The material model (material.h): kBullet uses the fields above; kCompliant solves every body in `compliant`'s
+  /// small steps instead (the fields above then still make the stock Bullet baseline, Method::kStock).
+  MaterialModel model = MaterialModel::kBullet;
+  CompliantMaterial compliant;
+  /// The step the compliant links' compliance is baked for (alpha / h^2 with h = step_dt / substeps), seconds: the
+  /// suite's dt. A compliant body stepped with another dt is as stiff as its constants say for this one.
+  double step_dt = 1.0 / 60.0;
+  bool compliant_model() const { return model == MaterialModel::kCompliant; }
+  /// The small step h of the compliant model, seconds.
+  double substep_dt() const { return step_dt / compliant.substeps; }
 };
 
 /// World parameters shared by every body of a run.

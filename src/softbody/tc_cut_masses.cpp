@@ -124,6 +124,8 @@ void TcSoftBody::settle_ring(TreeId block) {
   if (!cut_masses() && !vertex_edges()) return;  // (the paper's tree and masses: nothing around the block changes)
   const std::vector<TreeId>& nodes = ring_nodes(block);
   if (cut_masses()) settle_cut_masses(nodes);
+  if (solver_.compliant_model())  // the cells beside the ring's links changed, and with them their compliance
+    for (const TreeId id : nodes) refresh_incident_constants(id);
   if (!vertex_edges()) return;
   for (const TreeId id : nodes)
     for (const std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {

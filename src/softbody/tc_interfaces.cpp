@@ -9,6 +9,7 @@
 // (InterfaceKind in tc_softbody.h; make_vertex_interface).
 #include <BulletSoftBody/btSoftBodyInternals.h>
 
+#include "softbody/compliant_solver.h"
 #include "softbody/fan_rule.h"
 #include "softbody/tc_softbody.h"
 
@@ -134,6 +135,7 @@ void TcSoftBody::prepare_interfaces() {
     const InterfaceConstraint& c = interfaces_[i];
     PreparedInterface& p = prepared_interfaces_[i];
     btScalar rest = c.rest;
+    TreeId corner = kNoTreeNode;  // vertex kinds: the node resting at the corner the constraint reaches, if any
     if (c.kind == InterfaceKind::kMidpoint) {
       p.coarse = &m_nodes[record(c.coarse).bullet];
       p.fine[0] = &m_nodes[record(c.fine[0]).bullet];
@@ -155,6 +157,8 @@ void TcSoftBody::prepare_interfaces() {
         }
         at_corner = c.coarse;
         rest = (record(hanging).rest_position() - record(c.coarse).rest_position()).length();
+      } else {
+        corner = at_corner;
       }
       p.coarse = &m_nodes[record(hanging).bullet];
       p.fine[0] = &m_nodes[record(first).bullet];
@@ -166,30 +170,61 @@ void TcSoftBody::prepare_interfaces() {
     const btScalar w = p.fine[0] == p.fine[1] ? p.coarse->m_im + p.fine[0]->m_im
                                               : p.coarse->m_im + btScalar(0.25) * (p.fine[0]->m_im + p.fine[1]->m_im);
     const double alpha = blend_alpha(link_meta_[static_cast<std::size_t>(c.links[0])]);
-    p.c0 = w > 0 ? static_cast<btScalar>(w / c.stiffness / alpha) : btScalar(0);
+    if (solver_.compliant_model())  // (the far kind, an interpolated point, without compliance: w alone)
+      p.c0 = w > 0 ? compliant_constant(w, interface_link_stiffness(c, corner), alpha) : btScalar(0);
+    else
+      p.c0 = w > 0 ? static_cast<btScalar>(w / c.stiffness / alpha) : btScalar(0);
     p.c1 = rest * rest;
   }
 }
 
+namespace {
+
+double squared(const Eigen::Vector3d& v) { return v.squaredNorm(); }
+btScalar squared(const btVector3& v) { return v.length2(); }
+
+/// Bullet's link projection (btSoftBody::PSolve_Links: the square-root-free correction k) with the fine end at the
+/// midpoint of f0 and f1, the correction shared half and half; in Bullet's floats or in the compliant material's
+/// doubles (compliant_solver.h).
+template <class Vector, class Scalar>
+void project_interface(Vector& c, Vector& f0, Vector& f1, Scalar im_c, Scalar im_f0, Scalar im_f1, Scalar c0,
+                       Scalar c1) {
+  const Vector del = (f0 + f1) * Scalar(0.5) - c;
+  const Scalar len = squared(del);
+  if (c1 + len <= SIMD_EPSILON) return;
+  const Scalar k = (c1 - len) / (c0 * (c1 + len));
+  c -= del * (k * im_c);
+  f0 += del * (k * Scalar(0.5) * im_f0);
+  f1 += del * (k * Scalar(0.5) * im_f1);
+}
+
+}  // namespace
+
 void TcSoftBody::project_interfaces() {
-  // Bullet's link projection (btSoftBody::PSolve_Links: the square-root-free correction k) with the fine end at
-  // the midpoint, the correction shared half and half.
   for (const PreparedInterface& p : prepared_interfaces_) {
     if (p.c0 <= 0) continue;
-    Node& c = *p.coarse;
-    Node& f0 = *p.fine[0];
-    Node& f1 = *p.fine[1];
-    const btVector3 del = (f0.m_x + f1.m_x) * btScalar(0.5) - c.m_x;
-    const btScalar len = del.length2();
-    if (p.c1 + len <= SIMD_EPSILON) continue;
-    const btScalar k = (p.c1 - len) / (p.c0 * (p.c1 + len));
-    c.m_x -= del * (k * c.m_im);
-    f0.m_x += del * (k * btScalar(0.5) * f0.m_im);
-    f1.m_x += del * (k * btScalar(0.5) * f1.m_im);
+    project_interface(p.coarse->m_x, p.fine[0]->m_x, p.fine[1]->m_x, p.coarse->m_im, p.fine[0]->m_im, p.fine[1]->m_im,
+                      p.c0, p.c1);
+  }
+}
+
+void TcSoftBody::project_interfaces(SubstepPositions& x) {
+  const Node* base = &m_nodes[0];
+  for (const PreparedInterface& p : prepared_interfaces_) {
+    if (p.c0 <= 0) continue;
+    const auto c = static_cast<std::size_t>(p.coarse - base), f0 = static_cast<std::size_t>(p.fine[0] - base),
+               f1 = static_cast<std::size_t>(p.fine[1] - base);
+    project_interface(x.x[c], x.x[f0], x.x[f1], x.inverse_mass[c], x.inverse_mass[f0], x.inverse_mass[f1],
+                      static_cast<double>(p.c0), static_cast<double>(p.c1));
   }
 }
 
 void TcSoftBody::solve_constraints() {
+  if (solver_.compliant_model()) {  // the compliant material's small steps, the interfaces in every one of them
+    prepare_interfaces();
+    solve_in_substeps(*this, solver_, substep_positions_, [this](SubstepPositions& x) { project_interfaces(x); });
+    return;
+  }
   if (interfaces_.empty()) {
     btSoftBody::solveConstraints();
     return;
@@ -204,14 +239,7 @@ void TcSoftBody::solve_constraints() {
     l.m_c3 = l.m_n[1]->m_q - l.m_n[0]->m_q;
     l.m_c2 = l.m_c0 > 0 ? 1 / (l.m_c3.length2() * l.m_c0) : btScalar(0);
   }
-  for (int i = 0; i < m_anchors.size(); ++i) {
-    Anchor& a = m_anchors[i];
-    const btVector3 ra = a.m_body->getWorldTransform().getBasis() * a.m_local;
-    a.m_c0 = ImpulseMatrix(m_sst.sdt, a.m_node->m_im, a.m_body->getInvMass(), a.m_body->getInvInertiaTensorWorld(), ra);
-    a.m_c1 = ra;
-    a.m_c2 = m_sst.sdt * a.m_node->m_im;
-    a.m_body->activate();
-  }
+  prepare_anchors(*this);
   prepare_interfaces();
   if (m_cfg.viterations > 0) {
     for (int iteration = 0; iteration < m_cfg.viterations; ++iteration)

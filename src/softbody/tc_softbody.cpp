@@ -8,6 +8,7 @@
 #include "softbody/bullet_setup.h"
 #include "softbody/dbvt_local.h"
 #include "softbody/pin_motion.h"
+#include "softbody/tc_softbody_solver.h"
 #include "softbody/vector_conversion.h"
 
 namespace tcsb {
@@ -27,7 +28,7 @@ void touch_reserved(Array& array, const T& fill) {
 
 TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> net, const SolverSettings& solver,
                        const TcSettings& settings)
-    : btSoftBody(&world, 0, nullptr, nullptr), net_(std::move(net)), settings_(settings) {
+    : btSoftBody(&world, 0, nullptr, nullptr), net_(std::move(net)), solver_(solver), settings_(settings) {
   if (settings_.blend_steps < 1) throw std::invalid_argument("TcSoftBody: blend_steps must be >= 1");
   if (settings_.start_level < 0) throw std::invalid_argument("TcSoftBody: start_level must be >= 0");
   for (const NetLink& l : net_->links())
@@ -35,6 +36,17 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
       throw std::invalid_argument("TcSoftBody: only structural links are supported (no shear or bend links)");
   const LodTree& lod = net_->lod();
   const std::size_t tree_size = lod.size();
+  if (solver_.compliant_model()) {
+    // One material at every level: each link's compliance from the cells around it (tc_compliance.cpp), which the
+    // corner shares of masses that follow the cut describe, and no per-level stiffness to mend it.
+    if (settings_.masses != Masses::kCut)
+      throw std::invalid_argument("TcSoftBody: the compliant material needs masses that follow the cut (Masses::kCut)");
+    if (!settings_.level_stiffness.empty())
+      throw std::invalid_argument("TcSoftBody: the compliant material takes no per-level stiffness (no calibration)");
+    if (!(solver_.compliant.substeps >= 1 && solver_.compliant.stretch_stiffness > 0 && solver_.step_dt > 0))
+      throw std::invalid_argument(
+          "TcSoftBody: the compliant material needs substeps >= 1, a positive stiffness and dt");
+  }
   if (settings_.masses == Masses::kCut) build_corner_shares();
   const std::size_t leaves = lod.leaf_count();
 
@@ -89,6 +101,8 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
     incidence_[static_cast<std::size_t>(l.b)].add(index);
   }
   committed_count_ = static_cast<int>(leaves);
+  if (solver_.compliant_model())
+    for (int li = 0; li < m_links.size(); ++li) write_link_constant(li);
 
   // Reserved is not yet mapped: the kernel maps a page on its first write. Write the room once now rather than
   // inside operations (a minor fault costs microseconds, more than an operation).
@@ -106,12 +120,7 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
   }
 }
 
-void TcSoftBody::simulate_step(btScalar dt) {
-  refresh_faces();
-  predictMotion(dt);
-  solve_constraints();
-  integrateMotion();
-}
+void TcSoftBody::simulate_step(btScalar dt) { step_body(*this, dt); }
 
 void TcSoftBody::move_pins(const btVector3& offset, btScalar dt) {
   for (int i = 0; i < m_nodes.size(); ++i) {
@@ -289,6 +298,11 @@ void TcSoftBody::write_link_constant(int link) {
   // Calibrated, each link's own material (its level's stiffness): a fading link fades from its level's constant.
   if (meta.interface >= 0 && !kept_handle(link)) {  // a handle of an interface constraint: Bullet's solver skips it
     l.m_c0 = 0;
+    return;
+  }
+  if (solver_.compliant_model()) {
+    l.m_c0 =
+        compliant_constant(record(meta.a).inv_mass + record(meta.b).inv_mass, link_stiffness(link), blend_alpha(meta));
     return;
   }
   const btScalar stiffness = calibrated() ? l.m_material->m_kLST : m_materials[0]->m_kLST;

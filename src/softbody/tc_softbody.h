@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "../net/net.h"
+#include "../softbody/compliant_solver.h"
 #include "../softbody/cut_listener.h"
 #include "../softbody/dbvt_local.h"
 #include "../softbody/incidence_list.h"
@@ -136,6 +137,8 @@ class TcSoftBody : public btSoftBody {
   const Net& net() const { return *net_; }
   const LodTree& tree() const { return net_->lod(); }
   const TcSettings& settings() const { return settings_; }
+  /// The solver settings and material the body was built with (material.h).
+  const SolverSettings& solver() const { return solver_; }
   CutState state(TreeId id) const { return state_[static_cast<std::size_t>(id)]; }
   /// In the committed (target) cut: active or arriving.
   bool committed(TreeId id) const { return state(id) == CutState::kActive || state(id) == CutState::kArriving; }
@@ -362,6 +365,8 @@ class TcSoftBody : public btSoftBody {
   /// Projects every interface constraint once (one position iteration's share), with the constants
   /// prepare_interfaces() computed for this step.
   void project_interfaces();
+  /// The same on the compliant material's double positions (one small step's share).
+  void project_interfaces(SubstepPositions& x);
   /// Per step: each interface constraint's nodes and constant (stiffness, blend weight and inverse masses as they
   /// are now).
   void prepare_interfaces();
@@ -404,8 +409,23 @@ class TcSoftBody : public btSoftBody {
   const NodeRecord& record(TreeId id) const { return record_[static_cast<std::size_t>(id)]; }
   /// Bullet's inverse mass for carrying `mass`: 0 when the node is pinned.
   btScalar inverse_mass(TreeId id, double mass) const;
-  /// Writes a link's constant from its endpoints' inverse masses and its blend weight (counts nothing).
+  /// Writes a link's constant from its endpoints' inverse masses and its blend weight (counts nothing); under the
+  /// compliant material with the link's compliance too (link_stiffness()).
   void write_link_constant(int link);
+  // ---- the compliant material (tc_compliance.cpp) ------------------------------------------------------------
+  /// The membrane rule's stiffness of a straight segment between leaves (xa, za) and (xb, zb) along one axis, from
+  /// the cells of the committed cut (or of the old cut) on either side of it, N/m (material.h). O(levels): a balanced
+  /// cut puts at most two cells beside a segment on each side.
+  double segment_stiffness(int xa, int za, int xb, int zb, bool committed) const;
+  /// A link's stiffness under the compliant material: segment_stiffness() between its endpoints' rest leaves, in the
+  /// cut it belongs to (the committed one, or the old one for a link leaving with it); a link not along an axis (an
+  /// operation's tether) carries the stiffness of a link inside a grid. O(levels).
+  double link_stiffness(int link) const;
+  /// The stiffness of the segment an interface constraint stands for (InterfaceKind), N/m; infinity for the
+  /// far kind, which holds its hanging node on the coarse edge as an interpolated point. O(levels).
+  double interface_link_stiffness(const InterfaceConstraint& c, TreeId corner) const;
+  /// The compliant constant of a constraint with generalised inverse mass `w`, stiffness `k` and blend `alpha`.
+  btScalar compliant_constant(btScalar w, double k, double alpha) const;
   /// write_link_constant, counted as operation work.
   void refresh_link_constant(int link);
   void refresh_incident_constants(TreeId id);
@@ -450,6 +470,7 @@ class TcSoftBody : public btSoftBody {
                         const Eigen::Matrix<double, 3, 2>& deformation) const;
 
   std::shared_ptr<const Net> net_;
+  SolverSettings solver_;
   TcSettings settings_;
   double total_mass_ = 0;
   btVector3 pin_offset_{0, 0, 0};  // move_pins()
@@ -468,6 +489,7 @@ class TcSoftBody : public btSoftBody {
     btScalar c0 = 0, c1 = 0;
   };
   std::vector<PreparedInterface> prepared_interfaces_;  // per step, reused
+  SubstepPositions substep_positions_;  // the compliant material's small steps (compliant_solver.h), reused
   /// Per LOD level, the material its links use (level 0: the solver's); empty when uncalibrated. Owned by Bullet
   /// (appendMaterial; freed with the body), made once at construction: materials cannot be freed before the body.
   std::vector<Material*> level_materials_;

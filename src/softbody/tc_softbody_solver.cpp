@@ -1,5 +1,6 @@
 #include "softbody/tc_softbody_solver.h"
 
+#include "softbody/compliant_solver.h"
 #include "softbody/tc_softbody.h"
 
 namespace tcsb {
@@ -8,16 +9,23 @@ void prepare_body_step(btSoftBody& body) {
   if (auto* tc = dynamic_cast<TcSoftBody*>(&body)) tc->refresh_faces();
 }
 
+void predict_body_motion(btSoftBody& body, btScalar dt) {
+  if (compliant_settings(body)) keep_start_velocities(body);
+  body.predictMotion(dt);
+}
+
 void solve_body_constraints(btSoftBody& body) {
   if (auto* tc = dynamic_cast<TcSoftBody*>(&body))
     tc->solve_constraints();
+  else if (auto* compliant = dynamic_cast<CompliantSoftBody*>(&body))
+    compliant->solve_constraints();
   else
     body.solveConstraints();
 }
 
 void step_body(btSoftBody& body, btScalar dt) {
   prepare_body_step(body);
-  body.predictMotion(dt);
+  predict_body_motion(body, dt);
   solve_body_constraints(body);
   body.integrateMotion();
 }
@@ -28,7 +36,7 @@ void TcSoftBodySolver::predictMotion(btScalar solverdt) {
     btSoftBody* body = m_softBodySet[i];
     if (!body->isActive()) continue;
     prepare_body_step(*body);
-    body->predictMotion(solverdt);
+    predict_body_motion(*body, solverdt);
   }
 }
 

@@ -14,12 +14,16 @@ namespace tcsb {
 /// (TcSoftBody::refresh_faces); nothing for any other body.
 void prepare_body_step(btSoftBody& body);
 
-/// A body's constraint solve: TcSoftBody::solve_constraints() for a TC-SB body, btSoftBody::solveConstraints()
-/// for any other (a plain body takes Bullet's code path untouched).
+/// A body's prediction of its step: btSoftBody::predictMotion, after keep_start_velocities() for a body of the
+/// compliant material (compliant_solver.h).
+void predict_body_motion(btSoftBody& body, btScalar dt);
+
+/// A body's constraint solve: TcSoftBody::solve_constraints() for a TC-SB body, the small steps for a
+/// CompliantSoftBody, btSoftBody::solveConstraints() for any other (a plain body takes Bullet's code path untouched).
 void solve_body_constraints(btSoftBody& body);
 
-/// One solo step of a lone body with collisions off, as btSoftRigidDynamicsWorld would take it: predictMotion, the
-/// constraint solve above, integrateMotion (after prepare_body_step).
+/// One solo step of a lone body with collisions off, as btSoftRigidDynamicsWorld would take it: the prediction and
+/// the constraint solve above, integrateMotion (after prepare_body_step).
 void step_body(btSoftBody& body, btScalar dt);
 
 /// The solver a btSoftRigidDynamicsWorld with TC-SB bodies is built with (`btSoftRigidDynamicsWorld(dispatcher,

@@ -35,6 +35,11 @@ Validation TcSoftBody::validate() const {
       dynamic_cast<const TcSoftBodySolver*>(getSoftBodySolver()) == nullptr)
     fail("hanging interfaces in a world whose soft-body solver is not a tcsb::TcSoftBodySolver: build the world with "
          "one (tc_softbody_solver.h)");
+  // Bullet's default solver would take one step of Bullet's iterations with the compliant constants: another cloth.
+  if (solver_.compliant_model() && getSoftBodySolver() != nullptr &&
+      dynamic_cast<const TcSoftBodySolver*>(getSoftBodySolver()) == nullptr)
+    fail("the compliant material in a world whose soft-body solver is not a tcsb::TcSoftBodySolver: build the world "
+         "with one (tc_softbody_solver.h)");
   if (m_nodes.capacity() < static_cast<int>(tree_size)) fail("node capacity below the tree size");
 
   // Nodes: mapping both ways, DBVT leaves, masses, pins, finiteness.
@@ -115,8 +120,13 @@ Validation TcSoftBody::validate() const {
       if (l.m_c0 != 0) fail(name + ": a handle of an interface constraint, but Bullet's link solver would solve it");
       continue;
     }
-    btScalar c0 = (l.m_n[0]->m_im + l.m_n[1]->m_im) / l.m_material->m_kLST;
-    if (blended) c0 = static_cast<btScalar>(c0 / blend_alpha(meta));
+    btScalar c0 = 0;
+    if (solver_.compliant_model()) {
+      c0 = compliant_constant(l.m_n[0]->m_im + l.m_n[1]->m_im, link_stiffness(li), blended ? blend_alpha(meta) : 1.0);
+    } else {
+      c0 = (l.m_n[0]->m_im + l.m_n[1]->m_im) / l.m_material->m_kLST;
+      if (blended) c0 = static_cast<btScalar>(c0 / blend_alpha(meta));
+    }
     if (std::abs(l.m_c0 - c0) > 1e-5f * std::abs(c0)) fail(name + ": m_c0 does not match masses and blend");
   }
   validate_interfaces(fail);
