@@ -76,6 +76,11 @@ int calibrate_command(const CalibrateArgs& args) {
     s.fidelity.calibration_path.clear();  // not read: it is what this command makes (and may be stale or missing)
   });
   refuse_axes(suite, "calibrate");
+  // The compliant material is one material at every level by construction: nothing to fit, and a fit would make it
+  // two.
+  if (suite.solver.compliant_model())
+    throw InputError(suite_file.string(), "material.model",
+                     "\"compliant\" suites are not calibrated: the material is what the suite says at every level");
   // A calibration without level fits is refused where it is used: do not fit and write one.
   if (calibration_levels_needed(suite) == 0)
     throw InputError(suite_file.string(), "nets",

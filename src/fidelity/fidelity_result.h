@@ -81,6 +81,22 @@ struct InterpolationFloor {
   MetricSummary rms_pct;     ///< RMS of the reference's surface resampled through that grid, per measured step
 };
 
+/// One doubling tried: the full-resolution body at `substeps` against itself at twice as many, and against itself
+/// started perturbed (the noise floor, fidelity_floors.h), mean over the measured steps of the RMS, % of the extent.
+struct SubstepDoubling {
+  int substeps = 0;
+  double change_rms_pct = 0;  ///< `substeps` against 2 x `substeps`
+  double noise_rms_pct = 0;   ///< `substeps` against itself perturbed
+  bool diverged = false;      ///< one of the three bodies diverged: the doubling says nothing
+};
+
+/// How the reference's small steps were chosen.
+struct ReferenceSubsteps {
+  int substeps = 0;                        ///< what the reference steps with
+  bool converged = false;                  ///< doubling it moved the surface less than the noise floor
+  std::vector<SubstepDoubling> doublings;  ///< every doubling tried, in order
+};
+
 /// What no subject on a net can be expected to beat (fidelity/fidelity_floors.h), in % of the net's extent, per
 /// measured step; count 0 where the reference diverged first.
 struct FidelityFloors {
@@ -89,6 +105,8 @@ struct FidelityFloors {
   MetricSummary noise_rms_pct;  ///< RMS of the reference started perturbed (kNoiseFloorPerturbation) against itself
   std::optional<ScreenMetrics> noise_screen;      ///< the same perturbed reference's screen error, with a camera
   std::vector<InterpolationFloor> interpolation;  ///< one per distinct budget of the plan, ascending
+  /// Under the compliant material: how the converged reference's small steps were found (converged_reference.h).
+  std::optional<ReferenceSubsteps> reference;
 };
 
 /// The whole fidelity pass of a run.

@@ -12,6 +12,7 @@
 #include "case/step_clock.h"
 #include "feedback/cut_snapshot.h"
 #include "feedback/saliency.h"
+#include "fidelity/converged_reference.h"
 #include "fidelity/fidelity_floors.h"
 #include "fidelity/fidelity_subject.h"
 #include "fidelity/reconstruction.h"
@@ -61,10 +62,10 @@ struct ReferenceBlock {
 /// The reference: the plain body at full resolution, its timed steps and its recorded frames.
 class Reference {
  public:
-  Reference(const Suite& suite, const std::shared_ptr<const Net>& net)
+  /// `solver`: the suite's, or under the compliant material the converged reference's small steps.
+  Reference(const Suite& suite, const std::shared_ptr<const Net>& net, const SolverSettings& solver)
       : suite_(suite), net_(net), world_(suite.world, suite.scene),
-        body_(make_plain_softbody(world_.info(), *net, suite.solver)), attachment_(world_.attach(*body_)),
-        finest_(*net) {
+        body_(make_plain_softbody(world_.info(), *net, solver)), attachment_(world_.attach(*body_)), finest_(*net) {
     copy_positions(*body_, x_);
     copy_velocities(*body_, v_);
     initial_energy = mechanical_energy(net->masses(), x_, v_, suite.world.gravity);
@@ -248,10 +249,11 @@ constexpr std::uint64_t kNoiseFloorSeed = 0x6e6f697365ULL;
 /// reference's frames of the measured steps by the subjects' metric.
 class FloorTrack {
  public:
+  /// `solver`: the reference's.
   FloorTrack(const Suite& suite, std::size_t net_index, const std::shared_ptr<const Net>& net,
-             const std::vector<FidelitySubjectSpec>& plan)
+             const std::vector<FidelitySubjectSpec>& plan, const SolverSettings& solver)
       : suite_(suite), net_(net), world_(suite.world, suite.scene),
-        body_(make_plain_softbody(world_.info(), *net, suite.solver)), attachment_(world_.attach(*body_)) {
+        body_(make_plain_softbody(world_.info(), *net, solver)), attachment_(world_.attach(*body_)) {
     perturb_positions(*body_, kNoiseFloorPerturbation * net->extent(), kNoiseFloorSeed + net_index);
     result.net = net_index;
     result.net_name = net->spec().name;
@@ -325,8 +327,14 @@ class FloorTrack {
 /// The pass on one net: the reference and every subject, interleaved in blocks.
 void run_net(const Suite& suite, std::size_t net_index, const std::shared_ptr<const Net>& net,
              const std::vector<FidelitySubjectSpec>& plan, FidelityResult& out) {
-  Reference reference(suite, net);
-  FloorTrack floors(suite, net_index, net, plan);
+  // Bullet's model: the suite's own full-resolution body. The compliant material: the same material in small steps
+  // doubled until they no longer change the cloth (converged_reference.h).
+  std::optional<ReferenceSubsteps> substeps;
+  if (suite.solver.compliant_model()) substeps = find_reference_substeps(suite, net, net_index);
+  const SolverSettings solver = substeps ? with_substeps(suite.solver, substeps->substeps) : suite.solver;
+  Reference reference(suite, net, solver);
+  FloorTrack floors(suite, net_index, net, plan, solver);
+  floors.result.reference = substeps;
   std::vector<std::unique_ptr<Track>> tracks;
   for (const FidelitySubjectSpec& spec : plan) {
     // fidelity_plan() lists TC-SB at every suite target before the ablations, so a switch finds its pace here and

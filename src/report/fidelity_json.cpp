@@ -90,6 +90,15 @@ ojson floors_json(const FidelityFloors& f) {
                {"noise_floor_pct", json_number(summary_mean(f.noise_rms_pct))},
                {"interpolation_floor_pct", std::move(interpolation)}};
   if (f.noise_screen) out["noise_floor_screen"] = screen_json(*f.noise_screen);
+  if (const std::optional<ReferenceSubsteps>& r = f.reference) {
+    ojson doublings = ojson::array();
+    for (const SubstepDoubling& d : r->doublings)
+      doublings.push_back({{"substeps", d.substeps},
+                           {"change_rms_pct", d.diverged ? ojson(nullptr) : json_number(d.change_rms_pct)},
+                           {"noise_rms_pct", d.diverged ? ojson(nullptr) : json_number(d.noise_rms_pct)},
+                           {"diverged", d.diverged}});
+    out["reference"] = {{"substeps", r->substeps}, {"converged", r->converged}, {"doublings", std::move(doublings)}};
+  }
   return out;
 }
 

@@ -104,6 +104,15 @@ ojson suite_json(const Suite& s) {
     out["feedback"]["view_detail_px"] = json_number(f.view_detail_px);
     out["feedback"]["view_static_share"] = json_number(f.view_static_share);
   }
+  // Only under the compliant material, so a result of Bullet's model reads as it always did.
+  if (s.solver.compliant_model()) {
+    const CompliantMaterial& m = s.solver.compliant;
+    out["material"] = {{"model", "compliant"},
+                       {"stretch_stiffness", json_number(m.stretch_stiffness)},
+                       {"density", json_number(m.density)},
+                       {"damping", json_number(m.damping)},
+                       {"substeps", m.substeps}};
+  }
   // Only in a scene with colliders, a camera, wind or moving pins, like the penetrations of its repetitions.
   if (s.scene.has_colliders() || s.scene.camera || s.scene.wind || s.scene.pin_path.moves()) {
     ojson colliders = ojson::array();

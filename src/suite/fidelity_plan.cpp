@@ -20,6 +20,7 @@ const char* fidelity_method_name(FidelityMethod method) {
     case FidelityMethod::kTcsbCalibratedFans: return "tcsb_calibrated_fans";
     case FidelityMethod::kTcsbMotionOnly: return "tcsb_motion_only";
     case FidelityMethod::kTcsbCalibratedMotionOnly: return "tcsb_calibrated_motion_only";
+    case FidelityMethod::kStock: return "stock_bullet";
   }
   return "unknown";
 }
@@ -54,6 +55,12 @@ std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
     add_at_targets(FidelityMethod::kTcsbMotionOnly);
     if (suite.calibration) add_at_targets(FidelityMethod::kTcsbCalibratedMotionOnly);
   }
+  if (suite.solver.compliant_model()) {
+    // One material, no calibration: the uniform grid of the same material is TC-SB's rival at every target; and
+    // stock Bullet at the suite's iterations, measured against the same converged cloth.
+    if (!suite.fidelity.ablations) add_at_targets(FidelityMethod::kUniform);
+    plan.push_back({FidelityMethod::kStock, 1.0});
+  }
   return plan;
 }
 
@@ -71,8 +78,10 @@ NetSpec coarse_net_spec(const NetSpec& fine, int budget) {
   coarse.name = fine.name + "/coarse";
   coarse.width = g.width;
   coarse.height = g.height;
-  coarse.mass_mode = MassMode::kTotal;  // the same cloth: the total mass is kept, not the mass per node
-  coarse.mass = fine.node_mass() * static_cast<double>(fine.node_count());
+  if (fine.mass_mode != MassMode::kDensity) {  // (a density is the same cloth at any resolution already)
+    coarse.mass_mode = MassMode::kTotal;       // the same cloth: the total mass is kept, not the mass per node
+    coarse.mass = fine.node_mass() * static_cast<double>(fine.node_count());
+  }
   return with_pins_of(fine, coarse);
 }
 

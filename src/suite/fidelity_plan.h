@@ -27,11 +27,14 @@ enum class FidelityMethod {
                         ///< hanging interfaces (ablation)
   kTcsbMotionOnly,      ///< TC-SB with the paper's motion-only BSWDF, in a suite whose TC-SB uses the view terms
   kTcsbCalibratedMotionOnly,  ///< the same, calibrated
+  /// Under the compliant material: stock Bullet at full resolution with the suite's solver settings (kLST and
+  /// piterations), against the same converged reference as every subject.
+  kStock,
 };
 
 /// Name used in reports: "tcsb", "uniform_grid", "switch_body", "tcsb_random", "tcsb_rigid", "tcsb_no_geomorph",
 /// "tcsb_calibrated", "uniform_grid_calibrated", "tcsb_calibrated_fans", "tcsb_motion_only",
-/// "tcsb_calibrated_motion_only". ("tcsb" is the suite's TC-SB, uncalibrated: the timed one.)
+/// "tcsb_calibrated_motion_only", "stock_bullet". ("tcsb" is the suite's TC-SB, uncalibrated: the timed one.)
 const char* fidelity_method_name(FidelityMethod method);
 
 /// One body of the fidelity pass on every net.
@@ -46,7 +49,9 @@ struct FidelitySubjectSpec {
 /// sweep below 1 and the calibrated uniform grid at the suite's targets below 1, and, when the suite's TC-SB uses
 /// hanging interfaces and asks for ablations, calibrated TC-SB with the paper's fans at the suite's targets below 1;
 /// when the suite's TC-SB uses the view terms (feedback.view), TC-SB with the motion-only BSWDF at the suite's targets
-/// below 1, and with a calibration the calibrated one too, so the spectator's effect is measured in the same pass.
+/// below 1, and with a calibration the calibrated one too, so the spectator's effect is measured in the same pass;
+/// under the compliant material the uniform grid at the suite's targets below 1 (if the ablations did not add it)
+/// and stock Bullet at full resolution.
 /// Empty unless fidelity.enabled and the suite runs TC-SB.
 std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite);
 

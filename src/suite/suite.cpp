@@ -15,6 +15,7 @@
 #include "base/sha256.h"
 #include "suite/calibration_path.h"
 #include "suite/case_plan.h"
+#include "suite/material_block.h"
 #include "suite/suite_axes.h"
 #include "suite/suite_fields.h"
 #include "suite/suite_memory.h"
@@ -432,6 +433,7 @@ const char* method_name(Method method) {
     case Method::kBulletPatch: return "bullet_patch";
     case Method::kTcsb: return "tcsb";
     case Method::kPlainEqual: return "plain_equal";
+    case Method::kStock: return "stock";
   }
   return "unknown";
 }
@@ -440,10 +442,12 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   const Reader r(file);
   const json doc = parse_json_text<json>(text, file);
   if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
-  const Object root(r, doc, "",
-                    {"name", "description", "nets", "methods", "compression", "dt", "gravity", "steps", "warmup_steps",
-                     "repetitions", "interleave_steps", "interleave_across_nets", "seed", "solver", "tcsb", "feedback",
-                     "fidelity", "axes", "scene"});
+  const Object root(
+      r, doc, "",
+      {"name",    "description", "nets",         "methods",     "compression",      "dt",
+       "gravity", "steps",       "warmup_steps", "repetitions", "interleave_steps", "interleave_across_nets",
+       "seed",    "solver",      "tcsb",         "feedback",    "fidelity",         "axes",
+       "scene",   "material"});
   Suite s;
   s.path = file;
   s.sha256 = sha256_hex(text);
@@ -467,7 +471,8 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
                                       {{"plain", Method::kPlain},
                                        {"bullet_patch", Method::kBulletPatch},
                                        {"tcsb", Method::kTcsb},
-                                       {"plain_equal", Method::kPlainEqual}});
+                                       {"plain_equal", Method::kPlainEqual},
+                                       {"stock", Method::kStock}});
     if (std::find(s.methods.begin(), s.methods.end(), m) != s.methods.end()) {
       r.fail(index_path("methods", i), "duplicate method \"" + std::string(method_name(m)) + "\"");
     }
@@ -505,6 +510,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   if (s.interleave_across_nets && s.interleave_steps == 0)
     r.fail("interleave_across_nets", "needs interleave_steps above 0 (the cases take turns only side by side)");
   read_axis_setting(r, root, "seed", s, true);
+  parse_material(r, root, nets, s);
   parse_settings(r, root, s);
   if (const json* scene = root.find("scene")) s.scene = parse_scene(r, *scene);
   if (const json* axes = root.find("axes")) parse_axes(r, *axes, s);
@@ -559,6 +565,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
            std::to_string(configuration_count(s)) + " configuration(s) x " + std::to_string(s.nets.size()) +
                " net(s) x their methods and compression targets = " + std::to_string(cases) + " cases, more than the " +
                std::to_string(kMaxCases) + " a suite may have");
+  check_material(r, s);  // (before the calibration is read: the compliant material refuses one)
   if (!s.fidelity.calibration_path.empty()) {
     if (!has_tcsb) r.fail("fidelity.calibration", "requires methods to contain \"tcsb\"");
     // Relative to the suite file, so a suite and its calibration travel together (and never outside its tree).

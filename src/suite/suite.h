@@ -30,9 +30,14 @@ enum class Method {
   /// pass's uniform grid: same size, total mass and pins), one case per target below 1: what a static body of the
   /// node count TC-SB simulates costs, measured in the same interleaved repetitions.
   kPlainEqual,
+  /// Under the compliant material (SolverSettings::model), stock Bullet built from the net's finest level with the
+  /// suite's solver settings (kLST and piterations): the baseline a Bullet user has today, beside the compliant
+  /// bodies. Under Bullet's model it would be "plain", and is refused.
+  kStock,
 };
 /// Every method, in declaration order.
-inline constexpr Method kAllMethods[] = {Method::kPlain, Method::kBulletPatch, Method::kTcsb, Method::kPlainEqual};
+inline constexpr Method kAllMethods[] = {Method::kPlain, Method::kBulletPatch, Method::kTcsb, Method::kPlainEqual,
+                                         Method::kStock};
 
 /// Fidelity measurement settings (reference run in lockstep, error metrics).
 struct FidelitySettings {
@@ -165,7 +170,7 @@ Suite parse_suite(const std::filesystem::path& path, const SuiteAdjustment& adju
 /// Validates a suite given as JSON text; `file` names it in errors. The same checks as parse_suite.
 Suite parse_suite_text(const std::string& text, const std::string& file, const SuiteAdjustment& adjust = {});
 
-/// Name used in JSON for a method ("plain", "bullet_patch", "tcsb", "plain_equal").
+/// Name used in JSON for a method ("plain", "bullet_patch", "tcsb", "plain_equal", "stock").
 const char* method_name(Method method);
 
 }  // namespace tcsb

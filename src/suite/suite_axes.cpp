@@ -93,7 +93,10 @@ const AxisSetting kAxisSettings[] = {
     {"seed",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.seed = r.unsigned_integer(v, at); }},
     {"dt",
-     [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.world.dt = r.number(v, at, kFraction); }},
+     [](const Reader& r, const json& v, const std::string& at, Suite& s) {
+       s.world.dt = r.number(v, at, kFraction);
+       s.solver.step_dt = s.world.dt;  // the step the compliant material's constants are made for
+     }},
     {"gravity", [](const Reader& r, const json& v, const std::string& at,
                    Suite& s) { s.world.gravity = r.number(v, at, kNonNegative); }},
     {"steps",

@@ -56,6 +56,7 @@ double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
   const auto body_bytes = [&](Method m) {
     switch (m) {
       case Method::kPlain: return plain;
+      case Method::kStock: return plain;
       case Method::kPlainEqual: return plain;  // a coarser grid of the same net: at most the plain body
       case Method::kBulletPatch: return plain + 2.0 * (spec.width - 1) * (spec.height - 1) * kBulletFaceBytes;
       case Method::kTcsb: return tcsb_body;

@@ -905,5 +905,79 @@ TEST(SuiteReject, DuplicateKeyInText) {
   rejected([&] { parse_suite_text(text, "dup.json"); }, "dup.json", "steps");
 }
 
+// ---- the material block ---------------------------------------------------------------------------------------
+
+json compliant_minimal() {
+  json j = minimal();
+  j["material"] = {{"model", "compliant"}, {"stretch_stiffness", 100}, {"density", 0.2}, {"substeps", 8}};
+  return j;
+}
+
+/// Expects the minimal compliant suite, changed by `edit`, to be rejected naming `field`.
+void rejected_compliant(const std::function<void(json&)>& edit, const std::string& field) {
+  json j = compliant_minimal();
+  edit(j);
+  rejected([&] { parse_suite_text(j.dump(), "edited.json"); }, "edited.json", field);
+}
+
+TEST(SuiteMaterial, BulletIsTheDefaultAndTheCompliantModelIsReadInPhysicalUnits) {
+  EXPECT_EQ(parse_suite_text(minimal().dump(), "m.json").solver.model, MaterialModel::kBullet);
+  json j = compliant_minimal();
+  j["material"]["damping"] = 0.5;
+  const Suite s = parse_suite_text(j.dump(), "m.json");
+  EXPECT_TRUE(s.solver.compliant_model());
+  EXPECT_EQ(s.solver.compliant.stretch_stiffness, 100.0);
+  EXPECT_EQ(s.solver.compliant.density, 0.2);
+  EXPECT_EQ(s.solver.compliant.damping, 0.5);
+  EXPECT_EQ(s.solver.compliant.substeps, 8);
+  EXPECT_DOUBLE_EQ(s.solver.step_dt, 0.01);  // the suite's dt: the constants are made for it
+  // One material: the net's mass is the density's, lumped by area.
+  EXPECT_EQ(s.nets[0].mass_mode, MassMode::kDensity);
+  EXPECT_DOUBLE_EQ(s.nets[0].total_mass(), 0.2 * 8.0 * 8.0);
+}
+
+TEST(SuiteMaterial, BadMaterialsAreRefusedNamingTheField) {
+  rejected_edit([](json& j) { j["material"] = {{"model", "xpbd"}}; }, "material.model");
+  for (const char* key : {"stretch_stiffness", "density", "substeps"}) {
+    SCOPED_TRACE(key);
+    for (const double bad : {0.0, -1.0})
+      rejected_compliant([&](json& j) { j["material"][key] = bad; }, "material." + std::string(key));
+    rejected_compliant([&](json& j) { j["material"].erase(key); }, "material." + std::string(key));
+  }
+  rejected_compliant([](json& j) { j["material"]["damping"] = -0.1; }, "material.damping");
+  rejected_compliant([](json& j) { j["material"]["kLST"] = 1; }, "material.kLST");
+  // Bullet's model takes its stiffness from solver: a compliant field there would be read and ignored.
+  rejected_edit([](json& j) { j["material"] = {{"model", "bullet"}, {"density", 1}}; }, "material.density");
+}
+
+TEST(SuiteMaterial, TheCompliantModelRefusesWhatItWouldIgnore) {
+  // A net's own mass: the material's density gives every net its masses.
+  rejected_compliant([](json& j) { j["nets"][0]["mass"] = {{"total", 1}}; }, "nets[0].mass");
+  // Bullet's kLST, which only the stock baseline would use, in a suite without it.
+  rejected_compliant([](json& j) { j["solver"]["stiffness"] = 0.5; }, "solver.stiffness");
+  json with_stock = compliant_minimal();
+  with_stock["solver"]["stiffness"] = 0.5;
+  with_stock["methods"] = {"plain", "stock"};
+  EXPECT_EQ(parse_suite_text(with_stock.dump(), "stock.json").methods.back(), Method::kStock);
+  // A calibration: per-level kLST, a second material.
+  rejected_compliant(
+      [](json& j) {
+        j["methods"] = {"tcsb"};
+        j["compression"] = {1.0};
+        j["tcsb"] = {{"masses", "cut"}};
+        j["fidelity"] = {{"enabled", true}, {"calibration", "x.calibration.json"}};
+      },
+      "fidelity.calibration");
+  // TC-SB without the cut's cells to compute its compliance from.
+  rejected_compliant(
+      [](json& j) {
+        j["methods"] = {"tcsb"};
+        j["compression"] = {1.0};
+      },
+      "tcsb.masses");
+  // Stock Bullet beside Bullet's own model is "plain".
+  rejected_edit([](json& j) { j["methods"] = {"plain", "stock"}; }, "methods[1]");
+}
+
 }  // namespace
 }  // namespace tcsb
