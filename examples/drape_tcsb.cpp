@@ -53,7 +53,8 @@ int main() {
   settings.start_level = 1;                          // 17 x 17 nodes at first: the budget's 326 is reached by refining
   tcsb::TcSoftBody cloth(info, net, solver_settings, settings);
   cloth.getCollisionShape()->setMargin(0.01f);
-  cloth.m_cfg.collisions = btSoftBody::fCollision::SDF_RS;  // soft-rigid contacts through the node tree
+  // Made with the world's info, the cloth collides with the world's rigid bodies (m_cfg.collisions = SDF_RS: contacts
+  // through the node tree) from the start.
   world.addSoftBody(&cloth);
 
   // What an application that draws the simulated nodes hears of the cut: here it only counts.
@@ -69,8 +70,8 @@ int main() {
   feedback.contact_saliency = 0.25;
   const int budget = static_cast<int>(0.3 * static_cast<double>(spec.node_count()));
   const auto controller = tcsb::make_controller(feedback, budget, /*seed=*/1);
-  tcsb::TreeCutDriver driver(cloth, controller.get());
-  driver.install(world);
+  tcsb::TreeCutDriver driver(world);  // one per world: installed here, uninstalled when it goes
+  driver.drive(cloth, controller.get());
 
   bool ok = true;
   for (int frame = 1; frame <= 90; ++frame) {
@@ -97,7 +98,6 @@ int main() {
               "invariants %s\n",
               budget, spec.node_count(), driver.ticks(), top, std::max(deepest, 0.0),
               rests ? "on the sphere" : "NOT on the sphere", ok ? "hold" : "broken");
-  world.setInternalTickCallback(nullptr, nullptr, true);
   world.removeSoftBody(&cloth);
   world.removeRigidBody(&ball);
   return ok && rests ? 0 : 1;
