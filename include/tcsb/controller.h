@@ -19,4 +19,5 @@
 
 #include "feedback/controller.h"         // IWYU pragma: export
 #include "feedback/feedback_settings.h"  // IWYU pragma: export
+#include "feedback/presets.h"            // IWYU pragma: export
 #include "feedback/tree_cut_driver.h"    // IWYU pragma: export
