@@ -54,9 +54,14 @@ Validation TcSoftBody::validate() const {
     }
     const TreeId id = tree_of_[static_cast<std::size_t>(i)];
     if (m_anchors[a].m_body == nullptr) fail(name + ": has no rigid body");
-    if (m_nodes[static_cast<int>(i)].m_battach == 0)
+    const Node& node = m_nodes[static_cast<int>(i)];
+    if (node.m_battach == 0)
       fail(name + ": its node (Bullet " + std::to_string(i) + ", tree " + std::to_string(id) +
-           ") is not marked attached (m_battach), so it is not the node appendAnchor anchored");
+           ") is not marked attached (m_battach, which appendAnchor sets): a stale Node* that landed on another node, "
+           "or an anchor appended without appendAnchor");
+    if (node.m_im == 0 && m_anchors[a].m_body != nullptr && m_anchors[a].m_body->getInvMass() == 0)
+      fail(name + ": holds a pinned node (tree " + std::to_string(id) +
+           ") to a static body: Bullet's anchor solve divides by their zero inverse masses");
   }
 
   // Nodes: mapping both ways, DBVT leaves, masses, pins, finiteness.

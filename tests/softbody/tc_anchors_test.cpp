@@ -111,5 +111,18 @@ TEST(Anchors, ValidateNamesAnAnchorMovedToAnotherNode) {
   EXPECT_EQ(broken.problems.front().rfind("anchor 0: its node (Bullet 11", 0), 0u) << broken.summary();
 }
 
+TEST(Anchors, ValidateNamesAPinnedNodeAnchoredToAStaticBody) {
+  // Bullet's anchor solve inverts the sum of the node's and the body's inverse masses: both zero, the cloth goes NaN.
+  const auto net = testing::square_net(9);  // pinned corners
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
+  btSphereShape shape(0.1f);
+  btRigidBody rigid(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &shape));
+  tc.appendAnchor(tc.bullet_index(net->index(0, 0)), &rigid);
+  const Validation v = tc.validate();
+  ASSERT_FALSE(v.ok());
+  EXPECT_EQ(v.problems.front().rfind("anchor 0: holds a pinned node", 0), 0u) << v.summary();
+}
+
 }  // namespace
 }  // namespace tcsb
