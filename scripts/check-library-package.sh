@@ -37,12 +37,15 @@ cmake --install "$scratch/lib" --prefix "$scratch/prefix" > "$scratch/install.lo
 mkdir -p "$scratch/old-client"
 printf 'cmake_minimum_required(VERSION 3.25)\nproject(old LANGUAGES CXX)\nfind_package(tcsb 0.1 REQUIRED)\n' \
   > "$scratch/old-client/CMakeLists.txt"
-if cmake -S "$scratch/old-client" -B "$scratch/old-client/build" -DCMAKE_PREFIX_PATH="$scratch/prefix" \
+if cmake -S "$scratch/old-client" -B "$scratch/old-client/build" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" \
      > "$scratch/old-client.log" 2>&1; then
   echo "check-library-package: find_package(tcsb 0.1) accepted the $(grep -o 'PACKAGE_VERSION "[^"]*"' \
     "$scratch/prefix"/lib*/cmake/tcsb/tcsbConfigVersion.cmake) package" >&2
   exit 1
 fi
+# ... refused for its version, not for another reason.
+tr -s ' \n' ' ' < "$scratch/old-client.log" | grep -q 'compatible with requested version "0.1"' ||
+  { cat "$scratch/old-client.log" >&2; exit 1; }
 
 cmake -S "$source_dir/examples" -B "$scratch/examples" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" \
   -DCMAKE_CXX_STANDARD=17 "${client_flags[@]}" > "$scratch/examples-configure.log"
