@@ -111,7 +111,6 @@ int main() {
   tcsb::TreeCutDriver driver(world);
   driver.drive(*cloth, tcsb::make_controller(feedback, budget, 1, orbit(0)));
   driver.drive(*other, tcsb::make_controller(tcsb::FeedbackSettings{}, 120, 2));
-  tcsb::Controller& controller = *driver.controller(*cloth);
 
   bool ok = true;
   double max_gap = 0;
@@ -122,10 +121,10 @@ int main() {
     box.setLinearVelocity(
         btVector3(static_cast<btScalar>(-0.3 * std::sin(2 * t)), 0, static_cast<btScalar>(0.3 * std::cos(2 * t))));
     box.setAngularVelocity(btVector3(0, 0, 0));
-    controller.set_spectator(orbit(2 * kPi * t / 5));  // a full orbit in 5 s
+    driver.set_spectator(*cloth, orbit(2 * kPi * t / 5));  // a full orbit in 5 s
     if (frame == 50) {
       budget = static_cast<int>(0.2 * static_cast<double>(net->node_count()));  // the game needs time elsewhere
-      controller.set_budget(budget);
+      driver.set_budget(*cloth, budget);
     }
     if (frame == 60) {
       world.removeSoftBody(other.get());
@@ -133,7 +132,7 @@ int main() {
     }
     if (frame == 100) {
       budget = static_cast<int>(0.4 * static_cast<double>(net->node_count()));
-      controller.set_budget(budget);
+      driver.set_budget(*cloth, budget);
     }
     world.stepSimulation(2 * kStep, 2, kStep);
     ok = check(*cloth, "draped cloth", frame) && (!other || check(*other, "second cloth", frame));

@@ -127,6 +127,21 @@ Controller* TreeCutDriver::controller(const TcSoftBody& body) const {
   return e != nullptr ? e->controller : nullptr;
 }
 
+namespace {
+Controller& controller_of(const TreeCutDriver& driver, const TcSoftBody& body) {
+  Controller* c = driver.controller(body);
+  if (c == nullptr)
+    throw std::invalid_argument("TreeCutDriver: no controller drives this body (drive(body, controller))");
+  return *c;
+}
+}  // namespace
+
+void TreeCutDriver::set_budget(const TcSoftBody& body, int nodes) { controller_of(*this, body).set_budget(nodes); }
+
+void TreeCutDriver::set_spectator(const TcSoftBody& body, const Spectator& spectator) {
+  controller_of(*this, body).set_spectator(spectator);
+}
+
 long long TreeCutDriver::ticks(const TcSoftBody& body) const {
   const Entry* e = find(body);
   return e != nullptr ? e->ticks : 0;

@@ -68,6 +68,10 @@ class TreeCutDriver final : private TcSoftBody::LifetimeListener {
   /// The controller driving `body`, or null. Through it a running application changes the body's budget and camera
   /// (Controller::set_budget, set_spectator), effective at the next evaluation.
   Controller* controller(const TcSoftBody& body) const;
+  /// controller(body)->set_budget(nodes) and set_spectator(spectator): effective at the body's next step boundary.
+  /// Throw std::invalid_argument when the driver has no controller for the body (and what the controller throws).
+  void set_budget(const TcSoftBody& body, int nodes);
+  void set_spectator(const TcSoftBody& body, const Spectator& spectator);
 
   /// What the callback does before every internal step, for every TC-SB body in the world: the controller sees the
   /// last step (after_step), the blends move on and finished operations end (advance_blends), new operations begin

@@ -321,7 +321,7 @@ TEST(TreeCutDriver, TheBudgetChangesWhileTheWorldRuns) {
   Controller* controller = driver.controller(*body);
   for (int f = 0; f < 30; ++f) frame(app);
   EXPECT_LE(body->node_count(), 200);
-  controller->set_budget(90);
+  driver.set_budget(*body, 90);  // through the driver, as through the controller
   for (int f = 0; f < 40; ++f) frame(app);
   EXPECT_LE(body->node_count(), 90);
   controller->set_budget(250);  // room again: salient blocks refine
@@ -329,6 +329,8 @@ TEST(TreeCutDriver, TheBudgetChangesWhileTheWorldRuns) {
   EXPECT_GT(body->node_count(), 90);
   EXPECT_LE(body->node_count(), 250);
   EXPECT_THROW(controller->set_budget(0), std::invalid_argument);
+  auto undriven = sheet_body(app, 9);
+  EXPECT_THROW(driver.set_budget(*undriven, 50), std::invalid_argument);
   EXPECT_TRUE(body->validate().ok()) << body->validate().summary();
   app.world.removeSoftBody(body.get());
 }
@@ -369,7 +371,7 @@ TEST(TreeCutDriver, TheCameraMovesWhileTheWorldRuns) {
   Controller* controller = driver.controller(*body);
   for (int f = 0; f < 45; ++f) frame(app);
   const double on_left = finest_mean_x(*body);
-  controller->set_spectator(right);
+  driver.set_spectator(*body, right);
   for (int f = 0; f < 45; ++f) frame(app);
   const double on_right = finest_mean_x(*body);
   EXPECT_LT(on_left, -0.1);
