@@ -101,9 +101,20 @@ TreeCutDriver::Entry& TreeCutDriver::adopt(TcSoftBody& body) {
   return *entries_.back();
 }
 
+void TreeCutDriver::quiesce(Entry& e) {
+  // A parallel controller's worker may be reading the body's cut since the last step: joined (after_step sees the
+  // step the body took) and put to sleep, so that whatever happens to the body next, nothing reads it.
+  if (e.controller != nullptr && e.stepped) {
+    e.controller->after_step(*e.body);
+    e.controller->pause();
+  }
+  e.stepped = false;
+}
+
 void TreeCutDriver::drive(TcSoftBody& body, Controller* controller) {
   check_world_info(body, false);
   Entry& e = adopt(body);
+  quiesce(e);  // the controller it had, if any, lets go of it
   e.controller = controller;
   e.owned.reset();
 }
@@ -111,6 +122,7 @@ void TreeCutDriver::drive(TcSoftBody& body, Controller* controller) {
 void TreeCutDriver::drive(TcSoftBody& body, std::unique_ptr<Controller> controller) {
   check_world_info(body, false);
   Entry& e = adopt(body);
+  quiesce(e);
   e.controller = controller.get();
   e.owned = std::move(controller);
 }
@@ -118,6 +130,7 @@ void TreeCutDriver::drive(TcSoftBody& body, std::unique_ptr<Controller> controll
 void TreeCutDriver::release(TcSoftBody& body) {
   const auto it = std::find_if(entries_.begin(), entries_.end(), [&](const auto& e) { return e->body == &body; });
   if (it == entries_.end()) return;
+  quiesce(**it);
   body.set_lifetime_listener(nullptr);
   entries_.erase(it);
 }
@@ -153,11 +166,7 @@ void TreeCutDriver::body_destroyed(TcSoftBody& body) {
   if (bodies.findLinearSearch(&body) < bodies.size()) world_.removeSoftBody(&body);
   const auto it = std::find_if(entries_.begin(), entries_.end(), [&](const auto& e) { return e->body == &body; });
   if (it == entries_.end()) return;
-  // A parallel controller's worker may be reading the body's cut: joined now, while the body is still whole.
-  if (Controller* c = (*it)->controller; c != nullptr && (*it)->stepped) {
-    c->after_step(body);
-    c->pause();
-  }
+  quiesce(**it);  // while the body is still whole
   entries_.erase(it);
 }
 
@@ -175,7 +184,7 @@ void TreeCutDriver::pre_tick() {
       if (e.stepped)
         e.controller->after_step(*body);
       else if (e.ticks > 0)
-        e.controller->resume();  // back in the world after a while out of it
+        e.controller->resume();  // back after a while out of the world (or with a new controller: a no-op)
     }
     body->advance_blends();
     if (e.controller != nullptr) e.controller->before_step(*body);
@@ -185,13 +194,8 @@ void TreeCutDriver::pre_tick() {
   }
   // A body that left the world since the last tick: its controller lets its workers sleep, and will not see a step
   // the body did not take.
-  for (const auto& e : entries_) {
-    if (e->seen || !e->stepped) continue;
-    e->stepped = false;
-    if (e->controller == nullptr) continue;
-    e->controller->after_step(*e->body);  // the last step it took (and a parallel controller's worker joined)
-    e->controller->pause();
-  }
+  for (const auto& e : entries_)
+    if (!e->seen) quiesce(*e);
   ++ticks_;
 }
 

@@ -61,8 +61,8 @@ class TreeCutDriver final : private TcSoftBody::LifetimeListener {
   void drive(TcSoftBody& body, Controller* controller);
   /// The same, the driver owning the controller.
   void drive(TcSoftBody& body, std::unique_ptr<Controller> controller);
-  /// Forgets `body` (nothing if unknown): its controller is not called again. While the body stays in the world it
-  /// is still driven, as an unknown body is, without a controller.
+  /// Forgets `body` (nothing if unknown): its controller sees its last step, pauses, and is not called again. While the
+  /// body stays in the world it is still driven, as an unknown body is, without a controller.
   void release(TcSoftBody& body);
 
   /// The controller driving `body`, or null. Through it a running application changes the body's budget and camera
@@ -100,6 +100,9 @@ class TreeCutDriver final : private TcSoftBody::LifetimeListener {
   const Entry* find(const TcSoftBody& body) const;
   Entry& adopt(TcSoftBody& body);
   void check_world_info(const btSoftBody& body, bool from_tick) const;
+  /// Before the driver stops calling an entry's controller (the body left the world, is released or destroyed, or
+  /// gets another controller): the controller sees the body's last step and pauses. O(1) besides the controller.
+  void quiesce(Entry& e);
 
   btSoftRigidDynamicsWorld& world_;
   Install install_;

@@ -218,6 +218,30 @@ TEST(TreeCutDriver, ABodyDestroyedWhileDrivenLeavesTheWorldAndTheDriver) {
   app.world.removeSoftBody(kept.get());
 }
 
+TEST(TreeCutDriver, AReleasedOrRedrivenBodyIsLetGoOf) {
+  // Its parallel controller's worker, which reads the cut during the step, is joined when the driver lets go: the
+  // body may then be destroyed while the controller lives on.
+  AppWorld app;
+  FeedbackSettings parallel;
+  parallel.parallel = true;
+  const auto first = make_controller(parallel, 30, 1);
+  const auto second = make_controller(parallel, 30, 2);
+  TreeCutDriver driver(app.world);
+  auto body = sheet_body(app, 9);
+  app.world.addSoftBody(body.get());
+  driver.drive(*body, first.get());
+  for (int f = 0; f < 2; ++f) frame(app);
+  driver.drive(*body, second.get());  // another controller: the first one lets go
+  for (int f = 0; f < 2; ++f) frame(app);
+  EXPECT_EQ(driver.controller(*body), second.get());
+  driver.release(*body);
+  EXPECT_EQ(body->lifetime_listener(), nullptr);
+  app.world.removeSoftBody(body.get());
+  body.reset();
+  frame(app);
+  EXPECT_EQ(driver.ticks(), 10);  // five frames of two internal steps
+}
+
 TEST(TreeCutDriver, UninstallsItselfWhenDestroyed) {
   AppWorld app;
   auto body = sheet_body(app, 9);
