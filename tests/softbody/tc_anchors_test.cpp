@@ -54,7 +54,9 @@ TEST_P(AnchorsFollow, TheirNodesThroughRemovalsAndReorderings) {
   }
   EXPECT_TRUE(moved);  // the last node did move
   EXPECT_LT(tc.node_count(), 17 * 17);
-  if (GetParam() != 0) EXPECT_GT(tc.order_restorations(), 0);
+  if (GetParam() != 0) {
+    EXPECT_GT(tc.order_restorations(), 0);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Orders, AnchorsFollow, ::testing::Values(0, 1, 2));

@@ -2,6 +2,7 @@
 // recommendation, in the library, in the suites and in docs/library.md alike.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "feedback/presets.h"
@@ -12,7 +13,7 @@ namespace {
 
 void expect_suite_matches(const Preset& p, const std::string& suite_name) {
   SCOPED_TRACE(suite_name);
-  const Suite s = parse_suite(std::string(TCSB_SOURCE_DIR) + "/suites/" + suite_name + ".json");
+  const Suite s = parse_suite(std::filesystem::path(TCSB_SOURCE_DIR) / "suites" / (suite_name + ".json"));
   EXPECT_EQ(p.solver.piterations, s.solver.piterations);
   EXPECT_EQ(p.solver.viterations, s.solver.viterations);
   EXPECT_EQ(p.solver.diterations, s.solver.diterations);
