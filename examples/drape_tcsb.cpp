@@ -1,11 +1,12 @@
 // drape_tcsb: a TreeCut cloth at a 30 % node budget dropped onto a rigid sphere in the application's own
-// btSoftRigidDynamicsWorld, stepped with stepSimulation (two substeps a frame). The world is built with
-// tcsb::TcSoftBodySolver, which solves the cloth's hanging interfaces between levels; the cloth starts at its level-1
-// cut, near its budget. A TreeCutDriver runs the cut's operations from the world's pre-tick callback; contact is an
-// animation feature, so the cloth keeps detail where it lies on the sphere; a CutListener counts the cut's changes, as
-// an application that keeps a render mesh of the simulated nodes would rebuild it. Prints the simulated node count N,
-// the operations blending I, the contacts and the cut's changes, checks the cut's invariants every frame and that the
-// cloth rests on the sphere; exits non-zero otherwise. Built against the installed package (examples/CMakeLists.txt).
+// btSoftRigidDynamicsWorld, stepped with stepSimulation (two substeps a frame), with the library's drape preset. The
+// world is built with tcsb::TcSoftBodySolver, which solves the cloth's hanging interfaces between levels; the cloth
+// starts at its level-1 cut, near its budget. A TreeCutDriver runs the cut's operations from the world's pre-tick
+// callback; contact is an animation feature, so the cloth keeps detail where it lies on the sphere; a CutListener
+// counts the cut's changes, as an application that keeps a render mesh of the simulated nodes would rebuild it. Prints
+// the simulated node count N, the operations blending I, the contacts and the cut's changes, checks the cut's
+// invariants every frame and that the cloth rests on the sphere; exits non-zero otherwise. Built against the installed
+// package (examples/CMakeLists.txt).
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
@@ -38,6 +39,12 @@ int main() {
   btRigidBody ball(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &ball_shape));
   world.addRigidBody(&ball);
 
+  // The library's recommended settings for a drape (tcsb::drape_preset(), suites/drape.json, docs/library.md): 16
+  // position iterations, hanging interfaces between levels, masses that follow the cut, links in a plain body's
+  // order, contact as an animation feature. The cut starts at level 1 (17 x 17 nodes), near its budget.
+  tcsb::Preset preset = tcsb::drape_preset();
+  preset.tcsb.start_level = 1;
+
   // A free 2 m sheet of 33 x 33 nodes, 20 cm above the sphere.
   tcsb::NetSpec spec;
   spec.width = spec.height = 33;
@@ -45,15 +52,12 @@ int main() {
   spec.elevation = 0.7;
   spec.mass = 0.5;
   spec.pinned_corners = 0;
+  spec.lod_rest = preset.lod_rest;  // blocks resting on their first leaf, as masses that follow the cut need
   const auto net = std::make_shared<const tcsb::Net>(spec);
-  tcsb::SolverSettings solver_settings;
-  solver_settings.piterations = 8;
-  tcsb::TcSettings settings;
-  settings.interfaces = tcsb::Interfaces::kHanging;  // one constraint where a coarse block meets finer cloth
-  settings.start_level = 1;                          // 17 x 17 nodes at first: the budget's 326 is reached by refining
-  tcsb::TcSoftBody cloth(info, net, solver_settings, settings);
+  tcsb::TcSoftBody cloth(info, net, preset.solver, preset.tcsb);
   cloth.getCollisionShape()->setMargin(0.01f);
-  cloth.m_cfg.collisions = btSoftBody::fCollision::SDF_RS;  // soft-rigid contacts through the node tree
+  // Made with the world's info, the cloth collides with the world's rigid bodies (m_cfg.collisions = SDF_RS: contacts
+  // through the node tree) from the start.
   world.addSoftBody(&cloth);
 
   // What an application that draws the simulated nodes hears of the cut: here it only counts.
@@ -63,14 +67,12 @@ int main() {
   } counter;
   cloth.set_cut_listener(&counter);
 
-  // The controller holds 30 % of the nodes; contact makes a node salient (at least a quarter of the most salient
+  // The controller holds 30 % of the nodes; contact makes a node salient (at least a tenth of the most salient
   // motion). The driver runs the operations.
-  tcsb::FeedbackSettings feedback;
-  feedback.contact_saliency = 0.25;
   const int budget = static_cast<int>(0.3 * static_cast<double>(spec.node_count()));
-  const auto controller = tcsb::make_controller(feedback, budget, /*seed=*/1);
-  tcsb::TreeCutDriver driver(cloth, controller.get());
-  driver.install(world);
+  const auto controller = tcsb::make_controller(preset.feedback, budget, /*seed=*/1);
+  tcsb::TreeCutDriver driver(world);  // one per world: installed here, uninstalled when it goes
+  driver.drive(cloth, controller.get());
 
   bool ok = true;
   for (int frame = 1; frame <= 90; ++frame) {
@@ -97,7 +99,6 @@ int main() {
               "invariants %s\n",
               budget, spec.node_count(), driver.ticks(), top, std::max(deepest, 0.0),
               rests ? "on the sphere" : "NOT on the sphere", ok ? "hold" : "broken");
-  world.setInternalTickCallback(nullptr, nullptr, true);
   world.removeSoftBody(&cloth);
   world.removeRigidBody(&ball);
   return ok && rests ? 0 : 1;

@@ -9,8 +9,10 @@
 //   body.simulate_step(dt);           // one Bullet step
 //   controller->after_step(body);     // a parallel controller snapshots the state for its worker
 //
-// In a btSoftRigidDynamicsWorld that the application steps with stepSimulation, a TreeCutDriver does the same
-// around every internal step from the world's pre-tick callback: examples/drape_tcsb.cpp.
+// In a btSoftRigidDynamicsWorld that the application steps with stepSimulation, a TreeCutDriver (one per world, for
+// every TC-SB body in it) does the same around every internal step from the world's pre-tick callback:
+// examples/drape_tcsb.cpp. A running controller takes a new budget and camera (set_budget, set_spectator) at its next
+// step boundary: examples/client_tcsb.cpp. The settings to start from per kind of scene: presets.h, docs/library.md.
 //
 // With settings.view the saliency sees through a camera (the BSWDF's view terms: motion on the image, nothing out of
 // view kept fine): pass make_controller a Spectator (feedback/camera.h: the camera, fixed or along keyframes, and the
@@ -19,4 +21,5 @@
 
 #include "feedback/controller.h"         // IWYU pragma: export
 #include "feedback/feedback_settings.h"  // IWYU pragma: export
+#include "feedback/presets.h"            // IWYU pragma: export
 #include "feedback/tree_cut_driver.h"    // IWYU pragma: export

@@ -33,7 +33,21 @@ class Controller {
   virtual void resume() {}
   /// Cost of the last step's feedback work.
   virtual FeedbackCost last_cost() const { return {}; }
+  /// Changes the node budget of a running controller, effective at the next step boundary (before_step): a lower
+  /// budget coarsens the body down to it, a higher one lets it refine. Throws std::invalid_argument when `nodes` < 1,
+  /// std::logic_error when the controller has no budget to change (this default).
+  virtual void set_budget(int nodes);
+  /// Changes whom the view terms see through (camera pose, field of view, image size; FeedbackSettings::view),
+  /// effective at the next evaluation; safe while a parallel controller's worker evaluates the last one. A fixed camera
+  /// (an empty path) is seen where it stands whatever the time; a path's time is the controller's step boundaries x
+  /// spectator.dt. Throws std::invalid_argument for a camera that gives no image (camera_pose_problem, a field of view
+  /// outside (0, 180), an image of no pixels), std::logic_error when the controller has no view terms (this default,
+  /// and a saliency controller made without FeedbackSettings::view).
+  virtual void set_spectator(const Spectator& spectator);
 };
+
+/// Throws std::invalid_argument naming what makes `spectator`'s camera give no image (none: returns).
+void check_spectator(const Spectator& spectator);
 
 /// The controller a suite asks for, holding the body near `target_nodes`. `seed` makes random choices repeatable.
 /// `spectator`: whom the view terms (settings.view) see through; required with them, ignored without. Throws

@@ -2,6 +2,8 @@
 // perceptual feedback, and the way Table 1 is measured independently of it.
 #pragma once
 
+#include <stdexcept>
+
 #include "../feedback/controller.h"
 #include "../feedback/random_policy.h"
 
@@ -19,6 +21,11 @@ class RandomController final : public Controller {
     policy_.apply(body, target_, max_ops_);
     body.settle_order();
   }
+  void set_budget(int nodes) override {
+    if (nodes < 1) throw std::invalid_argument("set_budget: the node budget must be >= 1");
+    target_ = nodes;
+  }
+  int budget() const { return target_; }
 
  private:
   RandomPolicy policy_;

@@ -1,6 +1,7 @@
 #include "feedback/saliency_controller.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "feedback/interface_balance.h"
 #include "feedback/pin_tension.h"
@@ -57,8 +58,31 @@ void SaliencyController::evaluate() {
   evaluation_ms_ = ms_since(t0);
 }
 
+void SaliencyController::set_budget(int nodes) {
+  if (nodes < 1) throw std::invalid_argument("set_budget: the node budget must be >= 1");
+  pending_budget_ = nodes;
+}
+
+void SaliencyController::set_spectator(const Spectator& spectator) {
+  if (!settings_.view)
+    throw std::logic_error("set_spectator: the controller was made without view terms (FeedbackSettings::view)");
+  check_spectator(spectator);
+  pending_spectator_ = spectator;
+}
+
 void SaliencyController::before_step(TcSoftBody& body) {
   const Clock::time_point t0 = Clock::now();
+  // Run-time changes, here: no worker reads the controller's state between after_step and this boundary's post.
+  if (pending_budget_) {
+    if (*pending_budget_ < node_budget_) budget_state_.converged = false;  // it may coarsen past it on the way down
+    node_budget_ = *pending_budget_;
+    time_budget_ = settings_.max_step_ms > 0 ? std::min(time_budget_, node_budget_) : node_budget_;
+    pending_budget_.reset();
+  }
+  if (pending_spectator_) {
+    spectator_ = std::move(pending_spectator_);
+    pending_spectator_.reset();
+  }
   if (settings_.max_step_ms > 0) adapt_time_budget();
   // The evaluation from the previous boundary, joined already in parallel mode.
   double worker_ms = 0;

@@ -36,6 +36,11 @@ class SaliencyController final : public Controller {
   FeedbackCost last_cost() const override { return cost_; }
   void pause() override;
   void resume() override;
+  /// Effective at the next before_step(). Lowering it below the body's size lets the body coarsen past the budget
+  /// once more (as before its first convergence), so it comes down to it.
+  void set_budget(int nodes) override;
+  /// Effective at the next evaluation (taken in before_step, after any worker joined). Requires settings.view.
+  void set_spectator(const Spectator& spectator) override;
 
   /// The budget in force now: the node budget, lowered by the time budget when one is set.
   int budget() const;
@@ -48,6 +53,9 @@ class SaliencyController final : public Controller {
 
   FeedbackSettings settings_;
   std::optional<Spectator> spectator_;
+  /// set_budget()'s and set_spectator()'s values, taken at the next before_step (a worker may read spectator_ now).
+  std::optional<int> pending_budget_;
+  std::optional<Spectator> pending_spectator_;
   int node_budget_;
   int time_budget_;  // adapted when settings_.max_step_ms > 0
   BudgetState budget_state_;

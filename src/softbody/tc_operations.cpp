@@ -38,6 +38,20 @@ bool TcSoftBody::anchored(TreeId id) const {
   return false;
 }
 
+TreeId TcSoftBody::nearest_child(TreeId parent) const {
+  const LodNode& node = tree().node(parent);
+  const btVector3& x = m_nodes[record(parent).bullet].m_x;
+  TreeId best = node.children[0];
+  btScalar best_d2 = SIMD_INFINITY;
+  for (int i = 0; i < node.child_count; ++i) {
+    const TreeId c = node.children[static_cast<std::size_t>(i)];
+    if (record(c).bullet < 0) continue;
+    const btScalar d2 = (m_nodes[record(c).bullet].m_x - x).length2();
+    if (d2 < best_d2) best_d2 = d2, best = c;
+  }
+  return best;
+}
+
 OpCheck TcSoftBody::can_refine(TreeId id) const {
   OpCheck check;
   const LodNode& node = tree().node(id);
@@ -355,6 +369,7 @@ void TcSoftBody::end_refine(const Op& op) {
     if (!tree().node(c).pinned()) n.m_v = to_bullet((record(c).sim_mass * to_eigen(n.m_v) + received * vp) / full);
     settle_in_cut(c, full);
   }
+  if (anchored(p)) hand_over_anchors(p, nearest_child(p));
   retire_from_cut(p);
   const std::int64_t t2 = op_clock();
 
@@ -394,7 +409,11 @@ void TcSoftBody::end_coarse(const Op& op) {
   if (!cut_masses()) mass = pn.mass;  // the same sum, kept exact
   if (!pn.pinned()) parent_node.m_v = to_bullet(momentum / mass);
   settle_in_cut(p, mass);
-  for (int i = 0; i < pn.child_count; ++i) retire_from_cut(pn.children[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < pn.child_count; ++i) {
+    const TreeId c = pn.children[static_cast<std::size_t>(i)];
+    if (anchored(c)) hand_over_anchors(c, p);
+    retire_from_cut(c);
+  }
   const std::int64_t t2 = op_clock();
 
   refresh_incident_constants(p);

@@ -71,6 +71,11 @@ void TcSoftBody::restore_order() {
   Node* const base = &m_nodes[0];
   for (int li = 0; li < m_links.size(); ++li)
     for (Node*& end : m_links[li].m_n) end = base + position_[static_cast<std::size_t>(end - base)];
+  // So do Bullet's anchors (one that points at no simulated node stays as it is, for validate() to name).
+  for (int a = 0; a < m_anchors.size(); ++a) {
+    const std::ptrdiff_t i = m_anchors[a].m_node - base;
+    if (i >= 0 && i < n) m_anchors[a].m_node = base + position_[static_cast<std::size_t>(i)];
+  }
   permute_in_place(order_, m_nodes, tree_of_);
   faces_stale_ = true;  // faces hold Node* too: rebuilt before the next step
   for (int i = 0; i < n; ++i) {

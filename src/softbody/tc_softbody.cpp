@@ -54,6 +54,9 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
   // raw Node* held by links and DBVT leaves stay valid (docs/design.md, "The node array and raw pointers").
   init_net_nodes(*this, *net_, static_cast<int>(tree_size));
   apply_solver_settings(*this, solver);
+  // Made for a world with colliders: soft-rigid contacts on, as Bullet's own default has them, so a cloth dropped on
+  // a collider never falls through it for want of a flag (the harness states its own: SceneWorld::attach).
+  if (world.m_broadphase != nullptr) m_cfg.collisions = fCollision::SDF_RS;
   for (const double k : settings_.level_stiffness)
     if (!(k > 0 && k <= 1)) throw std::invalid_argument("TcSoftBody: level stiffness must lie in (0, 1]");
   if (!settings_.level_stiffness.empty()) {
@@ -118,6 +121,10 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
     if (settings_.restore_order) restore_order();
     if (settings_.rebuild_dbvt) rebuild_node_dbvt();
   }
+}
+
+TcSoftBody::~TcSoftBody() {
+  if (lifetime_ != nullptr) lifetime_->body_destroyed(*this);
 }
 
 void TcSoftBody::simulate_step(btScalar dt) { step_body(*this, dt); }
@@ -187,11 +194,30 @@ void TcSoftBody::remove_node(TreeId id) {
     }
     tree_of_[static_cast<std::size_t>(k)] = moved;
     set_bullet_index(moved, k);
+    follow_anchors(from, to);
   }
   m_nodes.pop_back();
   tree_of_.pop_back();
   set_bullet_index(id, -1);
   faces_stale_ = true;
+}
+
+void TcSoftBody::follow_anchors(const Node* from, Node* to) {
+  for (int a = 0; a < m_anchors.size(); ++a)
+    if (m_anchors[a].m_node == from) m_anchors[a].m_node = to;
+}
+
+void TcSoftBody::hand_over_anchors(TreeId from, TreeId to) {
+  if (m_anchors.size() == 0) return;
+  const int f = record(from).bullet, t = record(to).bullet;
+  if (f < 0 || t < 0) return;
+  bool moved = false;
+  for (int a = 0; a < m_anchors.size(); ++a) {
+    if (m_anchors[a].m_node != &m_nodes[f]) continue;
+    m_anchors[a].m_node = &m_nodes[t];
+    moved = true;
+  }
+  if (moved) m_nodes[t].m_battach = 1;  // as appendAnchor marks the node it anchors
 }
 
 void TcSoftBody::set_bullet_index(TreeId id, std::int32_t index) {

@@ -126,12 +126,29 @@ struct Validation {
 
 class TcSoftBody : public btSoftBody {
  public:
+  /// Told from a TcSoftBody's destructor that it goes, while it is still whole (TreeCutDriver: forgets the body and
+  /// takes it out of its world). One per body.
+  class LifetimeListener {
+   public:
+    virtual ~LifetimeListener() = default;
+    virtual void body_destroyed(TcSoftBody& body) = 0;
+  };
+
   /// Builds the body at the finest cut (every grid node simulated), identical to the plain baseline, then, when
   /// settings.start_level > 0, coarsens it to that level (coarsen_to_level). `world` is the
   /// info of the world the body will live in — btSoftRigidDynamicsWorld::getWorldInfo() for a body in a collision
-  /// world, or an info of its own for a body stepped solo —, and must outlive the body.
+  /// world, or an info of its own for a body stepped solo —, and must outlive the body. A body made for a collision
+  /// world (an info with a broadphase) collides with its rigid bodies from the start (m_cfg.collisions = SDF_RS,
+  /// Bullet's own default); a body made for solo stepping has collisions off (Bullet would find nothing to collide
+  /// with). Set m_cfg.collisions = 0 after construction for a cloth that should pass through the world's colliders.
   TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> net, const SolverSettings& solver,
              const TcSettings& settings);
+  /// Tells the lifetime listener, if any (a TreeCutDriver), that the body goes.
+  ~TcSoftBody() override;
+  TcSoftBody(const TcSoftBody&) = delete;
+  TcSoftBody& operator=(const TcSoftBody&) = delete;
+  void set_lifetime_listener(LifetimeListener* listener) { lifetime_ = listener; }
+  LifetimeListener* lifetime_listener() const { return lifetime_; }
 
   // ---- queries -----------------------------------------------------------------------------------------------
   const Net& net() const { return *net_; }
@@ -174,9 +191,11 @@ class TcSoftBody : public btSoftBody {
   /// Whether coarse(parent) may begin: all its children active and none anchored, it may be simulated (at most one
   /// pinned leaf), and its neighbours active and none finer than its children.
   OpCheck can_coarsen(TreeId parent) const;
-  /// Whether a btSoftBody anchor (appendAnchor: a node attached to a rigid body) holds the simulated node `id`. An
-  /// operation would remove such a node, and Bullet's anchor, which holds a Node*, would silently move to whichever
-  /// node takes its place: anchored nodes stay in the cut. O(anchors).
+  /// Whether a btSoftBody anchor (appendAnchor: a node attached to a rigid body) holds the simulated node `id`.
+  /// Anchored nodes stay in the cut (no operation begins on their blocks), and every anchor follows its node through
+  /// the body's reorderings (swap-with-last removals, restore_order); a node anchored while an operation removes it
+  /// hands its anchor to the node that takes its place (the nearest child at a refine's end, the parent at a
+  /// coarse's end). O(anchors).
   bool anchored(TreeId id) const;
   /// Begins replacing `id` by its children. Requires can_refine(id).ok. O(1).
   void begin_refine(TreeId id);
@@ -337,6 +356,15 @@ class TcSoftBody : public btSoftBody {
   // node and link primitives, all O(1) or O(degree)
   int add_node(TreeId id, const btVector3& x, const btVector3& v, TreeId beside);
   void remove_node(TreeId id);
+  /// Re-points every Bullet anchor (m_anchors: appendAnchor's, or an application's own) that holds the node at `from`
+  /// to `to`, where that node now lives: a node moved in Bullet's array keeps its anchors. O(anchors).
+  void follow_anchors(const Node* from, Node* to);
+  /// Before `from` leaves Bullet at an end operation: its anchors (an application anchored it while the operation
+  /// blended) go to `to`, the node of the committed cut that takes its place, with the same attachment point on the
+  /// rigid body, so the cloth stays attached. O(anchors).
+  void hand_over_anchors(TreeId from, TreeId to);
+  /// The child of `parent` whose Bullet node lies nearest the parent's (both simulated: a refine ending). O(children).
+  TreeId nearest_child(TreeId parent) const;
   int add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op);
   void remove_link(int link);
   /// With hanging interfaces, after add_link: when the new link and one already there from the same coarse node to
@@ -514,6 +542,7 @@ class TcSoftBody : public btSoftBody {
   int link_reallocations_ = 0;
   OpSink* sink_ = nullptr;
   CutListener* listener_ = nullptr;
+  LifetimeListener* lifetime_ = nullptr;
   /// The running operation's work (OpWork's definitions): zeroed when an operation starts, emitted when it ends.
   /// Primitives count into it whenever they run; between operations (the blend ramp) nothing reads it.
   OpWork work_;

@@ -41,6 +41,33 @@ Validation TcSoftBody::validate() const {
     fail("the compliant material in a world whose soft-body solver is not a tcsb::TcSoftBodySolver: build the world "
          "with one (tc_softbody_solver.h)");
   if (m_nodes.capacity() < static_cast<int>(tree_size)) fail("node capacity below the tree size");
+  // In a collision world (the world gave the body a broadphase proxy) the body's world info must be that world's:
+  // Bullet's step updates the body's box in m_worldInfo->m_broadphase, and an info of the body's own has none.
+  if (getBroadphaseHandle() != nullptr && (m_worldInfo == nullptr || m_worldInfo->m_broadphase == nullptr))
+    fail("in a collision world but built with a btSoftBodyWorldInfo that has no broadphase (not the world's "
+         "getWorldInfo()): the world's next step would crash in btSoftBody::updateBounds");
+  // Anchors (appendAnchor: a node attached to a rigid body) hold a Node*, which the body re-points whenever it moves
+  // the node (follow_anchors, restore_order, hand_over_anchors). Checked first, so that an anchor that lost its node
+  // is named as such before the node it left behind is reported.
+  for (int a = 0; a < m_anchors.size(); ++a) {
+    const std::string name = "anchor " + std::to_string(a);
+    const std::ptrdiff_t i = m_nodes.size() > 0 ? m_anchors[a].m_node - &m_nodes[0] : -1;
+    if (i < 0 || i >= m_nodes.size()) {
+      fail(name + ": points at no simulated node (its Node* is past the live nodes or not this body's): the cloth is "
+                  "no longer attached to its rigid body");
+      continue;
+    }
+    const TreeId id = tree_of_[static_cast<std::size_t>(i)];
+    if (m_anchors[a].m_body == nullptr) fail(name + ": has no rigid body");
+    const Node& node = m_nodes[static_cast<int>(i)];
+    if (node.m_battach == 0)
+      fail(name + ": its node (Bullet " + std::to_string(i) + ", tree " + std::to_string(id) +
+           ") is not marked attached (m_battach, which appendAnchor sets): a stale Node* that landed on another node, "
+           "or an anchor appended without appendAnchor");
+    if (node.m_im == 0 && m_anchors[a].m_body != nullptr && m_anchors[a].m_body->getInvMass() == 0)
+      fail(name + ": holds a pinned node (tree " + std::to_string(id) +
+           ") to a static body: Bullet's anchor solve divides by their zero inverse masses");
+  }
 
   // Nodes: mapping both ways, DBVT leaves, masses, pins, finiteness.
   if (static_cast<int>(tree_of_.size()) != m_nodes.size()) fail("tree_of_ size differs from Bullet's node count");
@@ -63,7 +90,8 @@ Validation TcSoftBody::validate() const {
     // Out of contact exactly while it arrives, and only under the paper's rule (TcSettings::arrivals_collide).
     // (Bullet's appendAnchor sets the same flag on an anchored node.)
     if ((n.m_battach != 0) != (anchored(id) || (!settings_.arrivals_collide && state(id) == CutState::kArriving)))
-      fail(name + (n.m_battach != 0 ? ": out of collisions but not an arriving node of the paper's rule"
+      fail(name + (n.m_battach != 0 ? ": out of collisions (m_battach) but no anchor holds it and it is not an "
+                                      "arriving node of the paper's rule"
                                     : ": arriving under the paper's rule but taking part in collisions"));
     if (!finite(n.m_x) || !finite(n.m_v)) fail(name + ": NaN or Inf position/velocity");
     const LodNode& t = lod.node(id);
@@ -182,18 +210,6 @@ Validation TcSoftBody::validate() const {
     if (op.step < 0 || op.step >= settings_.blend_steps) fail("operation step out of range");
   }
   if (link_reallocations_ != 0) fail("the link array was reallocated during an operation");
-
-  // Anchors hold Node*: each must point at a simulated node that no operation is about to remove.
-  for (int a = 0; a < m_anchors.size(); ++a) {
-    const std::ptrdiff_t i = m_nodes.size() > 0 ? m_anchors[a].m_node - &m_nodes[0] : -1;
-    if (i < 0 || i >= m_nodes.size()) {
-      fail("anchor " + std::to_string(a) + ": points at no simulated node");
-      continue;
-    }
-    const TreeId id = tree_of_[static_cast<std::size_t>(i)];
-    if (state(id) != CutState::kActive || record(id).op >= 0)
-      fail("anchor " + std::to_string(a) + ": its node (tree " + std::to_string(id) + ") is part of an operation");
-  }
   return out;
 }
 
