@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -211,6 +213,36 @@ TEST(SaliencyController, ATimeBudgetDoesNotCountAPauseAsAStep) {
   controller.resume();
   for (int s = 0; s < 3; ++s) step();
   EXPECT_EQ(controller.budget(), 250);
+}
+
+TEST(SaliencyController, AnEvaluationThatThrowsReachesTheSimulationThreadInBothModes) {
+  // A camera looking along its up direction (the parser and make_controller refuse it; the controller itself takes
+  // it as given) makes every evaluation throw. Synchronous, before_step throws; parallel, the worker's exception is
+  // rethrown at the join in after_step — and destroying the controller afterwards returns: before, the worker died
+  // (std::terminate) or the destructor waited forever for a job that would never finish.
+  Camera camera;
+  camera.pose = {{0, 5, 0}, {0, 0, 0}};
+  const auto net = net_of(17);
+  for (const bool parallel : {false, true}) {
+    SCOPED_TRACE(parallel ? "parallel" : "synchronous");
+    FeedbackSettings settings;
+    settings.view = true;
+    settings.parallel = parallel;
+    SceneWorld world({});
+    TcSoftBody body(world.info(), net, {}, {});
+    auto controller = std::make_unique<SaliencyController>(settings, 200, Spectator{camera, kDt});
+    EXPECT_THROW(
+        {
+          for (int s = 0; s < 3; ++s) {
+            body.advance_blends();
+            controller->before_step(body);
+            body.simulate_step(kDt);
+            controller->after_step(body);
+          }
+        },
+        std::invalid_argument);
+    controller.reset();
+  }
 }
 
 }  // namespace
