@@ -312,6 +312,23 @@ Camera parse_camera(const Reader& r, const json& j, const std::string& path) {
       k.pose = parse_camera_pose(r, key, c.up);
       c.path.push_back(k);
     }
+    // Every pose between two keyframes must give an image too: one that looks along up (a crane shot passing over
+    // its target) would stop the run at that step, so it is refused here, naming the keyframe it leads to.
+    if (const std::optional<CameraPathProblem> bad = camera_path_problem(c.path, c.up)) {
+      const CameraPose& a = c.path[bad->segment].pose;
+      const CameraPose& b = c.path[bad->segment + 1].pose;
+      const auto point = [](const std::array<double, 3>& v) {
+        return "[" + fmt_number(v[0]) + ", " + fmt_number(v[1]) + ", " + fmt_number(v[2]) + "]";
+      };
+      r.fail(index_path(o.at("path"), bad->segment + 1),
+             "on the way from the keyframe before, at time " + fmt_number(bad->time) + " s (position " +
+                 point(lerp(a.position, b.position, bad->weight)) + ", target " +
+                 point(lerp(a.target, b.target, bad->weight)) + "), " +
+                 (bad->problem == CameraPoseProblem::kNoDirection
+                      ? std::string("the position meets the target, so the camera looks nowhere")
+                      : std::string("the camera looks along its up direction, so the image has no up")) +
+                 "; add a keyframe that steers around it");
+    }
   } else {
     c.pose = parse_camera_pose(r, o, c.up);
   }

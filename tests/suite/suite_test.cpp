@@ -633,6 +633,18 @@ TEST(SuiteReject, CameraFields) {
                                     {"time": 1, "position": [0, 0, 6], "target": [0, 0, 0]}]})"),
                 "scene.camera.path[1].time");
   rejected_edit(camera(R"({"path": []})"), "scene.camera.path");
+  // Every pose between keyframes too: a crane shot over the target looks straight down (along up) halfway, and a
+  // camera running through its target looks nowhere; the keyframe the bad stretch leads to is named.
+  rejected_edit(camera(R"({"path": [{"time": 0, "position": [0, 5, -5], "target": [0, 0, 0]},
+                                    {"time": 2, "position": [0, 5, 5], "target": [0, 0, 0]}]})"),
+                "scene.camera.path[1]");
+  rejected_edit(camera(R"({"path": [{"time": 0, "position": [0, 1, 5], "target": [0, 0, 0]},
+                                    {"time": 1, "position": [0, 1, 4], "target": [0, 0, 0]},
+                                    {"time": 2, "position": [0, -1, -4], "target": [0, 0, 0]}]})"),
+                "scene.camera.path[2]");
+  rejected_edit(camera(R"({"up": [0, 0, 1], "path": [{"time": 0, "position": [3, 0, 5], "target": [0, 0, 0]},
+                                                    {"time": 1, "position": [-3, 0, 5], "target": [0, 0, 0]}]})"),
+                "scene.camera.path[1]");
   // The view terms see through the camera: without one they would silently do nothing.
   rejected_edit([](json& j) { j["feedback"] = {{"view", true}}; }, "feedback.view");
   rejected_edit([](json& j) { j["axes"] = {{"feedback.view", {false, true}}}; }, "feedback.view");
