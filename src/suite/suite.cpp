@@ -427,6 +427,16 @@ void check_memory(const Suite& suite, const Reader& r) {
                         " warm-up) x " + std::to_string(expand_cases(suite).size()) + " cases x " +
                         std::to_string(suite.repetitions) + " repetitions" + budget);
   }
+  if (sdf_cells(suite.scene) > 0) {
+    // The colliders' distance field is what a fine voxel makes large: without it the suite may fit.
+    Suite without_field = suite;
+    without_field.scene.rigid_contact = false;
+    if (!memory_shortfall(without_field))
+      r.fail("scene.sdf_voxel", "the colliders' distance field at " + fmt_number(suite.scene.sdf_voxel) +
+                                    " m voxels (up to " +
+                                    std::to_string(static_cast<long long>(sdf_cells(suite.scene))) +
+                                    " cells of 3^3 voxels in each body's world)" + budget);
+  }
   if (suite.interleave_across_nets) {
     // The sum over the nets is too much, but one net at a time may fit: then the field is what to change.
     Suite one_net_at_a_time = suite;

@@ -47,6 +47,26 @@ TEST_F(Cli, SuiteBeyondUlimitIsRefusedNotCrashed) {
   EXPECT_FALSE(fs::exists(dir_ / "out.json"));
 }
 
+// Issue 60: the estimate left out the colliders' sparse signed-distance field and each body's collision world. With
+// a fine sdf_voxel the field alone may take Bullet's 256 K cells of 304 B per body: validate said a few MiB, and the
+// run was killed by the kernel. The estimate counts both now, and names the voxel when it is what does not fit.
+TEST_F(Cli, ACollidersFineDistanceFieldIsCountedAndNamed) {
+  if (kAddressSanitized) GTEST_SKIP() << "no sanitized process starts under ulimit -v (cli_fixture.h)";
+  const auto with_scene = [](const std::string& voxel) {
+    return replaced(kTinySuite, "\"solver\"",
+                    "\"scene\": {\"colliders\": [{\"shape\": \"sphere\", \"radius\": 0.5}], \"sdf_voxel\": " + voxel +
+                        "}, \"solver\"");
+  };
+  write_file(dir_ / "coarse.json", with_scene("0.25"));
+  write_file(dir_ / "fine.json", with_scene("0.002"));
+  const std::string limited = "sh -c 'ulimit -v 150000; exec \"" + std::string(TCSB_BINARY) + "\" validate ";
+  const Outcome coarse = shell(limited + "coarse.json'");
+  EXPECT_EQ(coarse.exit_code, 0) << coarse.err;
+  const Outcome fine = shell(limited + "fine.json'");
+  expect_one_line_exit_2(fine, "scene.sdf_voxel", "a fine distance field under ulimit -v");
+  EXPECT_NE(fine.err.find("ulimit -v"), std::string::npos) << fine.err;
+}
+
 // When an allocation fails anyway (here: tcsb frames keeps 800 captures of a 65 x 65 net, far more than the
 // limit), the user gets exit 2 and one line naming the suite and the net, not a signal or an internal error.
 TEST_F(Cli, AllocationFailureIsExit2NamingSuiteAndNet) {
