@@ -122,4 +122,11 @@ struct Spectator {
   double dt = 1.0 / 60.0;
 };
 
+/// Throws std::invalid_argument naming the field ("Spectator: camera.path[1]: ...") when the spectator gives no image
+/// at some time: a field of view outside (0, 180) degrees, an image without pixels, a zero or non-finite up, a
+/// non-finite position, target or time, keyframe times not ascending, a pose (at a keyframe or between two:
+/// camera_path_problem) that looks nowhere or along up, or a step length that is not a finite number > 0. What the
+/// suite parser refuses, for a library user who builds the camera in code; make_controller checks with it.
+void check_spectator(const Spectator& spectator);
+
 }  // namespace tcsb
