@@ -95,7 +95,7 @@ const AxisSetting kAxisSettings[] = {
     {"dt",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.world.dt = r.number(v, at, kFraction); }},
     {"gravity", [](const Reader& r, const json& v, const std::string& at,
-                   Suite& s) { s.world.gravity = r.number(v, at, kNonNegative); }},
+                   Suite& s) { s.world.gravity = r.number(v, at, kSceneNonNegative); }},
     {"steps",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.steps = whole(r, v, at, 1, INT_MAX); }},
     {"warmup_steps", [](const Reader& r, const json& v, const std::string& at,
