@@ -95,7 +95,7 @@ TEST_F(Cli, ValgrindThatCannotStartTheRunIsExit3WithALineOfTcsbs) {
   if (!counts_instructions(o)) GTEST_SKIP() << o.err;
   EXPECT_EQ(o.exit_code, 3) << o.err;
   const std::size_t ours = o.err.find("tcsb: error: --measure instructions: valgrind could not start the run");
-  EXPECT_NE(ours, std::string::npos) << o.err;
+  ASSERT_NE(ours, std::string::npos) << o.err;
   EXPECT_EQ(count_lines(o.err.substr(ours)), 1) << o.err;
   EXPECT_FALSE(fs::exists(dir_ / "out.json"));
   // Valgrind ending without a word, and without starting tcsb, is exit 3 too, not its own exit 1.
