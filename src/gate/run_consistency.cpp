@@ -91,14 +91,6 @@ void check_instruction_counts(const ResultView& result) {
     if (ok == 0 && n.total != 0)
       throw InputError(result.file, path + ".total",
                        std::to_string(n.total) + ", but case " + c.label + " has no ok repetition to count");
-    std::int64_t listed = 0;
-    for (std::size_t f = 0; f < n.functions.size(); ++f) {
-      listed += n.functions[f].second;  // each at most total (read_instructions caps them): no overflow
-      if (listed > n.total)
-        throw InputError(result.file, path + ".functions[" + std::to_string(f) + "]",
-                         "the functions listed count more instructions than the case's total (" +
-                             std::to_string(n.total) + ")");
-    }
   }
 }
 
