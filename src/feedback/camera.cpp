@@ -45,7 +45,7 @@ void check_pose(const std::string& field, const CameraPose& pose, const std::arr
 
 }  // namespace
 
-void check_spectator(const Spectator& spectator) {
+void validate_spectator(const Spectator& spectator) {
   const Camera& c = spectator.camera;
   if (!(std::isfinite(spectator.dt) && spectator.dt > 0))
     refuse("dt", "must be a finite number > 0, got " + text(spectator.dt));

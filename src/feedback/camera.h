@@ -127,6 +127,6 @@ struct Spectator {
 /// non-finite position, target or time, keyframe times not ascending, a pose (at a keyframe or between two:
 /// camera_path_problem) that looks nowhere or along up, or a step length that is not a finite number > 0. What the
 /// suite parser refuses, for a library user who builds the camera in code; make_controller checks with it.
-void check_spectator(const Spectator& spectator);
+void validate_spectator(const Spectator& spectator);
 
 }  // namespace tcsb
