@@ -42,6 +42,22 @@ def field(doc, path, name):
         raise InputError(f"{path}: missing or malformed field '{name}'")
 
 
+def points(doc, path, name):
+    """The list of [x, y, z] points at field `name`: each exactly three finite numbers (a point of two coordinates
+    would be measured on two silently)."""
+    value = field(doc, path, name)
+    if not isinstance(value, list) or not value:
+        raise InputError(f"{path}: field '{name}' must be a non-empty list of [x, y, z] points")
+    for k, point in enumerate(value):
+        if (not isinstance(point, list) or len(point) != 3
+                or not all(isinstance(c, (int, float)) and not isinstance(c, bool) and math.isfinite(c) for c in point)):
+            shown = json.dumps(point)
+            shown = shown if len(shown) <= 40 else shown[:37] + "..."
+            raise InputError(f"{path}: field '{name}.{k}' must be a point [x, y, z] of three finite numbers, "
+                             f"got {shown}")
+    return value
+
+
 def report(path, worst_pct):
     try:
         with open(path) as f:
@@ -51,22 +67,25 @@ def report(path, worst_pct):
     if field(doc, path, "kind") != "frames":
         raise InputError(f"{path}: field 'kind' is not \"frames\" (give the output of `tcsb frames`)")
     extent = field(doc, path, "net.extent")
-    if not isinstance(extent, (int, float)) or extent <= 0:
+    if not isinstance(extent, (int, float)) or isinstance(extent, bool) or not math.isfinite(extent) or extent <= 0:
         raise InputError(f"{path}: field 'net.extent' must be a positive number")
     frames = field(doc, path, "frames")
-    if not frames:
-        raise InputError(f"{path}: field 'frames' is empty")
+    if not isinstance(frames, list) or not frames:
+        raise InputError(f"{path}: field 'frames' must be a non-empty list")
     print(f"{path}: net {field(doc, path, 'net.name')}, compression {field(doc, path, 'compression')}, "
           f"calibrated {field(doc, path, 'calibrated')}; the worst {worst_pct:g} % of the grid points")
     print(f"  {'step':>5}  {'RMS %':>7}  {'share':>6}  {'RMS % if exact':>14}")
     rows = []
     for i, frame in enumerate(frames):
-        reference = field(doc, path, f"frames.{i}.plain")
-        subject = field(doc, path, f"frames.{i}.tcsb_surface")
-        if len(reference) != len(subject) or not reference:
+        reference = points(doc, path, f"frames.{i}.plain")
+        subject = points(doc, path, f"frames.{i}.tcsb_surface")
+        step = field(doc, path, f"frames.{i}.step")
+        if not isinstance(step, int) or isinstance(step, bool):
+            raise InputError(f"{path}: field 'frames.{i}.step' must be a whole number")
+        if len(reference) != len(subject):
             raise InputError(f"{path}: field 'frames.{i}.tcsb_surface' does not match 'frames.{i}.plain' in length")
         rows.append(concentration(reference, subject, extent, worst_pct))
-        print(f"  {field(doc, path, f'frames.{i}.step'):>5}  {rows[-1][0]:7.3f}  {rows[-1][1]:6.2f}  {rows[-1][2]:14.3f}")
+        print(f"  {step:>5}  {rows[-1][0]:7.3f}  {rows[-1][1]:6.2f}  {rows[-1][2]:14.3f}")
     mean = [sum(r[k] for r in rows) / len(rows) for k in range(3)]
     print(f"  {'mean':>5}  {mean[0]:7.3f}  {mean[1]:6.2f}  {mean[2]:14.3f}")
 
@@ -84,8 +103,17 @@ def self_test():
     print("error-concentration self-test: ok")
 
 
+class OneLineParser(argparse.ArgumentParser):
+    """Bad arguments: exit 2 and one line, as bad input (argparse prints its usage on a second line)."""
+
+    def error(self, message):
+        print(f"error-concentration: {message} (usage: python3 scripts/error-concentration.py FRAMES.json "
+              f"[--worst PCT] | --self-test)", file=sys.stderr)
+        sys.exit(2)
+
+
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser = OneLineParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("frames", nargs="?", help="a `tcsb frames` file")
     parser.add_argument("--worst", type=float, default=7.0, help="percentage of the grid points (default 7)")
     parser.add_argument("--self-test", action="store_true", help="check the arithmetic on synthetic frames")

@@ -13,10 +13,30 @@
 # Takes about K + 3 SLOWED_RUNS + 3 ci runs (half a minute each on the development VM).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Bad arguments: exit 2 and one line, before anything is built or run (0 runs built both trees and printed an empty
+# table with exit 0).
+bad() {
+  echo "gate-error-rates: $1 (usage: bash scripts/gate-error-rates.sh [K] [SLOWED_RUNS], 2 <= K, 1 <= SLOWED_RUNS <= K)" >&2
+  exit 2
+}
+(($# <= 2)) || bad "at most two arguments, got $#"
 runs=${1:-6}
 slowed_runs=${2:-4}
+[[ $runs =~ ^[0-9]{1,4}$ ]] && ((10#$runs >= 2)) || bad "K must be a whole number of runs >= 2, got '$runs'"
+runs=$((10#$runs))
+[[ $slowed_runs =~ ^[0-9]{1,4}$ ]] && ((10#$slowed_runs >= 1 && 10#$slowed_runs <= runs)) ||
+  bad "SLOWED_RUNS must be a whole number from 1 to K ($runs), got '$slowed_runs'"
+slowed_runs=$((10#$slowed_runs))
 percents=${TCSB_RATES_PERCENTS:-5 10 25}
 thresholds=${TCSB_RATES_THRESHOLDS:-0.05 0.1 0.25}
+[ -n "${percents// /}" ] || bad "TCSB_RATES_PERCENTS is empty"
+for p in $percents; do
+  [[ $p =~ ^[0-9]{1,3}$ ]] && ((10#$p >= 1)) || bad "TCSB_RATES_PERCENTS: a slowdown must be a whole percentage >= 1, got '$p'"
+done
+[ -n "${thresholds// /}" ] || bad "TCSB_RATES_THRESHOLDS is empty"
+for t in $thresholds; do
+  [[ $t =~ ^(0|[0-9]*\.[0-9]+|[1-9][0-9]*)$ ]] || bad "TCSB_RATES_THRESHOLDS: a threshold must be a number >= 0, got '$t'"
+done
 build=${TCSB_BUILD_DIR:-build}
 slowed=build-inject
 tmp=$(mktemp -d)

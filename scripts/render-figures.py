@@ -7,7 +7,8 @@ Usage: python3 scripts/render-figures.py [--check]
                python3-matplotlib)
   --check      only check the manifest against the tree (no matplotlib needed): every figure's input is still the
                newest kept file that holds its data, the input's, this script's and the PNG's SHA-256 are those
-               recorded. Exit 0 current, 1 stale (each stale figure named on stderr), 2 a figure has no input.
+               recorded. Exit 0 current, 1 stale (each stale figure named on stderr), 2 a figure has no input or a
+               kept file is not a JSON document (one line naming it).
 
 The inputs, each the newest by name (file names start with the date; reverse C collation, as render-results.sh):
   fig4_operations.png, fig5_step_time.png  results/runs/*.json of the paper suite with a reproduction and the fits
@@ -20,7 +21,8 @@ The inputs, each the newest by name (file names start with the date; reverse C c
       over its reconstructed surface) and the calibrated uniform grid of the same node count, at each recorded step
 Usage: python3 scripts/render-figures.py --animate FRAMES GIF
                draws the same three views for every frame of FRAMES (a `tcsb frames` file of a scene with a camera)
-               into an animated GIF; not part of the manifest (its input is too large to keep)
+               into an animated GIF; not part of the manifest (its input is too large to keep). Exit 2 and one line
+               for a FRAMES that is not such a file, a GIF in no directory, or no matplotlib, before anything is drawn
 Figure 6's rows: plain Bullet (every grid node), TC-SB's surface reconstructed at every grid node, TC-SB's simulated
 links with those an operation is replacing (fading in or out, tethers, links about to go) in red. The figures show
 exactly the numbers in their input; PNG bytes depend on the matplotlib version, so the manifest records them only to
@@ -40,6 +42,19 @@ MANIFEST = os.path.join(FIGURES, "manifest.json")
 SCRIPT = os.path.join("scripts", "render-figures.py")
 
 
+class BadInput(Exception):
+    """A file the script cannot read (a kept run cut short, a frames file that is not one): exit 2, one line."""
+
+
+def read_json(path, shown):
+    """The JSON document at `path` (`shown` names it in the message); BadInput when it is not one."""
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:  # ValueError: JSONDecodeError, UnicodeDecodeError
+        raise BadInput(f"{shown}: not a readable JSON document ({e})")
+
+
 def sha256(path):
     with open(os.path.join(ROOT, path), "rb") as f:
         return hashlib.sha256(f.read()).hexdigest()
@@ -51,8 +66,9 @@ def newest(directory, accepts):
     if not os.path.isdir(full):
         return None
     for name in sorted((n for n in os.listdir(full) if n.endswith(".json")), reverse=True):
-        with open(os.path.join(full, name)) as f:
-            doc = json.load(f)
+        doc = read_json(os.path.join(full, name), os.path.join(directory, name))
+        if not isinstance(doc, dict):
+            raise BadInput(f"{os.path.join(directory, name)}: not a JSON object (a kept run or frames file is one)")
         if accepts(doc):
             return os.path.join(directory, name)
     return None
@@ -281,15 +297,20 @@ def figure_viewer(plt, doc, png):
 
 
 def animate(frames_path, gif):
-    import matplotlib
+    # The input and the output's place first, then matplotlib: bad input is exit 2 before anything is drawn.
+    doc = read_json(frames_path, frames_path)
+    if not isinstance(doc, dict) or "camera" not in doc or not isinstance(doc.get("frames"), list) or not doc["frames"]:
+        raise BadInput(f"{frames_path}: not frames of a scene with a camera (`tcsb frames --suite viewer-...`)")
+    if not os.path.isdir(os.path.dirname(os.path.abspath(gif))):
+        raise BadInput(f"{gif}: its directory does not exist")
+    try:
+        import matplotlib
+    except ImportError:
+        raise BadInput("--animate needs matplotlib, which is not installed (Debian: apt-get install "
+                       "python3-matplotlib)")
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.animation import FuncAnimation, PillowWriter
-    with open(frames_path) as f:
-        doc = json.load(f)
-    if "camera" not in doc or not doc.get("frames"):
-        print(f"render-figures: {frames_path}: not frames of a scene with a camera", file=sys.stderr)
-        return 2
     fig, axes = plt.subplots(1, 3, figsize=(10, 2.3))
 
     def draw(i):
@@ -301,7 +322,10 @@ def animate(frames_path, gif):
             ax.set_title(title, fontsize=8)
         axes[0].set_ylabel(f"{frame['step'] * doc['dt']:.2f} s", fontsize=8)
 
-    FuncAnimation(fig, draw, frames=len(doc["frames"])).save(gif, writer=PillowWriter(fps=10), dpi=70)
+    try:
+        FuncAnimation(fig, draw, frames=len(doc["frames"])).save(gif, writer=PillowWriter(fps=10), dpi=70)
+    except (KeyError, IndexError, TypeError, ValueError) as e:
+        raise BadInput(f"{frames_path}: a frame lacks what the views need ({type(e).__name__}: {e})")
     plt.close(fig)
     print(f"render-figures: {gif} from {frames_path}", file=sys.stderr)
     return 0
@@ -335,8 +359,7 @@ def render():
         return 2
     figures = {}
     for png, path in inputs.items():
-        with open(os.path.join(ROOT, path)) as f:
-            doc = json.load(f)
+        doc = read_json(os.path.join(ROOT, path), path)
         DRAW[png](plt, doc, os.path.join(ROOT, FIGURES, png))
         figures[png] = {"from": path, "from_sha256": sha256(path), "png_sha256": sha256(os.path.join(FIGURES, png))}
         print(f"render-figures: {FIGURES}/{png} from {path}", file=sys.stderr)
@@ -386,12 +409,20 @@ def check():
     return 1 if reasons else 0
 
 
+def main(args):
+    try:
+        if args == ["--check"]:
+            return check()
+        if len(args) == 3 and args[0] == "--animate":
+            return animate(args[1], args[2])
+        if args:
+            raise BadInput(f"unknown arguments {' '.join(args)} (usage: python3 {SCRIPT} [--check | --animate FRAMES "
+                           f"GIF]; more in the script's opening comment)")
+        return render()
+    except BadInput as e:
+        print(f"render-figures: {e}", file=sys.stderr)
+        return 2
+
+
 if __name__ == "__main__":
-    if sys.argv[1:] == ["--check"]:
-        sys.exit(check())
-    if len(sys.argv) == 4 and sys.argv[1] == "--animate":
-        sys.exit(animate(sys.argv[2], sys.argv[3]))
-    if sys.argv[1:]:
-        print(__doc__, file=sys.stderr)
-        sys.exit(2)
-    sys.exit(render())
+    sys.exit(main(sys.argv[1:]))

@@ -109,6 +109,8 @@ CLI::App* add_run_command(CLI::App& app, RunArgs& args) {
 }
 
 int run_command(const RunArgs& args) {
+  // Under callgrind (started by the outer tcsb): tell it valgrind did start this process, whatever happens next.
+  if (running_on_valgrind()) note_started_under_callgrind();
   checked_format(args.format);
   const std::optional<ShardIndex> shard = checked_shard(args);
   check_out_path(args.out);

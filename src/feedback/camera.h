@@ -4,9 +4,14 @@
 // error in pixels see the cloth through it. Plain data and its pose over time; no Bullet.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <optional>
 #include <vector>
+
+#include "../feedback/keyframe_path.h"
 
 namespace tcsb {
 
@@ -44,6 +49,58 @@ struct CameraKey {
   CameraPose pose;
 };
 
+/// A pose between two keyframes of a path that gives no image.
+struct CameraPathProblem {
+  std::size_t segment = 0;  ///< between keyframes `segment` and `segment + 1`
+  double weight = 0;        ///< this far from one to the other, in (0, 1)
+  double time = 0;          ///< seconds of simulated time
+  CameraPoseProblem problem = CameraPoseProblem::kNone;
+};
+
+/// The worst pose strictly between two consecutive keyframes of `path`, where it gives no image (the keyframes
+/// themselves are camera_pose_problem's to check). Every pose a path reaches is checked, not a sample of them: the
+/// viewing direction d(w) = target(w) - position(w) is linear in the weight w, so is its cross product with up, c(w),
+/// and camera_pose_problem's rule |c| > 1e-6 |d| |up| holds on the whole segment exactly when the quadratic
+/// g(w) = |c(w)|^2 - 1e-12 |up|^2 |d(w)|^2 stays above 0 there; its minimum is at a vertex or an end. The pose at
+/// the vertex, interpolated as Camera::pose_at interpolates it, is also put to camera_pose_problem itself, so
+/// rounding cannot pass a pose the rule refuses. O(keyframes).
+inline std::optional<CameraPathProblem> camera_path_problem(const std::vector<CameraKey>& path,
+                                                            const std::array<double, 3>& up) {
+  using V = std::array<double, 3>;
+  const auto sub = [](const V& a, const V& b) { return V{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+  const auto dot = [](const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const auto cross = [](const V& a, const V& b) {
+    return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  const double k2 = 1e-12 * dot(up, up);
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const CameraPose& from = path[i].pose;
+    const CameraPose& to = path[i + 1].pose;
+    const V d0 = sub(from.target, from.position);
+    const V e = sub(sub(to.target, to.position), d0);  // d(w) = d0 + w e
+    const V c0 = cross(d0, up);
+    const V f = sub(cross(sub(to.target, to.position), up), c0);  // c(w) = c0 + w f
+    // g(w) = a w^2 + 2 b w + g(0): a minimum inside (0, 1) only when a > 0, at w = -b / a, of g(0) - b^2 / a.
+    const double a = dot(f, f) - k2 * dot(e, e);
+    const double b = dot(c0, f) - k2 * dot(d0, e);
+    if (!(a > 0)) continue;
+    const double w = -b / a;
+    if (!(w > 0 && w < 1)) continue;
+    const double g = dot(c0, c0) - k2 * dot(d0, d0) + w * b;
+    const CameraPose pose{lerp(from.position, to.position, w), lerp(from.target, to.target, w)};
+    CameraPoseProblem problem = camera_pose_problem(pose, up);
+    if (problem == CameraPoseProblem::kNone && g <= 0) {
+      // Refused by the exact rule though rounding passed the interpolated pose: name what it comes closest to.
+      const V d = sub(pose.target, pose.position);
+      problem = dot(d, d) <= 1e-18 * std::max(dot(d0, d0), dot(e, e)) ? CameraPoseProblem::kNoDirection
+                                                                      : CameraPoseProblem::kLooksAlongUp;
+    }
+    if (problem != CameraPoseProblem::kNone)
+      return CameraPathProblem{i, w, path[i].time + w * (path[i + 1].time - path[i].time), problem};
+  }
+  return std::nullopt;
+}
+
 struct Camera {
   CameraPose pose;                    ///< the pose when there is no path
   std::array<double, 3> up{0, 1, 0};  ///< world direction that appears upwards in the image (not along the view)
@@ -64,5 +121,12 @@ struct Spectator {
   Camera camera;
   double dt = 1.0 / 60.0;
 };
+
+/// Throws std::invalid_argument naming the field ("Spectator: camera.path[1]: ...") when the spectator gives no image
+/// at some time: a field of view outside (0, 180) degrees, an image without pixels, a zero or non-finite up, a
+/// non-finite position, target or time, keyframe times not ascending, a pose (at a keyframe or between two:
+/// camera_path_problem) that looks nowhere or along up, or a step length that is not a finite number > 0. What the
+/// suite parser refuses, for a library user who builds the camera in code; make_controller checks with it.
+void validate_spectator(const Spectator& spectator);
 
 }  // namespace tcsb

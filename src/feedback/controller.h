@@ -51,7 +51,8 @@ void check_spectator(const Spectator& spectator);
 
 /// The controller a suite asks for, holding the body near `target_nodes`. `seed` makes random choices repeatable.
 /// `spectator`: whom the view terms (settings.view) see through; required with them, ignored without. Throws
-/// std::invalid_argument when settings.view is on without a spectator.
+/// std::invalid_argument naming the field for settings no feedback stage can run with (check_feedback_settings),
+/// settings.view without a spectator, or a spectator that gives no image (validate_spectator).
 std::unique_ptr<Controller> make_controller(const FeedbackSettings& settings, int target_nodes, std::uint64_t seed,
                                             const std::optional<Spectator>& spectator = std::nullopt);
 

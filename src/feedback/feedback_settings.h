@@ -70,4 +70,9 @@ struct FeedbackSettings {
 /// Name used in suites and reports: "saliency" or "random".
 const char* policy_name(PolicyKind policy);
 
+/// Throws std::invalid_argument naming the field ("FeedbackSettings: evaluation_interval must be >= 1, got 0") when a
+/// setting is one no feedback stage can run with: the ranges the suite parser allows, for a library user who builds
+/// the settings in code. make_controller checks its settings with it.
+void check_feedback_settings(const FeedbackSettings& settings);
+
 }  // namespace tcsb

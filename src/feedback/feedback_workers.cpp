@@ -1,5 +1,7 @@
 #include "feedback/feedback_workers.h"
 
+#include <utility>
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #endif
@@ -70,19 +72,43 @@ void FeedbackWorkers::finish_job() {
   done_.notify_all();
 }
 
-void FeedbackWorkers::wait() {
-  {
-    std::unique_lock<std::mutex> lock(mutex_);
-    if (std::function<void()> job = take_job()) {
-      taken_back_.fetch_add(1, std::memory_order_relaxed);
-      lock.unlock();
-      job();
-      lock.lock();
-      finish_job();
-      return;
-    }
+void FeedbackWorkers::run_job(const std::function<void()>& job) {
+  std::exception_ptr failure;
+  try {
+    job();
+  } catch (...) {
+    failure = std::current_exception();
   }
-  wait_for_worker();
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (failure) {
+    failure_ = failure;
+    failed_.store(true, std::memory_order_release);
+  }
+  finish_job();
+}
+
+void FeedbackWorkers::rethrow_failure() {
+  if (!failed_.load(std::memory_order_acquire)) return;
+  std::exception_ptr failure;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    failure = std::exchange(failure_, nullptr);
+    failed_.store(false, std::memory_order_release);
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
+void FeedbackWorkers::wait() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  if (std::function<void()> job = take_job()) {
+    taken_back_.fetch_add(1, std::memory_order_relaxed);
+    lock.unlock();
+    run_job(job);
+  } else {
+    lock.unlock();
+    wait_for_worker();
+  }
+  rethrow_failure();
 }
 
 void FeedbackWorkers::wait_for_worker() {
@@ -111,16 +137,20 @@ void FeedbackWorkers::coordinator_loop() {
     if (stop_) return;
     std::function<void()> job = take_job();
     lock.unlock();
-    job();
-    lock.lock();
-    finish_job();
+    run_job(job);  // an exception is kept for the waiter: this thread lives on
   }
 }
 
 void FeedbackWorkers::run_chunks() {
   for (int c = next_chunk_.fetch_add(1); c < chunk_count_; c = next_chunk_.fetch_add(1)) {
-    (*chunk_fn_)(c);
+    std::exception_ptr failure;
+    try {
+      (*chunk_fn_)(c);
+    } catch (...) {
+      failure = std::current_exception();  // a chunk that threw is done too, or parallel_for would wait forever
+    }
     std::lock_guard<std::mutex> lock(mutex_);
+    if (failure && !chunk_failure_) chunk_failure_ = failure;
     if (++chunks_done_ == chunk_count_) done_.notify_all();
   }
 }
@@ -153,6 +183,10 @@ void FeedbackWorkers::parallel_for(int chunks, const std::function<void(int)>& f
   done_.wait(lock, [&] { return chunks_done_ == chunk_count_; });
   next_chunk_.store(kParked);
   chunk_fn_ = nullptr;
+  if (std::exception_ptr failure = std::exchange(chunk_failure_, nullptr)) {
+    lock.unlock();
+    std::rethrow_exception(failure);
+  }
 }
 
 }  // namespace tcsb

@@ -21,7 +21,13 @@ SaliencyController::SaliencyController(const FeedbackSettings& settings, int nod
 }
 
 SaliencyController::~SaliencyController() {
-  if (workers_) workers_->wait();
+  if (!workers_) return;
+  // The worker may still read the body's cut: join it. What it threw is an error only for a caller of after_step(),
+  // which rethrows it; here the body is going away (perhaps during that very exception's unwinding), so it is dropped.
+  try {
+    workers_->wait();
+  } catch (...) {
+  }
 }
 
 int SaliencyController::budget() const { return std::min(node_budget_, time_budget_); }
@@ -123,8 +129,8 @@ void SaliencyController::after_step(const TcSoftBody& body) {
   if (!job_running_) return;
   // The worker read the cut in place; join it before the next boundary may change the cut.
   const Clock::time_point t0 = Clock::now();
-  workers_->wait();
   job_running_ = false;
+  workers_->wait();  // rethrows what the evaluation threw: the error reaches the simulation thread here
   const double waited = ms_since(t0);
   cost_.critical_ms += waited;
   cost_.total_ms += waited;

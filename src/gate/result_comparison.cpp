@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "gate/one_to_one_match.h"
+#include "gate/run_consistency.h"
 
 namespace tcsb {
 namespace {
@@ -199,6 +200,9 @@ std::string first_json_difference(const ojson& a, const ojson& b, const std::str
 
 ResultComparison compare_results(const ResultView& base, const ResultView& next) {
   check_same_suite(base, next);
+  // The instruction gate fails closed: a case without counts, or with counts no run writes, is refused, not skipped.
+  check_instruction_counts(base);
+  check_instruction_counts(next);
   ResultComparison out;
   out.measure = base.measure;
   const auto name = base.suite.find("name");

@@ -68,6 +68,32 @@ void check_repetitions(const ResultView& result, const CaseView& c, const std::s
 
 }  // namespace
 
+void check_instruction_counts(const ResultView& result) {
+  if (result.measure != "instructions") return;
+  for (std::size_t i = 0; i < result.cases.size(); ++i) {
+    const CaseView& c = result.cases[i];
+    const std::string path = "cases[" + std::to_string(i) + "].instructions";
+    if (!c.instructions)
+      throw InputError(result.file, path,
+                       "missing: a run with --measure instructions counts every case (case " + c.label + ")");
+    const InstructionsView& n = *c.instructions;
+    std::int64_t ok = 0;
+    for (const RepetitionView& r : c.repetitions) ok += r.status == "ok";
+    // Each timed step moves every simulated node at least once: far fewer instructions than that were not counted.
+    const double nodes = std::max(1.0, c.mean_nodes.value_or(1.0));
+    const double least = static_cast<double>(ok) * std::max(result.steps, 1) * nodes;
+    if (ok > 0 && static_cast<double>(n.total) < least)
+      throw InputError(result.file, path + ".total",
+                       std::to_string(n.total) + ", but " + std::to_string(ok) + " ok repetition(s) of " +
+                           std::to_string(result.steps) + " steps of " + c.label +
+                           " take at least one instruction per node and step (" +
+                           std::to_string(static_cast<std::int64_t>(least)) + ")");
+    if (ok == 0 && n.total != 0)
+      throw InputError(result.file, path + ".total",
+                       std::to_string(n.total) + ", but case " + c.label + " has no ok repetition to count");
+  }
+}
+
 void check_run_is_possible(const ResultView& result) {
   const std::map<std::string, std::int64_t> sizes = net_sizes(result);
   for (std::size_t i = 0; i < result.cases.size(); ++i) {
@@ -82,6 +108,7 @@ void check_run_is_possible(const ResultView& result) {
                            " nodes (its width x height)");
     check_repetitions(result, c, path);
   }
+  check_instruction_counts(result);
 }
 
 }  // namespace tcsb

@@ -10,9 +10,10 @@
 
 namespace tcsb {
 
-/// "" when `a` and `b` share no measurement; else the first case (by label and configuration) that both hold with
-/// the very same repetitions (numbers, statuses and mean step times, at least one of them timed), as
-/// "case LABEL has the same N repetition times".
+/// "" when `a` and `b` share no measurement; else where they do, as "case LABEL has the same N repetition time(s),
+/// M in all": the first case with repetitions (of one number and the very same mean step time) in both. Repetition
+/// by repetition, so a shard split by repetitions is found beside the result merged from it; two shared repetitions
+/// make one process (or one, when that is all the smaller file could share), a single one alike may be chance.
 std::string shared_measurement(const ResultView& a, const ResultView& b);
 
 }  // namespace tcsb

@@ -1,6 +1,9 @@
 #include "net/net.h"
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "net/net_pins.h"
 
@@ -11,6 +14,12 @@ Net::Net(const NetSpec& spec, RestPlacement rest) : spec_(spec) {
   if (w < 2 || h < 2) throw std::invalid_argument("Net: width and height must be >= 2");
   if (!(spec.size_x > 0) || !(spec.size_z > 0) || !(spec.mass > 0))
     throw std::invalid_argument("Net: sizes and mass must be positive");
+  // Issue 60: an infinite size, elevation or mass (or a NaN elevation) built a net of non-finite rest positions.
+  for (const auto& [field, value] : {std::pair<const char*, double>{"size_x", spec.size_x},
+                                     {"size_z", spec.size_z},
+                                     {"elevation", spec.elevation},
+                                     {"mass", spec.mass}})
+    if (!std::isfinite(value)) throw std::invalid_argument(std::string("Net: ") + field + " must be finite");
   const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
   rest_.resize(n);
   mass_.assign(n, spec.node_mass());

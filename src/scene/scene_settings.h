@@ -90,6 +90,12 @@ struct PinPath {
   }
 };
 
+/// A plane is built as a box (a slab) this thick under it and this wide (scene_world.cpp): Bullet's soft-rigid
+/// contacts (the sparse SDF) measure distances to convex shapes only, and btStaticPlaneShape is not one. Here so
+/// that the memory estimate (suite_memory.cpp) sizes the slab's distance field as the world builds it.
+inline constexpr double kPlaneSlabHalfThickness = 0.5;
+inline constexpr double kPlaneSlabHalfWidth = 100.0;
+
 /// The scene around the nets.
 struct SceneSettings {
   std::vector<Collider> colliders;

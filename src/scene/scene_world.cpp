@@ -38,11 +38,6 @@ btSoftBody::eAeroModel::_ aero_model(AeroModel model) {
   return Bullet::V_Point;
 }
 
-/// A plane is built as a slab this thick under it: Bullet's soft-rigid contacts (the sparse SDF) measure distances
-/// to convex shapes only, and btStaticPlaneShape is not one.
-constexpr double kPlaneSlabHalfThickness = 0.5;
-constexpr double kPlaneSlabHalfWidth = 100.0;
-
 /// The rotation that turns +y into `normal` (unit length).
 btQuaternion rotation_to(const btVector3& normal) {
   const btVector3 up(0, 1, 0);

@@ -134,7 +134,7 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
          {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale", "illumination"})
       read_axis_setting(r, fb, key, s);
     if (const json* light = fb.find("light_direction")) {
-      f.light_direction = r.numbers<3>(*light, fb.at("light_direction"), kAnyFinite);
+      f.light_direction = r.numbers<3>(*light, fb.at("light_direction"), kSceneCoordinate);
       if (f.light_direction == std::array<double, 3>{}) r.fail(fb.at("light_direction"), "must not be the zero vector");
     }
     fb.read("parallel", f.parallel);
@@ -204,7 +204,7 @@ std::vector<VectorKey> parse_vector_keys(const Reader& r, const json& keys, cons
     const Object key(r, keys[i], index_path(at, i), {"time", value_key});
     VectorKey k;
     k.time = parse_key_time(r, key, out.empty() ? nullptr : &out.back().time);
-    k.value = r.numbers<3>(key.need(value_key), key.at(value_key), kAnyFinite);
+    k.value = r.numbers<3>(key.need(value_key), key.at(value_key), kSceneCoordinate);
     out.push_back(k);
   }
   return out;
@@ -216,7 +216,7 @@ PinPath parse_pin_path(const Reader& r, const json& j, const std::string& path) 
   if (j.size() != 1) r.fail(path, "must have exactly one of \"velocity\" or \"keyframes\", got " + j.dump());
   PinPath p;
   if (const json* v = o.find("velocity")) {
-    p.velocity = r.numbers<3>(*v, o.at("velocity"), kAnyFinite);
+    p.velocity = r.numbers<3>(*v, o.at("velocity"), kSceneCoordinate);
     if (!p.moves()) r.fail(o.at("velocity"), "must not be zero (pins at rest need no path)");
     return p;
   }
@@ -239,7 +239,7 @@ Collider parse_collider(const Reader& r, const json& j, const std::string& path)
          {{"static", ColliderMotion::kStatic},
           {"kinematic", ColliderMotion::kKinematic},
           {"dynamic", ColliderMotion::kDynamic}});
-  c.position = read_vector(r, o, "position", kAnyFinite, c.position);
+  c.position = read_vector(r, o, "position", kSceneCoordinate, c.position);
   // Each shape takes its own size and nothing else's, so a misplaced key is an error, not silently ignored.
   const auto only_for = [&](const char* key, ColliderShape shape, const char* shape_name) {
     if (o.find(key) && c.shape != shape) r.fail(o.at(key), std::string("only for a ") + shape_name);
@@ -247,19 +247,22 @@ Collider parse_collider(const Reader& r, const json& j, const std::string& path)
   only_for("radius", ColliderShape::kSphere, "sphere");
   only_for("half_extents", ColliderShape::kBox, "box");
   only_for("normal", ColliderShape::kPlane, "plane");
-  o.read("radius", c.radius, kPositive);
-  c.half_extents = read_vector(r, o, "half_extents", kPositive, c.half_extents);
+  o.read("radius", c.radius, kSceneLength);
+  c.half_extents = read_vector(r, o, "half_extents", kSceneLength, c.half_extents);
   if (const json* n = o.find("normal")) {
-    const std::array<double, 3> v = r.numbers<3>(*n, o.at("normal"), kAnyFinite);
+    std::array<double, 3> v = r.numbers<3>(*n, o.at("normal"), kSceneCoordinate);
+    // Scaled by its largest component before its length is taken: a tiny normal's squares would underflow to 0.
+    const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+    if (!(largest > 0)) r.fail(o.at("normal"), "must not be the zero vector");
+    for (double& x : v) x /= largest;
     const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (!(length > 0)) r.fail(o.at("normal"), "must not be the zero vector");
     c.normal = {v[0] / length, v[1] / length, v[2] / length};
   }
   if (c.shape == ColliderShape::kPlane && c.motion == ColliderMotion::kDynamic)
     r.fail(o.at("motion"), "a plane cannot be dynamic (it has no finite mass)");
   if (o.find("velocity") && c.motion == ColliderMotion::kStatic)
     r.fail(o.at("velocity"), "a static collider has no velocity");
-  c.velocity = read_vector(r, o, "velocity", kAnyFinite, c.velocity);
+  c.velocity = read_vector(r, o, "velocity", kSceneCoordinate, c.velocity);
   if (const json* keys = o.find("path")) {
     if (c.motion != ColliderMotion::kKinematic) r.fail(o.at("path"), "only for a kinematic collider");
     // The path gives every position; a velocity or a fixed position beside it would be silently ignored.
@@ -269,7 +272,7 @@ Collider parse_collider(const Reader& r, const json& j, const std::string& path)
     c.position = value_at(c.path, 0);  // where it starts
   }
   if (o.find("mass") && c.motion != ColliderMotion::kDynamic) r.fail(o.at("mass"), "only for a dynamic collider");
-  o.read("mass", c.mass, kPositive);
+  o.read("mass", c.mass, kSceneQuantity);
   o.read("friction", c.friction, kUnit);
   return c;
 }
@@ -277,8 +280,8 @@ Collider parse_collider(const Reader& r, const json& j, const std::string& path)
 /// A camera pose's position and target (`o` holds both keys): distinct, and not looking along `up`.
 CameraPose parse_camera_pose(const Reader& r, const Object& o, const std::array<double, 3>& up) {
   CameraPose pose;
-  pose.position = r.numbers<3>(o.need("position"), o.at("position"), kAnyFinite);
-  pose.target = r.numbers<3>(o.need("target"), o.at("target"), kAnyFinite);
+  pose.position = r.numbers<3>(o.need("position"), o.at("position"), kSceneCoordinate);
+  pose.target = r.numbers<3>(o.need("target"), o.at("target"), kSceneCoordinate);
   switch (camera_pose_problem(pose, up)) {
     case CameraPoseProblem::kNoDirection:
       r.fail(o.at("target"), "must differ from position (the camera must look somewhere)");
@@ -292,7 +295,7 @@ CameraPose parse_camera_pose(const Reader& r, const Object& o, const std::array<
 Camera parse_camera(const Reader& r, const json& j, const std::string& path) {
   const Object o(r, j, path, {"position", "target", "up", "fov_deg", "image", "path"});
   Camera c;
-  c.up = read_vector(r, o, "up", kAnyFinite, c.up);
+  c.up = read_vector(r, o, "up", kSceneCoordinate, c.up);
   if (c.up == std::array<double, 3>{}) r.fail(o.at("up"), "must not be the zero vector");
   o.read("fov_deg", c.fov_deg, NumberRange{0.0, true, 180.0, true});
   if (const json* image = o.find("image")) {
@@ -313,6 +316,23 @@ Camera parse_camera(const Reader& r, const json& j, const std::string& path) {
       k.pose = parse_camera_pose(r, key, c.up);
       c.path.push_back(k);
     }
+    // Every pose between two keyframes must give an image too: one that looks along up (a crane shot passing over
+    // its target) would stop the run at that step, so it is refused here, naming the keyframe it leads to.
+    if (const std::optional<CameraPathProblem> bad = camera_path_problem(c.path, c.up)) {
+      const CameraPose& a = c.path[bad->segment].pose;
+      const CameraPose& b = c.path[bad->segment + 1].pose;
+      const auto point = [](const std::array<double, 3>& v) {
+        return "[" + fmt_number(v[0]) + ", " + fmt_number(v[1]) + ", " + fmt_number(v[2]) + "]";
+      };
+      r.fail(index_path(o.at("path"), bad->segment + 1),
+             "on the way from the keyframe before, at time " + fmt_number(bad->time) + " s (position " +
+                 point(lerp(a.position, b.position, bad->weight)) + ", target " +
+                 point(lerp(a.target, b.target, bad->weight)) + "), " +
+                 (bad->problem == CameraPoseProblem::kNoDirection
+                      ? std::string("the position meets the target, so the camera looks nowhere")
+                      : std::string("the camera looks along its up direction, so the image has no up")) +
+                 "; add a keyframe that steers around it");
+    }
   } else {
     c.pose = parse_camera_pose(r, o, c.up);
   }
@@ -330,14 +350,14 @@ Wind parse_wind(const Reader& r, const json& j, const std::string& path) {
           {"F_TwoSided", AeroModel::kFTwoSided},
           {"F_TwoSidedLiftDrag", AeroModel::kFTwoSidedLiftDrag},
           {"F_OneSided", AeroModel::kFOneSided}});
-  w.velocity = r.numbers<3>(o.need("velocity"), o.at("velocity"), kAnyFinite);
-  o.read("lift", w.lift, kNonNegative);
-  o.read("drag", w.drag, kNonNegative);
+  w.velocity = r.numbers<3>(o.need("velocity"), o.at("velocity"), kSceneCoordinate);
+  o.read("lift", w.lift, kSceneNonNegative);
+  o.read("drag", w.drag, kSceneNonNegative);
   // Bullet computes no aerodynamic force at all when both coefficients are 0 (btSoftBody::applyForces): a wind that
   // blows nothing would look like a scene with wind.
   if (!(w.lift > 0) && !(w.drag > 0))
     r.fail(path, "needs \"lift\" or \"drag\" above 0 (with both 0 Bullet applies no wind)");
-  o.read("air_density", w.air_density, kPositive);
+  o.read("air_density", w.air_density, kSceneQuantity);
   return w;
 }
 
@@ -380,7 +400,7 @@ SceneSettings parse_scene(const Reader& r, const json& j) {
     for (std::size_t i = 0; i < colliders->size(); ++i)
       scene.colliders.push_back(parse_collider(r, (*colliders)[i], index_path(o.at("colliders"), i)));
   }
-  o.read("margin", scene.margin, kPositive);
+  o.read("margin", scene.margin, kSceneLength);
   o.read("friction", scene.friction, kUnit);
   // A voxel below a millimetre would make the SDF's cells (and their memory, clamped by Bullet) explode for nothing.
   o.read("sdf_voxel", scene.sdf_voxel, NumberRange{0.001, false, 10.0, false});
@@ -410,6 +430,16 @@ void check_memory(const Suite& suite, const Reader& r) {
     r.fail("steps", "recording " + std::to_string(suite.steps) + " steps (+ " + std::to_string(suite.warmup_steps) +
                         " warm-up) x " + std::to_string(expand_cases(suite).size()) + " cases x " +
                         std::to_string(suite.repetitions) + " repetitions" + budget);
+  }
+  if (sdf_cells(suite.scene) > 0) {
+    // The colliders' distance field is what a fine voxel makes large: without it the suite may fit.
+    Suite without_field = suite;
+    without_field.scene.rigid_contact = false;
+    if (!memory_shortfall(without_field))
+      r.fail("scene.sdf_voxel", "the colliders' distance field at " + fmt_number(suite.scene.sdf_voxel) +
+                                    " m voxels (up to " +
+                                    std::to_string(static_cast<long long>(sdf_cells(suite.scene))) +
+                                    " cells of 3^3 voxels in each body's world)" + budget);
   }
   if (suite.interleave_across_nets) {
     // The sum over the nets is too much, but one net at a time may fit: then the field is what to change.
@@ -526,6 +556,14 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   const bool view_in_an_axis = std::any_of(s.axes.begin(), s.axes.end(), [](const Axis& a) {
     return a.path == "feedback.view" && std::find(a.values.begin(), a.values.end(), json(true)) != a.values.end();
   });
+  // A pin path moves the pins: on a net without any it would do nothing, and silently doing nothing looks like a scene.
+  if (s.scene.pin_path.moves())
+    for (std::size_t k = 0; k < s.nets.size(); ++k) {
+      const NetSpec& n = s.nets[k];
+      if (n.pinned_corners == 0 && n.pinned_edges == 0 && n.pinned_nodes.empty())
+        r.fail("scene.pin_path", "moves the nets' pins, but net \"" + n.name + "\" (nets[" + std::to_string(k) +
+                                     "]) has none (its \"pinned\" is \"none\")");
+    }
   if ((s.feedback.view || view_in_an_axis) && !s.scene.camera)
     r.fail("feedback.view", "the view terms see through the scene's camera: set scene.camera");
 

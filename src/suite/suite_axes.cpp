@@ -98,7 +98,7 @@ const AxisSetting kAxisSettings[] = {
        s.solver.step_dt = s.world.dt;  // the step the compliant material's constants are made for
      }},
     {"gravity", [](const Reader& r, const json& v, const std::string& at,
-                   Suite& s) { s.world.gravity = r.number(v, at, kNonNegative); }},
+                   Suite& s) { s.world.gravity = r.number(v, at, kSceneNonNegative); }},
     {"steps",
      [](const Reader& r, const json& v, const std::string& at, Suite& s) { s.steps = whole(r, v, at, 1, INT_MAX); }},
     {"warmup_steps", [](const Reader& r, const json& v, const std::string& at,

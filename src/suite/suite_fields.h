@@ -35,6 +35,17 @@ inline constexpr NumberRange kPositive{0.0, true}, kNonNegative{0.0, false};
 inline constexpr NumberRange kFraction{0.0, true, 1.0, false};  // (0, 1]
 inline constexpr NumberRange kUnit{0.0, false, 1.0, false};     // [0, 1]
 
+/// What Bullet can represent: it computes in single precision (at most 3.4e38; squares overflow beyond 1.8e19; its
+/// own "infinite" is BT_LARGE_FLOAT, 1e18), so a scene's coordinates, lengths and speeds are bounded far below that,
+/// at a thousand kilometres (float's spacing there is 6 cm, coarser than any cloth's links), and its other
+/// quantities (masses, coefficients, densities, gravity) at 1e9. Beyond, a sphere of radius 1e39 was infinite and
+/// collided with nothing, and a normal of [0, 1e155, 0] overflowed to the zero vector.
+inline constexpr double kMaxSceneLength = 1e6, kMaxSceneQuantity = 1e9;
+inline constexpr NumberRange kSceneCoordinate{-kMaxSceneLength, false, kMaxSceneLength, false};
+inline constexpr NumberRange kSceneLength{0.0, true, kMaxSceneLength, false};          // (0, 1e6]
+inline constexpr NumberRange kSceneQuantity{0.0, true, kMaxSceneQuantity, false};      // (0, 1e9]
+inline constexpr NumberRange kSceneNonNegative{0.0, false, kMaxSceneQuantity, false};  // [0, 1e9]
+
 /// Typed access to a suite's JSON (base/json_fields.h: the one reader of every input and its rules).
 using Reader = JsonFields<json>;
 

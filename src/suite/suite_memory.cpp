@@ -1,6 +1,7 @@
 #include "suite/suite_memory.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -40,6 +41,40 @@ constexpr double kTreeNodeBytes = 116, kTreeNodesPerLeaf = 4.0 / 3.0;
 constexpr double kTcBookkeepingBytes = 200, kTcLinkFactor = 3;
 constexpr double kSampleBytes = 3 * 8 + 3 * 4;
 
+// A scene with colliders gives every body a btSoftRigidDynamicsWorld of its own (scene/scene_world.h). Measured with
+// mallinfo2 (uordblks + hblkhd) on Bullet 3.24: 4 672 144 B for the world, nearly all of it its collision
+// configuration's pools (4096 persistent manifolds of 880 B, 4096 collision algorithms), filled when it is built.
+constexpr double kCollisionWorldBytes = 4.7e6;
+// And the world's sparse signed-distance field (btSoftBodyWorldInfo::m_sparsesdf, a btSparseSdf<3>): a hash table
+// of 2383 cell pointers, and cells of 3 x 3 x 3 voxels of scene.sdf_voxel, each a Cell of 296 B (its 4^3 distances
+// and links; a 304 B chunk with malloc's header), made on the first query of a point in them. A query is a node near
+// a collider asking for its distance, in the collider's own frame: so a collider's cells lie in its bounding box
+// there, whatever path it takes. Bullet keeps at most 256 x 1024 cells per world (Initialize's clampCells: beyond
+// them it frees them all and begins again); GarbageCollect frees cells unused for 256 steps, which bounds nothing.
+constexpr double kSdfTableBytes = 2383 * 8, kSdfCellBytes = 304, kSdfMaxCells = 256.0 * 1024, kSdfCellVoxels = 3;
+
+/// Half extents of the region, in the collider's own frame, where nodes may ask for its distance: its bounding box
+/// where it does not turn; where it does (a dynamic body, a tilted plane's slab), the cube around the ball that holds
+/// its bounding box in any orientation. `pad`: how far beyond its surface a node may ask (the contact margins).
+std::array<double, 3> sdf_query_half_extents(const Collider& c, double pad) {
+  std::array<double, 3> half{};
+  bool turns = c.motion == ColliderMotion::kDynamic;
+  switch (c.shape) {
+    case ColliderShape::kSphere: half = {c.radius, c.radius, c.radius}; break;
+    case ColliderShape::kBox: half = c.half_extents; break;
+    case ColliderShape::kPlane:
+      half = {kPlaneSlabHalfWidth, kPlaneSlabHalfThickness, kPlaneSlabHalfWidth};
+      turns = turns || !(c.normal[1] > 1 - 1e-6);  // the slab is turned from +y to the normal (scene_world.cpp)
+      break;
+  }
+  for (double& h : half) h += pad;
+  if (turns) {
+    const double ball = std::sqrt(3.0) * std::sqrt(half[0] * half[0] + half[1] * half[1] + half[2] * half[2]);
+    half = {ball, ball, ball};
+  }
+  return half;
+}
+
 /// Peak bytes while cases of net `spec` run: the shared net, one body per method (per case side by side); or, in the
 /// fidelity pass, which runs afterwards, the reference and every subject at once (each counted as a TC-SB body, the
 /// largest kind).
@@ -48,9 +83,10 @@ double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
   const double l = static_cast<double>(expected_link_count(spec));
   const double tree = kTreeNodesPerLeaf * n;
   const double faces = suite.scene.wind ? 2.0 * (spec.width - 1) * (spec.height - 1) * kWindFaceBytes : 0.0;
-  const double plain = n * kBulletNodeBytes + l * kBulletLinkBytes + faces;
+  const double world = scene_world_bytes(suite.scene);  // every body has a world of its own
+  const double plain = n * kBulletNodeBytes + l * kBulletLinkBytes + faces + world;
   const double tcsb_body =
-      tree * (kBulletNodeBytes + kTcBookkeepingBytes) + kTcLinkFactor * l * kBulletLinkBytes + faces;
+      tree * (kBulletNodeBytes + kTcBookkeepingBytes) + kTcLinkFactor * l * kBulletLinkBytes + faces + world;
   const double shared = n * kNetNodeBytes + l * kNetLinkBytes + tree * kTreeNodeBytes;
   double bytes = shared;
   const auto body_bytes = [&](Method m) {
@@ -77,6 +113,26 @@ double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
 }
 
 }  // namespace
+
+double sdf_cells(const SceneSettings& scene) {
+  if (!scene.has_colliders() || !scene.rigid_contact) return 0;  // no contact: nothing asks the field
+  const double cell = kSdfCellVoxels * scene.sdf_voxel;
+  // A node's box in the tree may reach a margin beyond it, and the collider's is widened by the margin again
+  // (btSoftBody's CollideSDF_RS); a cell more on either side for the grid's alignment.
+  const double pad = 2 * scene.margin;
+  double cells = 0;
+  for (const Collider& c : scene.colliders) {
+    double product = 1;
+    for (const double h : sdf_query_half_extents(c, pad)) product *= std::ceil(2 * h / cell) + 2;
+    cells += product;
+  }
+  return std::min(cells, kSdfMaxCells);
+}
+
+double scene_world_bytes(const SceneSettings& scene) {
+  if (!scene.has_colliders()) return 0;  // stepped solo: no world, no field
+  return kCollisionWorldBytes + kSdfTableBytes + sdf_cells(scene) * kSdfCellBytes;
+}
 
 double recorder_peak_bytes(const Suite& suite) {
   const std::vector<Suite> configurations = configuration_suites(suite);  // the axes may vary the steps

@@ -18,6 +18,14 @@ namespace tcsb {
 /// here and below: a shard of small nets fits where the whole suite would not.
 std::uint64_t estimate_peak_bytes(const Suite& suite);
 
+/// Bytes a scene adds to every body: with colliders, the body's own btSoftRigidDynamicsWorld and its sparse
+/// signed-distance field at most (sdf_cells); without, nothing.
+double scene_world_bytes(const SceneSettings& scene);
+
+/// Cells of the sparse signed-distance field one world may hold at once: those covering the region around each
+/// collider where nodes may ask for its distance, at scene.sdf_voxel, up to Bullet's clamp of 256 x 1024.
+double sdf_cells(const SceneSettings& scene);
+
 /// Bytes the step recorder needs: one sample per step (warm-up included) of every repetition of every case.
 double recorder_peak_bytes(const Suite& suite);
 

@@ -419,7 +419,7 @@ ShardPart read_shard(const ShardDocument& shard, const Suite& suite, const Shard
     }
     if (k != floors.size()) r.fail("fidelity.floors", "more nets than shard " + shard_text(index) + " runs");
   }
-  part.fidelity_wall_s = measured(r.number_or_null(fidelity, "fidelity", "wall_s"));
+  part.fidelity_wall_s = measured(r.non_negative_or_null(fidelity, "fidelity", "wall_s"));
   return part;
 }
 
@@ -492,9 +492,11 @@ MergedShards merge_shards(const std::vector<ShardDocument>& shards) {
     fidelity.merge(part.fidelity);
     floors.merge(part.floors);
     fidelity_wall_s += part.fidelity_wall_s;
-    // The sum of the shards' wall times: the machine time the suite took, wherever and however parallel it ran.
-    const ojson& wall = shards[i].document["wall_s"];
-    if (wall.is_number()) result.wall_s += wall.get<double>();
+    // The sum of the shards' wall times: the machine time the suite took, wherever and however parallel it ran. A
+    // run took a finite time of at least 0 s; anything else (negative, null for a non-finite one) would make the sum
+    // a time no run took.
+    const Reader r(shards[i].file);
+    result.wall_s += r.number(r.member(shards[i].document, "", "wall_s"), "wall_s", NumberRange{0.0, false});
   }
   for (auto& [index, pieces] : cases) result.cases.push_back(join_pieces(pieces));
   if (!fidelity_plan(result.suite).empty()) {

@@ -519,3 +519,146 @@ TEST_F(Fuzz, SuitesWithHugeListsAreCountedBeforeTheyAreExpanded) {
 }
 
 }  // namespace
+
+// ---- issue 60: scenes, camera paths and instruction counts ----------------------------------------------------------
+
+/// The 9x9 suite in a scene, as the viewer suites run: a sphere under the net, a camera on a keyframed path, the view
+/// terms on the parallel feedback. Its camera keyframes are 0 and 12 steps apart, so a pose halfway (or a third, a
+/// quarter of the way) between them is a step boundary the run meets.
+ojson scene_suite() {
+  ojson suite = ojson::parse(nine_by_nine_suite("fuzz", 2));
+  suite["feedback"] = {{"view", true}, {"parallel", true}, {"threads", 2}};
+  suite["scene"] = ojson::parse(R"({
+    "colliders": [{"shape": "sphere", "position": [0, 0.5, 0], "radius": 0.5}],
+    "margin": 0.02, "sdf_voxel": 0.1,
+    "camera": {"fov_deg": 60, "image": [320, 240], "path": [
+      {"time": 0, "position": [0, 4, 6], "target": [0, 2, 0]},
+      {"time": 0.2, "position": [3, 4, 6], "target": [0, 2, 0]}]}})");
+  return suite;
+}
+
+TEST_F(Fuzz, ValidateParsesMutatedScenesOrRefusesThemInOneLine) {
+  // Only the scene block mutates (colliders, paths, camera, wind, pins), with extreme numbers: far more of each case
+  // reaches the scene reader than whole-suite mutations do.
+  const ojson suite = scene_suite();
+  Mutator mutator(60001, /*extremes=*/true);
+  const int cases = TCSB_FUZZ_CASES / 4;
+  for (int i = 0; i < cases; ++i) {
+    std::string log;
+    ojson doc = suite;
+    doc["scene"] = "@SCENE@";
+    std::string text = doc.dump(2);
+    text.replace(text.find("\"@SCENE@\""), 9, mutator.mutate(suite["scene"], log));
+    write_file(dir_ / "suite.json", text);
+    const Ended e = run_tcsb(dir_, {"validate", "suite.json"});
+    if (const std::string why = problem(e, /*judges=*/false); !why.empty()) record("validate scene", i, log, why);
+  }
+}
+
+TEST_F(Fuzz, ACameraPathThatValidatesRunsToTheEnd) {
+  // Random keyframed paths of small whole coordinates: many pass over their target (looking along up) or through it
+  // at a step boundary. Every pose a path reaches must give an image or the path is refused up front: a path that
+  // validate passes must run to the end with the view terms on, never exit 3, hang or abort.
+  ojson suite = scene_suite();
+  std::mt19937 rng(60002);
+  std::uniform_int_distribution<int> small(-2, 2), height(0, 5);
+  const auto valid = [](const std::array<int, 3>& p, const std::array<int, 3>& t) {
+    const int dx = t[0] - p[0], dz = t[2] - p[2];
+    return dx != 0 || dz != 0;  // up is +y: a direction with no horizontal part looks along it (or nowhere)
+  };
+  // Each valid one runs a simulation; 40 at least, so the sanitized build's fewer cases still meet refused paths.
+  const int cases = std::max(40, TCSB_FUZZ_CASES / 20);
+  int refused = 0, ran = 0;
+  for (int i = 0; i < cases; ++i) {
+    ojson path = ojson::array();
+    std::string log = " path";
+    for (int k = 0; k < 2 + i % 2; ++k) {
+      std::array<int, 3> p{}, t{};
+      do {
+        p = {small(rng), height(rng), small(rng)};
+        t = {small(rng), 2, small(rng)};
+      } while (!valid(p, t));
+      if (i % 2 == 0 && k == 1) {
+        // A crane shot: the horizontal direction turns to its opposite, k' times as long, so the camera looks
+        // straight down (or at its target from above: along up) 1 / (1 + k') of the way, at step 6, 4 or 3 of 12.
+        const auto p0 = path[0]["position"].get<std::array<int, 3>>();
+        const auto t0 = path[0]["target"].get<std::array<int, 3>>();
+        const int scale = 1 + static_cast<int>(rng() % 3);
+        t = {t0[0], 2, t0[2]};
+        p = {t[0] + scale * (t0[0] - p0[0]), height(rng), t[2] + scale * (t0[2] - p0[2])};
+      }
+      path.push_back({{"time", 0.2 * k}, {"position", p}, {"target", t}});
+      log += " " + path.back().dump();
+    }
+    suite["scene"]["camera"]["path"] = path;
+    write_file(dir_ / "suite.json", suite.dump(2));
+    const Ended checked = run_tcsb(dir_, {"validate", "suite.json"});
+    if (const std::string why = problem(checked, /*judges=*/false); !why.empty()) {
+      record("validate path", i, log, why);
+      continue;
+    }
+    if (checked.exit_code != 0) {
+      ++refused;
+      continue;
+    }
+    ++ran;
+    fs::remove(dir_ / "out.json");
+    const Ended e = run_tcsb(dir_, {"run", "suite.json", "--quiet", "--out", "out.json"});
+    std::string why = e.signal != 0 || e.exit_code != 0
+                          ? (e.signal != 0 ? "killed by signal " + std::to_string(e.signal)
+                                           : "exit " + std::to_string(e.exit_code) + ": " + e.err.substr(0, 300))
+                          : "";
+    if (why.empty() && !is_tcsb_document(dir_ / "out.json")) why = "exit 0 without a result";
+    if (!why.empty()) record("run path", i, log, why);
+  }
+  EXPECT_GT(refused, 0) << "no random path met a pose without an image: the generator tests nothing";
+  EXPECT_GT(ran, 0);
+}
+
+TEST_F(Fuzz, CompareJudgesMutatedInstructionCountsOrRefusesThemInOneLine) {
+  // A result of --measure instructions, made from a timed run (valgrind is far too slow for a fuzz corpus) with
+  // counts of the size a run has; then mutated: a count removed, zeroed, retyped or made impossible must be a
+  // verdict or a one-line refusal, never a pass by omission (issue 60: the gate skipped cases without counts).
+  write_file(dir_ / "suite.json", nine_by_nine_suite("fuzz", 2));
+  const Ended made = run_tcsb(dir_, {"run", "suite.json", "--quiet", "--out", "base.json"});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  ojson base = ojson::parse(read_file(dir_ / "base.json"));
+  base["measure"] = "instructions";
+  for (ojson& c : base["cases"]) {
+    const std::int64_t own = c["method"] == "tcsb" ? 200000 : 0, bullet = 5000000;
+    c["instructions"] = {{"own", own},
+                         {"bullet", bullet},
+                         {"total", own + bullet},
+                         {"functions",
+                          ojson::array({{{"name", "btSoftBody::PSolve_Links"}, {"instructions", bullet}},
+                                        {{"name", "TcSoftBody::advance_blends"}, {"instructions", own}}})}};
+  }
+  write_file(dir_ / "base.json", base.dump(2));
+  const Ended same = run_tcsb(dir_, {"compare", "base.json", "base.json"});
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  Mutator mutator(60003, /*extremes=*/true);
+  const int cases = TCSB_FUZZ_CASES / 4;
+  int refused = 0;
+  for (int i = 0; i < cases; ++i) {
+    std::string log;
+    ojson counted = base;
+    // Mutate within the counts most of the time: that is where the gate must fail closed.
+    const std::size_t c = static_cast<std::size_t>(i) % counted["cases"].size();
+    if (i % 4 != 3) {
+      counted["cases"][c]["instructions"] = "@COUNTS@";
+      std::string text = counted.dump(2);
+      text.replace(text.find("\"@COUNTS@\""), 10, mutator.mutate(base["cases"][c]["instructions"], log));
+      write_file(dir_ / "new.json", text);
+    } else {
+      counted["cases"][c].erase("instructions");
+      log = " cases[" + std::to_string(c) + "].instructions removed";
+      write_file(dir_ / "new.json", counted.dump(2));
+    }
+    const Ended e = run_tcsb(dir_, i % 2 == 0 ? std::vector<std::string>{"compare", "base.json", "new.json"}
+                                              : std::vector<std::string>{"compare", "new.json", "base.json"});
+    refused += e.exit_code == 2;
+    if (const std::string why = problem(e, /*judges=*/true); !why.empty()) record("compare counts", i, log, why);
+    if (i % 4 == 3 && e.exit_code != 2) record("compare counts", i, log, "a case without counts was not refused");
+  }
+  EXPECT_GT(refused, cases / 4);
+}

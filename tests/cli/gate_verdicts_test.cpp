@@ -90,6 +90,22 @@ TEST_F(GateVerdicts, TheJsonSummarySaysWhetherBehaviourChanged) {
   EXPECT_EQ(summary_json()["verdict"], "pass");
 }
 
+TEST_F(GateVerdicts, CountsMissingOrImpossibleAreRefusedLikeMissingTimings) {
+  // Issue 60: a hand-edited result with one case's counts removed, or zero, passed the instruction gate (exit 0).
+  ojson next = counted(base_, 20000);
+  next["cases"][1].erase("instructions");
+  Outcome o = compare(counted(base_, 20000), next);
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_EQ(count_lines(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find("b.json: cases[1].instructions"), std::string::npos) << o.err;
+  EXPECT_FALSE(fs::exists(dir_ / "summary.json"));
+  next = counted(base_, 20000);
+  next["cases"][1]["instructions"] = {{"own", 0}, {"bullet", 0}, {"total", 0}, {"functions", ojson::array()}};
+  o = compare(counted(base_, 20000), next);
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_NE(o.err.find("b.json: cases[1].instructions.total"), std::string::npos) << o.err;
+}
+
 TEST_F(GateVerdicts, CountsGateAtHalfAPercentWithTheFunctionsThatGrew) {
   const Outcome same = compare(counted(base_, 20000), counted(base_, 20000));
   EXPECT_EQ(same.exit_code, 0) << same.err;

@@ -408,6 +408,23 @@ TEST_F(BadShardSets, AShardNoRunCouldWriteIsRefusedAsStrictlyAsCompareRefusesARe
   ADD_FAILURE() << "no shard recorded an operation";
 }
 
+TEST_F(BadShardSets, AShardWithAWallTimeNoRunTookIsRefused) {
+  // Issue 60: a negative wall_s was summed into the merged result's; null is how a result writes a non-finite one.
+  for (const json& wall : {json(-5.0), json(nullptr)}) {
+    SCOPED_TRACE(wall.dump());
+    json shard = load("s2.json");
+    shard["wall_s"] = wall;
+    write_file(dir_ / "wall2.json", shard.dump());
+    expect_refused("s1.json wall2.json s3.json", "wall2.json: wall_s");
+  }
+  json shard = load("s2.json");
+  if (shard.contains("fidelity") && shard["fidelity"].is_object()) {
+    shard["fidelity"]["wall_s"] = -1.0;
+    write_file(dir_ / "fwall2.json", shard.dump());
+    expect_refused("s1.json fwall2.json s3.json", "fwall2.json: fidelity.wall_s");
+  }
+}
+
 TEST_F(BadShardSets, ShardsOfTwoBuildsAreRefused) {
   json shard = json::parse(read_file(dir_ / "s3.json"));
   shard["context"]["git_commit"] = "0000000000000000000000000000000000000000";

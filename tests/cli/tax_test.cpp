@@ -42,8 +42,8 @@ class Tax : public Cli {
   }
 
   /// Runs a suite of two 9 x 9 nets with plain_equal and six repetitions as two shards, shard-1.json and
-  /// shard-2.json, each net's TC-SB at `ratio` x plain_equal's time.
-  void make_shards(double ratio) {
+  /// shard-2.json (split by `split`: "nets" or "repetitions"), each net's TC-SB at `ratio` x plain_equal's time.
+  void make_shards(double ratio, const std::string& split = "nets") {
     std::string suite = nine_by_nine_suite("sharded", 6);
     const std::string methods = R"("methods": ["plain", "tcsb"])";
     suite.replace(suite.find(methods), methods.size(), R"("methods": ["plain", "tcsb", "plain_equal"])");
@@ -55,7 +55,7 @@ class Tax : public Cli {
     write_file(dir_ / "sharded.json", suite);
     for (const char* k : {"1", "2"}) {
       const std::string file = std::string("shard-") + k + ".json";
-      const Outcome o = tcsb(std::string("run sharded.json --quiet --split nets --shard ") + k + "/2 --out " + file);
+      const Outcome o = tcsb("run sharded.json --quiet --split " + split + " --shard " + k + "/2 --out " + file);
       ASSERT_EQ(o.exit_code, 0) << o.err;
       set_times(file, ratio);
     }
@@ -174,6 +174,12 @@ TEST_F(Tax, EachProcessIsPooledOnceWhateverItsFileSays) {
   make_shards(1.02);
   ASSERT_EQ(tcsb("merge shard-1.json shard-2.json --quiet --out merged.json").exit_code, 0);
   expect_bad_input(tcsb("tax merged.json shard-2.json" + kScope), "shard-2.json: the same run as merged.json");
+  // Issue 60: split by repetitions, no case of a shard is a case of the merged result, only some of its repetitions;
+  // `tcsb tax merged.json shard-1.json` pooled shard 1's three repetitions twice (nine ratios from six).
+  make_shards(1.02, "repetitions");
+  ASSERT_EQ(tcsb("merge shard-1.json shard-2.json --quiet --out merged.json").exit_code, 0);
+  expect_bad_input(tcsb("tax merged.json shard-1.json" + kScope), "shard-1.json: the same run as merged.json");
+  expect_bad_input(tcsb("tax shard-2.json merged.json" + kScope), "merged.json: the same run as shard-2.json");
   make_run(6, 1.02, "a.json");
   fs::copy_file(dir_ / "a.json", dir_ / "b.json");
   edit("b.json", [](ojson& doc) {

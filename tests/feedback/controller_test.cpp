@@ -3,10 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "feedback/budget_policy.h"
+#include "feedback/controller.h"
 #include "feedback/saliency_controller.h"
 #include "fixed_field.h"
 #include "scene/scene_world.h"
@@ -211,6 +217,119 @@ TEST(SaliencyController, ATimeBudgetDoesNotCountAPauseAsAStep) {
   controller.resume();
   for (int s = 0; s < 3; ++s) step();
   EXPECT_EQ(controller.budget(), 250);
+}
+
+TEST(SaliencyController, AnEvaluationThatThrowsReachesTheSimulationThreadInBothModes) {
+  // A camera looking along its up direction (the parser and make_controller refuse it; the controller itself takes
+  // it as given) makes every evaluation throw. Synchronous, before_step throws; parallel, the worker's exception is
+  // rethrown at the join in after_step — and destroying the controller afterwards returns: before, the worker died
+  // (std::terminate) or the destructor waited forever for a job that would never finish.
+  Camera camera;
+  camera.pose = {{0, 5, 0}, {0, 0, 0}};
+  const auto net = net_of(17);
+  for (const bool parallel : {false, true}) {
+    SCOPED_TRACE(parallel ? "parallel" : "synchronous");
+    FeedbackSettings settings;
+    settings.view = true;
+    settings.parallel = parallel;
+    SceneWorld world({});
+    TcSoftBody body(world.info(), net, {}, {});
+    auto controller = std::make_unique<SaliencyController>(settings, 200, Spectator{camera, kDt});
+    EXPECT_THROW(
+        {
+          for (int s = 0; s < 3; ++s) {
+            body.advance_blends();
+            controller->before_step(body);
+            body.simulate_step(kDt);
+            controller->after_step(body);
+          }
+        },
+        std::invalid_argument);
+    controller.reset();
+  }
+}
+
+/// The message of the std::invalid_argument `make` throws ("" if it throws none).
+template <class Make>
+std::string refusal(Make make) {
+  try {
+    make();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(MakeController, RefusesImpossibleFeedbackSettingsNamingTheField) {
+  // Issue 60: evaluation_interval = 0 was a SIGFPE at the first step (boundary % 0); every setting the suite parser
+  // bounds is bounded here too, for a library user who fills FeedbackSettings in code.
+  const std::vector<std::pair<std::string, std::function<void(FeedbackSettings&)>>> edits = {
+      {"evaluation_interval", [](FeedbackSettings& f) { f.evaluation_interval = 0; }},
+      {"max_ops_per_step", [](FeedbackSettings& f) { f.max_ops_per_step = 0; }},
+      {"threads", [](FeedbackSettings& f) { f.threads = 0; }},
+      {"threads", [](FeedbackSettings& f) { f.threads = 1000; }},
+      {"threshold", [](FeedbackSettings& f) { f.threshold = -1; }},
+      {"threshold", [](FeedbackSettings& f) { f.threshold = std::nan(""); }},
+      {"global_motion_scale", [](FeedbackSettings& f) { f.global_motion_scale = 0; }},
+      {"light_direction",
+       [](FeedbackSettings& f) {
+         f.light_direction = {0, 0, 0};
+       }},
+      {"max_step_ms", [](FeedbackSettings& f) { f.max_step_ms = -1; }},
+      {"popping_charge", [](FeedbackSettings& f) { f.popping_charge = -0.5; }},
+      {"interface_charge", [](FeedbackSettings& f) { f.interface_charge = INFINITY; }},
+      {"interface_tension", [](FeedbackSettings& f) { f.interface_tension = -1; }},
+      {"pin_level_pull", [](FeedbackSettings& f) { f.pin_level_pull = -1; }},
+      {"contact_saliency", [](FeedbackSettings& f) { f.contact_saliency = 2; }},
+      {"view_motion_scale", [](FeedbackSettings& f) { f.view_motion_scale = 0; }},
+      {"view_detail_px", [](FeedbackSettings& f) { f.view_detail_px = -8; }},
+      {"view_static_share", [](FeedbackSettings& f) { f.view_static_share = 1.5; }},
+  };
+  for (const auto& [field, edit] : edits) {
+    FeedbackSettings settings;
+    edit(settings);
+    const std::string why = refusal([&] { make_controller(settings, 100, 1); });
+    EXPECT_NE(why.find("FeedbackSettings: " + field), std::string::npos) << field << ": " << why;
+  }
+  EXPECT_EQ(refusal([] { make_controller(FeedbackSettings{}, 100, 1); }), "");
+}
+
+TEST(MakeController, RefusesASpectatorThatGivesNoImageNamingTheField) {
+  FeedbackSettings settings;
+  settings.view = true;
+  Camera good;
+  good.pose = {{0, 5, 10}, {0, 0, 0}};
+  EXPECT_EQ(refusal([&] { make_controller(settings, 100, 1, Spectator{good, kDt}); }), "");
+  const std::vector<std::pair<std::string, std::function<void(Spectator&)>>> edits = {
+      {"dt", [](Spectator& s) { s.dt = 0; }},
+      {"camera.fov_deg", [](Spectator& s) { s.camera.fov_deg = 180; }},
+      {"camera.width_px", [](Spectator& s) { s.camera.height_px = 0; }},
+      {"camera.up",
+       [](Spectator& s) {
+         s.camera.up = {0, 0, 0};
+       }},
+      {"camera.pose.target", [](Spectator& s) { s.camera.pose.target = s.camera.pose.position; }},
+      {"camera.pose.target",
+       [](Spectator& s) {
+         s.camera.pose = {{0, 5, 0}, {0, 0, 0}};
+       }},
+      {"camera.pose.position", [](Spectator& s) { s.camera.pose.position[0] = INFINITY; }},
+      {"camera.path[1].time",
+       [](Spectator& s) {
+         s.camera.path = {{1.0, {{0, 5, 10}, {0, 0, 0}}}, {1.0, {{0, 5, 9}, {0, 0, 0}}}};
+       }},
+      // A crane shot over the target: both keyframes valid, straight down halfway.
+      {"camera.path[1]",
+       [](Spectator& s) {
+         s.camera.path = {{0.0, {{0, 5, -5}, {0, 0, 0}}}, {2.0, {{0, 5, 5}, {0, 0, 0}}}};
+       }},
+  };
+  for (const auto& [field, edit] : edits) {
+    Spectator spectator{good, kDt};
+    edit(spectator);
+    const std::string why = refusal([&] { make_controller(settings, 100, 1, spectator); });
+    EXPECT_NE(why.find("Spectator: " + field), std::string::npos) << field << ": " << why;
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -109,6 +110,69 @@ TEST(FeedbackWorkers, ParallelForRunsEveryChunkOnce) {
     workers.wait();
     for (std::size_t c = 0; c < hits.size(); ++c)
       EXPECT_EQ(hits[c].load(), 1) << "threads " << threads << " chunk " << c;
+  }
+}
+
+TEST(FeedbackWorkers, AJobThatThrowsOnTheWorkerIsRethrownByWaitAndTheWorkerLivesOn) {
+  // Without the rethrow, the worker thread ended with the exception (std::terminate), or a waiter waited forever.
+  FeedbackWorkers workers(1);
+  std::atomic<bool> begun{false};
+  std::thread::id ran_on;
+  workers.post([&] {
+    ran_on = std::this_thread::get_id();
+    begun = true;
+    throw std::invalid_argument("camera: up lies along the viewing direction");
+  });
+  while (!begun.load()) std::this_thread::yield();  // the worker took it: wait() cannot take it back
+  EXPECT_THROW(workers.wait(), std::invalid_argument);
+  EXPECT_NE(ran_on, std::this_thread::get_id());
+  workers.wait();  // rethrown once: nothing pending now
+  post_and_check(workers);
+}
+
+TEST(FeedbackWorkers, AJobThatThrowsWhenTakenBackIsRethrownByWait) {
+  FeedbackWorkers workers(1);
+  int thrown = 0;
+  for (int i = 0; i < 200; ++i) {  // the worker or wait() may run it: either way wait() throws, and only once
+    if (i % 2 == 0) workers.park();
+    workers.post([] { throw std::runtime_error("job failed"); });
+    try {
+      workers.wait();
+    } catch (const std::runtime_error&) {
+      ++thrown;
+    }
+    workers.wait();
+  }
+  EXPECT_EQ(thrown, 200);
+  post_and_check(workers);
+}
+
+TEST(FeedbackWorkers, AChunkThatThrowsIsRethrownAfterEveryChunkRan) {
+  for (int threads : {1, 2, 3}) {
+    FeedbackWorkers workers(threads);
+    std::vector<std::atomic<int>> hits(64);
+    bool rethrown = false;
+    workers.post([&] {
+      try {
+        workers.parallel_for(64, [&](int c) {
+          ++hits[static_cast<std::size_t>(c)];
+          if (c % 7 == 3) throw std::runtime_error("chunk failed");
+        });
+      } catch (const std::runtime_error&) {
+        rethrown = true;
+      }
+    });
+    workers.wait();
+    EXPECT_TRUE(rethrown) << threads << " threads";
+    for (std::size_t c = 0; c < hits.size(); ++c) EXPECT_EQ(hits[c].load(), 1) << "threads " << threads;
+    // And a chunk's exception reaches wait() when the job lets it through.
+    workers.post([&] {
+      workers.parallel_for(8, [](int c) {
+        if (c == 5) throw std::runtime_error("chunk");
+      });
+    });
+    EXPECT_THROW(workers.wait(), std::runtime_error) << threads << " threads";
+    post_and_check(workers);
   }
 }
 

@@ -5,9 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include "gate/gate_outcome.h"
+#include "gate/run_consistency.h"
 #include "result_documents.h"
 
 namespace tcsb {
@@ -93,6 +96,46 @@ TEST(InstructionGate, CountResultsGateOnCountsAlone) {
 TEST(InstructionGate, ATimeResultIsNeverComparedWithACountResult) {
   EXPECT_THROW(compare_results(read_result(result_doc(1), "time.json"), read_result(counted_doc(), "counts.json")),
                SuiteMismatch);
+}
+
+TEST(InstructionGate, FailsClosedOnMissingOrImpossibleCounts) {
+  // Issue 60: a case's counts removed, or set to zero, passed the gate: it compared only the cases both had counted.
+  const auto refused = [](const ojson& next, const std::string& field) {
+    try {
+      compare_results(read_result(counted_doc(), "base.json"), read_result(next, "new.json"));
+      ADD_FAILURE() << "accepted: " << field;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("new.json: " + field), std::string::npos) << e.what();
+    }
+  };
+  ojson doc = counted_doc();
+  doc["cases"][1].erase("instructions");
+  refused(doc, "cases[1].instructions");
+  doc = counted_doc();
+  doc["cases"][2]["instructions"] = {{"own", 0}, {"bullet", 0}, {"total", 0}, {"functions", ojson::array()}};
+  refused(doc, "cases[2].instructions.total");
+  doc = counted_doc();  // fewer than one instruction per node and step: 81 nodes x the suite's steps
+  doc["cases"][0]["instructions"] = {{"own", 0}, {"bullet", 80}, {"total", 80}, {"functions", ojson::array()}};
+  refused(doc, "cases[0].instructions.total");
+  doc = counted_doc();  // counts for a case none of whose repetitions is ok
+  doc["cases"][0]["repetitions"][0]["status"] = "diverged";
+  doc["cases"][0]["repetitions"][0]["diverged_step"] = 3;
+  doc["cases"][0]["repetitions"][0]["mean_step_ms"] = nullptr;
+  refused(doc, "cases[0].instructions.total");
+  // The base is checked as strictly as the new run.
+  EXPECT_THROW(compare_results(read_result(doc, "base.json"), read_result(counted_doc(), "new.json")), InputError);
+  EXPECT_NO_THROW(compare_results(read_result(counted_doc(), "base.json"), read_result(counted_doc(), "new.json")));
+}
+
+TEST(InstructionGate, TheCiBaselinesCountsAreOnesARunWrites) {
+  // What the checks above refuse must never be what a real run writes: the CI instruction gate compares against this.
+  std::ifstream in(std::filesystem::path(TCSB_SOURCE_DIR) / "results/baselines/ci-instructions.json");
+  ASSERT_TRUE(in.good());
+  const ojson baseline = ojson::parse(in);
+  const ResultView view = read_result(baseline, "ci-instructions.json");
+  ASSERT_EQ(view.measure, "instructions");
+  EXPECT_NO_THROW(check_instruction_counts(view));
+  EXPECT_NO_THROW(compare_results(view, view));
 }
 
 TEST(InstructionGate, TheReaderChecksTheCounts) {

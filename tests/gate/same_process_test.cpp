@@ -28,6 +28,29 @@ TEST(SameProcess, AShardBesideTheResultMergedFromItIsTheSameProcess) {
   EXPECT_NE(shared_measurement(read_result(merged, "all.json"), read_result(shard, "shard.json")), "");
 }
 
+TEST(SameProcess, AShardSplitByRepetitionBesideTheMergedResultIsTheSameProcess) {
+  // Issue 60: the shard holds some of every case's repetitions, the merged result all of them; no whole case is
+  // alike, and `tcsb tax merged.json shard-1.json` pooled shard 1's repetitions twice.
+  const ojson merged = result_doc();
+  ojson shard = merged;
+  for (ojson& c : shard["cases"]) {
+    ojson kept = ojson::array();
+    for (const ojson& r : c["repetitions"])
+      if (r["repetition"].get<int>() % 3 == 0) kept.push_back(r);
+    c["repetitions"] = kept;
+  }
+  const std::string why = shared_measurement(read_result(merged, "all.json"), read_result(shard, "shard.json"));
+  EXPECT_NE(why.find("has the same 3 repetition time(s)"), std::string::npos) << why;
+  EXPECT_NE(shared_measurement(read_result(shard, "shard.json"), read_result(merged, "all.json")), "");
+  // One repetition alike, of many the two could share, is chance; two are not.
+  ojson other = merged;
+  for (std::size_t c = 0; c < other["cases"].size(); ++c) testing::scale_case(other, c, 1.001);
+  other["cases"][0]["repetitions"][4] = merged["cases"][0]["repetitions"][4];
+  EXPECT_EQ(shared_measurement(read_result(merged, "a.json"), read_result(other, "b.json")), "");
+  other["cases"][1]["repetitions"][2] = merged["cases"][1]["repetitions"][2];
+  EXPECT_NE(shared_measurement(read_result(merged, "a.json"), read_result(other, "b.json")), "");
+}
+
 TEST(SameProcess, AnotherProcessOrDisjointCasesShareNothing) {
   const ojson run = result_doc();
   ojson again = run;

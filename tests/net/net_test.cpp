@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
+#include <limits>
 #include <set>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -273,6 +276,23 @@ TEST(Net, RejectsInvalidSpecs) {
   flat.size_z = 0;
   EXPECT_THROW(Net{flat}, std::invalid_argument);
   EXPECT_NO_THROW(Net(net_spec(2, 2)));
+  // Issue 60: values no cloth can have, named (a library user fills NetSpec in code; the suite parser bounds it).
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& [field, edit] : std::vector<std::pair<std::string, std::function<void(NetSpec&)>>>{
+           {"size_x", [&](NetSpec& n) { n.size_x = inf; }},
+           {"size_z", [&](NetSpec& n) { n.size_z = inf; }},
+           {"elevation", [&](NetSpec& n) { n.elevation = nan; }},
+           {"elevation", [&](NetSpec& n) { n.elevation = -inf; }},
+           {"mass", [&](NetSpec& n) { n.mass = inf; }}}) {
+    NetSpec spec = net_spec(3, 3);
+    edit(spec);
+    try {
+      Net net(spec);
+      ADD_FAILURE() << field << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -633,6 +633,18 @@ TEST(SuiteReject, CameraFields) {
                                     {"time": 1, "position": [0, 0, 6], "target": [0, 0, 0]}]})"),
                 "scene.camera.path[1].time");
   rejected_edit(camera(R"({"path": []})"), "scene.camera.path");
+  // Every pose between keyframes too: a crane shot over the target looks straight down (along up) halfway, and a
+  // camera running through its target looks nowhere; the keyframe the bad stretch leads to is named.
+  rejected_edit(camera(R"({"path": [{"time": 0, "position": [0, 5, -5], "target": [0, 0, 0]},
+                                    {"time": 2, "position": [0, 5, 5], "target": [0, 0, 0]}]})"),
+                "scene.camera.path[1]");
+  rejected_edit(camera(R"({"path": [{"time": 0, "position": [0, 1, 5], "target": [0, 0, 0]},
+                                    {"time": 1, "position": [0, 1, 4], "target": [0, 0, 0]},
+                                    {"time": 2, "position": [0, -1, -4], "target": [0, 0, 0]}]})"),
+                "scene.camera.path[2]");
+  rejected_edit(camera(R"({"up": [0, 0, 1], "path": [{"time": 0, "position": [3, 0, 5], "target": [0, 0, 0]},
+                                                    {"time": 1, "position": [-3, 0, 5], "target": [0, 0, 0]}]})"),
+                "scene.camera.path[1]");
   // The view terms see through the camera: without one they would silently do nothing.
   rejected_edit([](json& j) { j["feedback"] = {{"view", true}}; }, "feedback.view");
   rejected_edit([](json& j) { j["axes"] = {{"feedback.view", {false, true}}}; }, "feedback.view");
@@ -643,6 +655,45 @@ TEST(SuiteReject, CameraFields) {
         j["axes"] = {{"feedback.view_static_share", {0.1, -1}}};
       },
       "axes.feedback.view_static_share[1]");
+}
+
+TEST(SuiteReject, ValuesBeyondWhatBulletCanRepresent) {
+  // Issue 60: Bullet computes in single precision. A normal of [0, 1e155, 0] overflowed to the zero vector (the plane
+  // vanished), a radius of 1e39 is infinite as a float (the sphere collided with nothing): refused, naming the field.
+  const auto collider = [](const char* text) {
+    return [text](json& j) { j["scene"] = {{"colliders", json::array({json::parse(text)})}}; };
+  };
+  rejected_edit(collider(R"({"shape": "plane", "normal": [0, 1e155, 0]})"), "scene.colliders[0].normal[1]");
+  rejected_edit(collider(R"({"shape": "sphere", "radius": 1e39})"), "scene.colliders[0].radius");
+  rejected_edit(collider(R"({"shape": "box", "half_extents": [1, 1e20, 1]})"), "scene.colliders[0].half_extents[1]");
+  rejected_edit(collider(R"({"shape": "sphere", "position": [0, -1e30, 0]})"), "scene.colliders[0].position[1]");
+  rejected_edit(collider(R"({"shape": "sphere", "motion": "kinematic", "velocity": [1e300, 0, 0]})"),
+                "scene.colliders[0].velocity[0]");
+  rejected_edit(collider(R"({"shape": "sphere", "motion": "dynamic", "mass": 1e39})"), "scene.colliders[0].mass");
+  rejected_edit(collider(R"({"shape": "sphere", "motion": "kinematic", "path": [{"time": 0, "position": [0, 0, 0]},
+                                                                              {"time": 1, "position": [1e40, 0, 0]}]})"),
+                "scene.colliders[0].path[1].position[0]");
+  const auto scene = [](const char* text) { return [text](json& j) { j["scene"] = json::parse(text); }; };
+  rejected_edit(scene(R"({"margin": 1e39})"), "scene.margin");
+  rejected_edit(scene(R"({"wind": {"velocity": [0, 0, 1], "lift": 1e39}})"), "scene.wind.lift");
+  rejected_edit(scene(R"({"wind": {"velocity": [0, 0, 1e39], "drag": 1}})"), "scene.wind.velocity[2]");
+  rejected_edit(scene(R"({"camera": {"position": [0, 5, 10], "target": [0, 0, 0], "up": [0, 1e155, 0]}})"),
+                "scene.camera.up[1]");
+  rejected_edit(scene(R"({"camera": {"position": [0, 5, 1e300], "target": [0, 0, -1e300]}})"),
+                "scene.camera.position[2]");
+  rejected_edit(scene(R"({"pin_path": {"velocity": [0, 1e39, 0]}})"), "scene.pin_path.velocity[1]");
+  rejected_edit([](json& j) { j["gravity"] = 1e39; }, "gravity");
+  // A tiny normal is still a direction: scaled before its length is taken, its squares no longer underflow to zero.
+  json j = minimal();
+  j["scene"] = {{"colliders", json::array({json::parse(R"({"shape": "plane", "normal": [0, 1e-200, 0]})")})}};
+  const Suite tiny = parse_suite_text(j.dump(), "tiny-normal.json");
+  EXPECT_EQ(tiny.scene.colliders[0].normal, (std::array<double, 3>{0, 1, 0}));
+  // A pin path on a net with no pins did nothing.
+  j = minimal();
+  j["nets"][0]["pinned"] = "none";
+  j["scene"] = json::parse(R"({"pin_path": {"velocity": [0, 0.5, 0]}})");
+  EXPECT_NE(rejected([&] { parse_suite_text(j.dump(), "free.json"); }, "free.json", "scene.pin_path").find("none"),
+            std::string::npos);
 }
 
 TEST(ShippedSuites, ViewerSuitesWatchThroughACameraWithTheViewTermsOn) {
