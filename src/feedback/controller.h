@@ -46,9 +46,6 @@ class Controller {
   virtual void set_spectator(const Spectator& spectator);
 };
 
-/// Throws std::invalid_argument naming what makes `spectator`'s camera give no image (none: returns).
-void check_spectator(const Spectator& spectator);
-
 /// The controller a suite asks for, holding the body near `target_nodes`. `seed` makes random choices repeatable.
 /// `spectator`: whom the view terms (settings.view) see through; required with them, ignored without. Throws
 /// std::invalid_argument naming the field for settings no feedback stage can run with (check_feedback_settings),

@@ -72,7 +72,7 @@ void SaliencyController::set_budget(int nodes) {
 void SaliencyController::set_spectator(const Spectator& spectator) {
   if (!settings_.view)
     throw std::logic_error("set_spectator: the controller was made without view terms (FeedbackSettings::view)");
-  check_spectator(spectator);
+  validate_spectator(spectator);  // every pose of its path, as the suite parser checks a suite's
   pending_spectator_ = spectator;
 }
 
