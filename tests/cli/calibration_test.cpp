@@ -110,4 +110,23 @@ TEST_F(Calibration, ShardsOfACalibratedSuiteMergeWhereverTheyLie) {
   EXPECT_NE(read_file(dir_ / "merged.json").find("\"tcsb_calibrated\""), std::string::npos);
 }
 
+TEST_F(Calibration, ACompliantSuiteIsNotCalibrated) {
+  // One material at every level: nothing to fit, and a fit would make it two.
+  std::string suite = nine_by_nine_suite("c", 1);
+  suite.replace(suite.find(R"("mass": {"total": 1.0},)"), std::string(R"("mass": {"total": 1.0},)").size(), "");
+  suite.replace(
+      suite.rfind('}'), 1,
+      R"(, "tcsb": {"masses": "cut"}, "material": {"model": "compliant", "stretch_stiffness": 50, "density": 0.2,)"
+      R"( "substeps": 4}})");
+  write_file(dir_ / "c.json", suite);
+  expect_bad_input(tcsb("calibrate c.json --quiet"), "material.model");
+  EXPECT_FALSE(fs::exists(dir_ / "c.calibration.json"));
+  // It runs, with its fidelity pass, and what it writes is a result the schema accepts (export checks it).
+  write_file(dir_ / "f.json", suite.replace(suite.rfind('}'), 1, R"(, "fidelity": {"enabled": true}})"));
+  const Outcome run = tcsb("run f.json --quiet --out out.json");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Outcome exported = tcsb("export out.json --format markdown --out out.md");
+  EXPECT_EQ(exported.exit_code, 0) << exported.err;
+}
+
 }  // namespace

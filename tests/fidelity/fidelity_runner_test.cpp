@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "fidelity/converged_reference.h"
 #include "paper/fidelity_tables.h"
 #include "run/runner.h"
 
@@ -142,6 +143,43 @@ TEST(FidelityPass, FloorsPerNetAreSmallNonNegativeAndZeroAtFullResolution) {
       }
     }
   }
+}
+
+TEST(FidelityPass, ACompliantSuiteIsMeasuredAgainstItsConvergedReference) {
+  // Under the compliant material the reference is full resolution at the small steps the doubling search ends at,
+  // and stock Bullet and the uniform grid are subjects; TC-SB without compression (the suite's small steps) then
+  // errs against it, where under Bullet's model it is the reference exactly.
+  Suite s = tiny_suite(9.81);
+  s.nets[0].mass_mode = MassMode::kDensity;
+  s.nets[0].mass = 0.1;
+  s.nets[0].lod_rest = RestPlacement::kVertex;
+  s.tcsb.masses = Masses::kCut;
+  s.tcsb.interfaces = Interfaces::kHanging;
+  s.fidelity.ablations = false;
+  s.steps = 20;
+  s.warmup_steps = 10;
+  s.solver.model = MaterialModel::kCompliant;
+  s.solver.compliant.stretch_stiffness = 50;
+  s.solver.compliant.density = 0.1;
+  s.solver.compliant.substeps = 4;
+  const RunResult run = run_suite(s, Context{});
+  ASSERT_TRUE(run.fidelity);
+  const FidelityResult& f = *run.fidelity;
+  ASSERT_EQ(f.floors.size(), 1u);
+  ASSERT_TRUE(f.floors[0].reference);
+  const ReferenceSubsteps& r = *f.floors[0].reference;
+  ASSERT_FALSE(r.doublings.empty());
+  EXPECT_EQ(r.doublings.front().substeps, 4);
+  EXPECT_GE(r.substeps, 4);
+  EXPECT_LE(r.substeps, 4 << kMaxReferenceDoublings);
+  for (std::size_t k = 1; k < r.doublings.size(); ++k)
+    EXPECT_EQ(r.doublings[k].substeps, 2 * r.doublings[k - 1].substeps);
+  EXPECT_EQ(r.converged, r.doublings.back().change_rms_pct <= r.doublings.back().noise_rms_pct);
+  EXPECT_EQ(find(f, FidelityMethod::kStock, 1.0).status, "ok");
+  EXPECT_EQ(find(f, FidelityMethod::kUniform, 0.5).status, "ok");
+  const FidelityCase& full = find(f, FidelityMethod::kTcsb, 1.0);
+  EXPECT_EQ(full.status, "ok");
+  EXPECT_EQ(full.rms_pct.max > 0.0, r.substeps != 4);  // its own small steps' error, unless they converged already
 }
 
 }  // namespace
