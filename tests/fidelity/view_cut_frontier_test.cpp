@@ -2,6 +2,10 @@
 // choices in the way. The cloth the reference shows in view is set at one level, the cloth near it at another, the
 // rest at a third, at step 0 and left so; beside them the uniform level cut and the calibrated uniform grid, each
 // also with its stiffness 1 % off the calibration's. The frontier of docs/investigations/view-cut-frontier.md.
+// Under the compliant material (a suite's `material` block) there is no calibration: the cuts and the uniform grid are
+// of the suite's one material, the reference is full resolution at kConvergedFactor x the suite's small steps (what
+// the fidelity pass's search ends at on these nets), and the mixed cut runs a second time at that many small steps
+// too (its iteration independence; docs/investigations/compliant-material.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,9 +40,20 @@ ScreenProjection view_at(const Suite& suite, int step) {
   return ScreenProjection(*suite.scene.camera, static_cast<double>(step + 1) * suite.world.dt);
 }
 
+/// Under the compliant material, the reference's small steps and the mixed cut's second run's: 8 x the suite's.
+constexpr int kConvergedFactor = 8;
+
+/// The suite's solver settings, under the compliant material with `factor` x its small steps.
+SolverSettings solver_at(const Suite& suite, int factor) {
+  SolverSettings solver = suite.solver;
+  solver.compliant.substeps *= factor;
+  return solver;
+}
+
 ReferenceRun run_reference(const Suite& suite, const std::shared_ptr<const Net>& net) {
   SceneWorld world(suite.world, suite.scene);
-  const auto body = make_plain_softbody(world.info(), *net, suite.solver);
+  const SolverSettings solver = solver_at(suite, suite.solver.compliant_model() ? kConvergedFactor : 1);
+  const auto body = make_plain_softbody(world.info(), *net, solver);
   const SceneWorld::Attachment attachment = world.attach(*body);
   ReferenceRun run;
   run.steps_in_view.assign(net->node_count(), 0);
@@ -102,13 +117,16 @@ std::vector<int> leaf_regions(const Net& net, const ReferenceRun& reference, dou
 /// The fixed cut whose blocks are at level `levels[r]` for their finest region r (the calibration's level stiffness,
 /// level 1's times `level1_scale`), coarsened level by level at step 0.
 BodyError fixed_cut(const Suite& suite, const std::shared_ptr<const Net>& net, const ReferenceRun& reference,
-                    const std::vector<int>& region, const int (&levels)[3], double level1_scale = 1.0) {
+                    const std::vector<int>& region, const int (&levels)[3], double level1_scale = 1.0,
+                    int substep_factor = 1) {
   SceneWorld world(suite.world, suite.scene);
   TcSettings settings = suite.tcsb;
   settings.start_level = 0;
-  settings.level_stiffness = suite.calibration->level_stiffness();
-  settings.level_stiffness[0] *= level1_scale;
-  TcSoftBody body(world.info(), net, suite.solver, settings);
+  if (suite.calibration) {
+    settings.level_stiffness = suite.calibration->level_stiffness();
+    settings.level_stiffness[0] *= level1_scale;
+  }
+  TcSoftBody body(world.info(), net, solver_at(suite, substep_factor), settings);
   const LodTree& tree = net->lod();
   for (int level = 1; level < tree.level_count(); ++level)
     for (bool began = true; began;) {
@@ -139,10 +157,11 @@ BodyError fixed_cut(const Suite& suite, const std::shared_ptr<const Net>& net, c
 /// The calibrated uniform grid at `compression`, its stiffness times `scale`.
 BodyError uniform_grid(Suite suite, const std::shared_ptr<const Net>& net, const ReferenceRun& reference,
                        double compression, double scale) {
-  for (StiffnessFit& fit : suite.calibration->uniform_grid) fit.linear_stiffness *= scale;
+  if (suite.calibration)
+    for (StiffnessFit& fit : suite.calibration->uniform_grid) fit.linear_stiffness *= scale;
   SceneWorld world(suite.world, suite.scene);
-  const auto grid = make_fidelity_subject(suite, {FidelityMethod::kUniformCalibrated, compression}, world, net, 1,
-                                          nullptr, suite.warmup_steps);
+  const FidelityMethod method = suite.calibration ? FidelityMethod::kUniformCalibrated : FidelityMethod::kUniform;
+  const auto grid = make_fidelity_subject(suite, {method, compression}, world, net, 1, nullptr, suite.warmup_steps);
   BodyError e = measure(
       suite, *net, reference,
       [&](int s) {
@@ -162,10 +181,20 @@ TEST(FixedViewCuts, DISABLED_Frontier) {
   const char* other = std::getenv("TCSB_FRONTIER_SUITE");
   const Suite suite = parse_suite(other ? std::filesystem::path(other)
                                         : std::filesystem::path(TCSB_SOURCE_DIR) / "suites/viewer-corner.json");
-  ASSERT_TRUE(suite.scene.camera && suite.calibration);
+  const bool compliant = suite.solver.compliant_model();
+  ASSERT_TRUE(suite.scene.camera && (suite.calibration || compliant));
   const double compression = 0.3;
-  std::printf("suite %s, %d solver iterations; p95 px (mean over steps) / %% RMS / nodes (%% of the net)\n\n",
-              suite.name.c_str(), suite.solver.piterations);
+  if (compliant)
+    std::printf("suite %s, compliant, %d small steps (reference: %d); p95 px (mean over steps) / %% RMS / nodes (%% "
+                "of the net)\n\n",
+                suite.name.c_str(), suite.solver.compliant.substeps,
+                kConvergedFactor * suite.solver.compliant.substeps);
+  else
+    std::printf("suite %s, %d solver iterations; p95 px (mean over steps) / %% RMS / nodes (%% of the net)\n\n",
+                suite.name.c_str(), suite.solver.piterations);
+  // Under the compliant material there is no stiffness to move by 1 %: one row of each.
+  const std::vector<double> scales = compliant ? std::vector<double>{1.0} : std::vector<double>{1.0, 0.99, 1.01};
+  const std::string grid_name = compliant ? "uniform grid at 30 %" : "calibrated uniform grid at 30 %";
   std::printf("| net | body | nodes | p95 px | RMS %% |\n|---|---|---|---|---|\n");
   for (const NetSpec& spec : suite.nets) {
     const auto net = std::make_shared<const Net>(spec);
@@ -174,13 +203,20 @@ TEST(FixedViewCuts, DISABLED_Frontier) {
       std::printf("| %s | %s | %d (%.1f %%) | %.3f | %.3f |\n", spec.name.c_str(), body.c_str(), e.nodes,
                   100.0 * e.nodes / static_cast<double>(net->node_count()), e.p95_px, e.rms_pct);
     };
-    for (const double scale : {1.0, 0.99, 1.01})
-      row("calibrated uniform grid at 30 %, stiffness x " + std::to_string(scale).substr(0, 4),
+    for (const double scale : scales)
+      row(grid_name + ", stiffness x " + std::to_string(scale).substr(0, 4),
           uniform_grid(suite, net, reference, compression, scale));
     const std::vector<int> everywhere(net->node_count(), 2);
-    for (const double scale : {1.0, 0.99, 1.01})
+    for (const double scale : scales)
       row("level 1 everywhere, stiffness x " + std::to_string(scale).substr(0, 4),
           fixed_cut(suite, net, reference, everywhere, {1, 1, 1}, scale));
+    if (compliant) {
+      row("level 0 everywhere", fixed_cut(suite, net, reference, everywhere, {0, 0, 0}));
+      const std::vector<int> in_view = leaf_regions(*net, reference, 1.0, 1.0);
+      row("level 0 in view at every step, level 1 elsewhere, " + std::to_string(kConvergedFactor) +
+              " x the small steps",
+          fixed_cut(suite, net, reference, in_view, {0, 1, 1}, 1.0, kConvergedFactor));
+    }
     for (const double share : {1.0, 0.5}) {
       const std::string seen = share == 1.0 ? "in view at every step" : "in view on half the steps";
       const std::vector<int> regions = leaf_regions(*net, reference, share, 1.0);
