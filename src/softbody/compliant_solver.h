@@ -4,8 +4,8 @@
 // A step of dt is Bullet's btSoftBody::predictMotion (the step's forces, and the predicted positions the collision
 // detection meets), then `substeps` small steps of h = dt / substeps, each: the step's forces for h, positions
 // advanced from the small step's start, the configured position solvers once (anchors, rigid contacts — the step's
-// contact set reused in every small step, as Macklin et al. 2019 do —, one pass over the links with Bullet's
-// correction (btSoftBody::PSolve_Links') and the compliant constants, in double precision), the caller's own
+// contact set reused in every small step, as Macklin et al. 2019 do —, one pass over the links with XPBD's
+// correction and the compliant constants, in double precision), the caller's own
 // constraints (TC-SB's interfaces), and velocities from the positions, damped by exp(-damping h).
 #pragma once
 

@@ -6,9 +6,9 @@
 //  * kCompliant — one physical material at every level: a membrane stiffness Y (N/m) and a density (kg/m^2), each
 //    link's compliance from the 2D rule (k_e = Y x the area of its adjacent cells / (2 x its length^2): Van Gelder,
 //    JGT 1998), masses lumped by area, and each step taken as `substeps` small steps of one link pass each (XPBD
-//    with lambda = 0; Macklin et al., "Small Steps in Physics Simulation", SCA 2019). Bullet's link correction does
-//    the pass: with m_c0 = w_a + w_b + alpha / h^2 one pass of btSoftBody::PSolve_Links' correction is one XPBD pass
-//    (compliant_solver.h runs it on positions in double precision).
+//    with lambda = 0; Macklin et al., "Small Steps in Physics Simulation", SCA 2019), with Bullet's link constant
+//    m_c0 = w_a + w_b + alpha / h^2 as XPBD's denominator (compliant_solver.h runs the pass on positions in double
+//    precision).
 #pragma once
 
 namespace tcsb {
@@ -37,8 +37,8 @@ inline double membrane_link_stiffness(double stretch_stiffness, double adjacent_
 }
 
 /// Bullet's link constant m_c0 for a compliant link: the endpoints' inverse masses plus the link's compliance over
-/// the small step squared (alpha~ = 1 / (k h^2)). With it, btSoftBody::PSolve_Links' correction
-/// (rl^2 - d^2) / (m_c0 (rl^2 + d^2)) ~ (rl - d) / (rl m_c0) is XPBD's -C / (w + alpha~) with lambda = 0.
+/// the small step squared (alpha~ = 1 / (k h^2)), XPBD's denominator w + alpha~: a pass moves the link by
+/// (rl - d) / m_c0 (compliant_solver.h).
 inline double compliant_link_constant(double inverse_masses, double stiffness, double substep_dt) {
   return inverse_masses + 1.0 / (stiffness * substep_dt * substep_dt);
 }
