@@ -29,6 +29,9 @@ namespace {
 //  - a TC-SB body: Bullet nodes reserved for all 4/3 N tree nodes, ~ 200 B of bookkeeping per tree node (cut
 //    membership, incidence lists, feedback state, and restore_order's scratch: 4 B per tree node and 2 x 4 B per
 //    simulated node or link; about 110 B in all, plus the scratch), and Bullet links for up to 3 L;
+//  - under the compliant material, every body's small steps on double positions (SubstepPositions: two 24 B
+//    vectors and an 8 B inverse mass per simulated node; a TC-SB body's grow to its simulated nodes, at most the
+//    tree's);
 //  - the recorder: 36 B per step (StepSeries in run_result.h: three doubles, three int32, reserved to size by the
 //    runner), counted for every step (warm-up included, a margin) of every run of the suite, all kept to the end.
 constexpr double kDbvtNodeBytes = 96;
@@ -40,6 +43,7 @@ constexpr double kNetNodeBytes = 48, kNetLinkBytes = 12;
 constexpr double kTreeNodeBytes = 116, kTreeNodesPerLeaf = 4.0 / 3.0;
 constexpr double kTcBookkeepingBytes = 200, kTcLinkFactor = 3;
 constexpr double kSampleBytes = 3 * 8 + 3 * 4;
+constexpr double kSubstepNodeBytes = 2 * 24 + 8;
 
 // A scene with colliders gives every body a btSoftRigidDynamicsWorld of its own (scene/scene_world.h). Measured with
 // mallinfo2 (uordblks + hblkhd) on Bullet 3.24: 4 672 144 B for the world, nearly all of it its collision
@@ -84,9 +88,10 @@ double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
   const double tree = kTreeNodesPerLeaf * n;
   const double faces = suite.scene.wind ? 2.0 * (spec.width - 1) * (spec.height - 1) * kWindFaceBytes : 0.0;
   const double world = scene_world_bytes(suite.scene);  // every body has a world of its own
-  const double plain = n * kBulletNodeBytes + l * kBulletLinkBytes + faces + world;
+  const double substeps = suite.solver.compliant_model() ? kSubstepNodeBytes : 0.0;
+  const double plain = n * (kBulletNodeBytes + substeps) + l * kBulletLinkBytes + faces + world;
   const double tcsb_body =
-      tree * (kBulletNodeBytes + kTcBookkeepingBytes) + kTcLinkFactor * l * kBulletLinkBytes + faces + world;
+      tree * (kBulletNodeBytes + kTcBookkeepingBytes + substeps) + kTcLinkFactor * l * kBulletLinkBytes + faces + world;
   const double shared = n * kNetNodeBytes + l * kNetLinkBytes + tree * kTreeNodeBytes;
   double bytes = shared;
   const auto body_bytes = [&](Method m) {
