@@ -11,6 +11,7 @@ namespace tcsb {
 
 std::unique_ptr<btSoftBody> make_plain_softbody(btSoftBodyWorldInfo& world, const Net& net,
                                                 const SolverSettings& settings) {
+  check_solver_settings(settings);
   std::unique_ptr<btSoftBody> body;
   if (settings.compliant_model())
     body = std::make_unique<CompliantSoftBody>(world, settings);

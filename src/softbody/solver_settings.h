@@ -26,6 +26,11 @@ struct SolverSettings {
   double substep_dt() const { return step_dt / compliant.substeps; }
 };
 
+/// Throws std::invalid_argument naming the field ("SolverSettings: linear_stiffness must be in (0, 1], got 0") for
+/// settings no body can be stepped with: the suite reader's ranges, for a program that fills the struct itself. Every
+/// body factory checks with it (make_plain_softbody, TcSoftBody).
+void check_solver_settings(const SolverSettings& settings);
+
 /// World parameters shared by every body of a run.
 struct WorldSettings {
   double dt = 1.0 / 60.0;  ///< fixed time step, seconds

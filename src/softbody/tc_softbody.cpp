@@ -36,6 +36,7 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
       throw std::invalid_argument("TcSoftBody: only structural links are supported (no shear or bend links)");
   const LodTree& lod = net_->lod();
   const std::size_t tree_size = lod.size();
+  check_solver_settings(solver_);
   if (solver_.compliant_model()) {
     // One material at every level: each link's compliance from the cells around it (tc_compliance.cpp), which the
     // corner shares of masses that follow the cut describe, and no per-level stiffness to mend it.

@@ -28,9 +28,9 @@ void parse_material(const Reader& r, const Object& root, const nlohmann::json& n
     return;
   }
   CompliantMaterial& c = solver.compliant;
-  m.read("stretch_stiffness", c.stretch_stiffness, kPositive, true);
-  m.read("density", c.density, kPositive, true);
-  m.read("damping", c.damping, kNonNegative);
+  m.read("stretch_stiffness", c.stretch_stiffness, kSceneQuantity, true);  // (bounded as what Bullet can carry)
+  m.read("density", c.density, kSceneQuantity, true);
+  m.read("damping", c.damping, kSceneNonNegative);
   m.read("substeps", c.substeps, 1, kMaxSubsteps, true);
   // One material for every body: the nets' masses are its density's, lumped by area.
   for (std::size_t i = 0; i < s.nets.size(); ++i) {

@@ -59,18 +59,18 @@ NetSpec parse_net(const Reader& r, const json& j, const std::string& path) {
   o.read("width", net.width, 2, 100000, true);
   o.read("height", net.height, 2, 100000, true);
   if (const json* size = o.find("size")) {
-    const std::array<double, 2> xz = r.numbers<2>(*size, o.at("size"), kPositive);
+    const std::array<double, 2> xz = r.numbers<2>(*size, o.at("size"), kSceneLength);
     net.size_x = xz[0];
     net.size_z = xz[1];
   }
-  o.read("elevation", net.elevation, kAnyFinite);
+  o.read("elevation", net.elevation, kSceneCoordinate);  // what Bullet's floats can carry (suite_fields.h)
   if (const json* mass = o.find("mass")) {
     const Object m(r, *mass, o.at("mass"), {"total", "per_node"});
     if (mass->size() != 1) {
       r.fail(o.at("mass"), "must have exactly one of \"total\" or \"per_node\", got " + mass->dump());
     }
     net.mass_mode = mass->contains("total") ? MassMode::kTotal : MassMode::kPerNode;
-    m.read(net.mass_mode == MassMode::kTotal ? "total" : "per_node", net.mass, kPositive);
+    m.read(net.mass_mode == MassMode::kTotal ? "total" : "per_node", net.mass, kSceneQuantity);
   }
   if (const json* pinned = o.find("pinned")) {
     const std::string p = o.at("pinned");

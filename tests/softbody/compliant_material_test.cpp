@@ -4,7 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "scene/scene_world.h"
 #include "softbody/compliant_solver.h"
@@ -155,6 +160,37 @@ TEST(CompliantMaterial, DampingTakesTheSameShareOfASecondWhateverTheSmallSteps) 
     for (int s = 0; s < 60; ++s) world.step(testing::kDt);
     for (int i = 0; i < body->m_nodes.size(); ++i)
       EXPECT_NEAR(body->m_nodes[i].m_v.x(), std::exp(-rate * 60 * static_cast<double>(testing::kDt)), 1e-4);
+  }
+}
+
+TEST(SolverSettingsCheck, EveryBodyFactoryRefusesSettingsNoBodyCanStepWith) {
+  // A kLST of 0 divided every link constant by zero; the compliant material's fields, as the suite reader's ranges.
+  const auto net = compliant_net(5);
+  const std::vector<std::pair<std::string, std::function<void(SolverSettings&)>>> bad = {
+      {"piterations", [](SolverSettings& s) { s.piterations = 0; }},
+      {"linear_stiffness", [](SolverSettings& s) { s.linear_stiffness = 0; }},
+      {"damping", [](SolverSettings& s) { s.damping = 1; }},
+      {"compliant.stretch_stiffness", [](SolverSettings& s) { s.compliant.stretch_stiffness = -1; }},
+      {"compliant.density", [](SolverSettings& s) { s.compliant.density = 0; }},
+      {"compliant.substeps", [](SolverSettings& s) { s.compliant.substeps = 0; }},
+      {"step_dt", [](SolverSettings& s) { s.step_dt = std::nan(""); }},
+  };
+  SceneWorld world({});
+  for (const auto& [field, edit] : bad) {
+    SCOPED_TRACE(field);
+    SolverSettings solver = compliant_solver(4);
+    edit(solver);
+    for (const bool tc : {false, true}) {
+      try {
+        if (tc)
+          TcSoftBody body(world.info(), net, solver, cut_settings());
+        else
+          make_plain_softbody(world.info(), *net, solver);
+        ADD_FAILURE() << "accepted";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("SolverSettings: " + field + " "), std::string::npos) << e.what();
+      }
+    }
   }
 }
 

@@ -987,6 +987,13 @@ TEST(SuiteMaterial, BulletIsTheDefaultAndTheCompliantModelIsReadInPhysicalUnits)
   EXPECT_DOUBLE_EQ(s.nets[0].total_mass(), 0.2 * 8.0 * 8.0);
 }
 
+TEST(SuiteReject, NetValuesBeyondWhatBulletCanRepresent) {
+  // A net's size, elevation and mass in Bullet's floats: bounded as the scene's are (suite_fields.h).
+  rejected_edit([](json& j) { j["nets"][0]["size"] = {1e39, 8}; }, "nets[0].size[0]");
+  rejected_edit([](json& j) { j["nets"][0]["elevation"] = -1e7; }, "nets[0].elevation");
+  rejected_edit([](json& j) { j["nets"][0]["mass"] = {{"total", 1e39}}; }, "nets[0].mass.total");
+}
+
 TEST(SuiteMaterial, BadMaterialsAreRefusedNamingTheField) {
   rejected_edit([](json& j) { j["material"] = {{"model", "xpbd"}}; }, "material.model");
   for (const char* key : {"stretch_stiffness", "density", "substeps"}) {
@@ -996,6 +1003,7 @@ TEST(SuiteMaterial, BadMaterialsAreRefusedNamingTheField) {
     rejected_compliant([&](json& j) { j["material"].erase(key); }, "material." + std::string(key));
   }
   rejected_compliant([](json& j) { j["material"]["damping"] = -0.1; }, "material.damping");
+  rejected_compliant([](json& j) { j["material"]["stretch_stiffness"] = 1e39; }, "material.stretch_stiffness");
   rejected_compliant([](json& j) { j["material"]["kLST"] = 1; }, "material.kLST");
   // Bullet's model takes its stiffness from solver: a compliant field there would be read and ignored.
   rejected_edit([](json& j) { j["material"] = {{"model", "bullet"}, {"density", 1}}; }, "material.density");
