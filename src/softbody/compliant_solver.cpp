@@ -94,10 +94,14 @@ void solve_in_substeps(btSoftBody& body, const SolverSettings& solver, SubstepPo
   }
   // The contacts' constants were made for the whole step (ImpulseMatrix of sdt, and sdt x the inverse mass): their
   // product, the node's correction, does not depend on it, but the impulse a dynamic rigid body receives does.
+  // Their hardness (m_c4: the share of the distance to the contact plane a solve closes, Bullet's kCHR or kKHR) is a
+  // step's too: closed in every small step it would move a node n times as far, and v = (x - q) / h would turn each
+  // small step's pull into n times the velocity a step gives it.
   for (int i = 0; i < body.m_rcontacts.size(); ++i) {
     btSoftBody::RContact& c = body.m_rcontacts[i];
     c.m_c0 = c.m_c0 * static_cast<btScalar>(n);
     c.m_c2 *= per_substep;
+    c.m_c4 *= per_substep;
   }
   body.m_sst.sdt = static_cast<btScalar>(h);
   body.m_sst.isdt = static_cast<btScalar>(1 / h);
