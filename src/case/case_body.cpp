@@ -141,11 +141,8 @@ std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key,
   switch (key.method) {
     case Method::kPlain:
       return std::make_unique<StockBody>(world, make_plain_softbody(world.info(), *net, suite.solver));
-    case Method::kStock: {
-      SolverSettings stock = suite.solver;  // the suite's kLST and iterations, stepped by Bullet itself
-      stock.model = MaterialModel::kBullet;
-      return std::make_unique<StockBody>(world, make_plain_softbody(world.info(), *net, stock));
-    }
+    case Method::kStock:
+      return std::make_unique<StockBody>(world, make_plain_softbody(world.info(), *net, stock_bullet(suite.solver)));
     case Method::kBulletPatch:
       return std::make_unique<StockBody>(world, make_bullet_patch(world.info(), *net, suite.solver));
     case Method::kPlainEqual: {

@@ -232,11 +232,8 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
       solver.linear_stiffness = *k;
       return std::make_unique<UniformSubject>(world, solver, std::move(net), budget);
     }
-    case FidelityMethod::kStock: {  // a uniform grid of every node: the plain body, stepped by Bullet itself
-      SolverSettings stock = suite.solver;
-      stock.model = MaterialModel::kBullet;
-      return std::make_unique<UniformSubject>(world, stock, std::move(net), budget);
-    }
+    case FidelityMethod::kStock:  // a uniform grid of every node: the plain body, stepped by Bullet itself
+      return std::make_unique<UniformSubject>(world, stock_bullet(suite.solver), std::move(net), budget);
     case FidelityMethod::kSwitch:
       return std::make_unique<SwitchSubject>(world, suite, std::move(net), budget, pace, fallback_switch_step);
     case FidelityMethod::kTcsb:

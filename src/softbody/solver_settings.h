@@ -26,6 +26,13 @@ struct SolverSettings {
   double substep_dt() const { return step_dt / compliant.substeps; }
 };
 
+/// The same settings stepped by Bullet itself (MaterialModel::kBullet): stock Bullet at the suite's kLST and
+/// iterations, the baseline beside a compliant suite's bodies (Method::kStock, FidelityMethod::kStock).
+inline SolverSettings stock_bullet(SolverSettings settings) {
+  settings.model = MaterialModel::kBullet;
+  return settings;
+}
+
 /// Throws std::invalid_argument naming the field ("SolverSettings: linear_stiffness must be in (0, 1], got 0") for
 /// settings no body can be stepped with: the suite reader's ranges, for a program that fills the struct itself. Every
 /// body factory checks with it (make_plain_softbody, TcSoftBody).
