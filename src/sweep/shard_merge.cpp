@@ -1,6 +1,7 @@
 #include "sweep/shard_merge.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -304,6 +305,20 @@ FidelityFloors read_floors(const Reader& r, const ojson& j, const std::string& p
     f.interpolation.push_back({.compression = measured(r.number_or_null(list[k], at, "compression")),
                                .grid = r.string(list[k], at, "grid"),
                                .rms_pct = summary_of_mean(measured(r.number_or_null(list[k], at, "rms_pct")))});
+  }
+  if (const ojson* reference = r.find(j, path, "reference")) {  // the compliant material's converged reference
+    const std::string at = path + ".reference";
+    ReferenceSubsteps& out = f.reference.emplace();
+    out.substeps = static_cast<int>(r.integer(*reference, at, "substeps", 1, INT_MAX));
+    out.converged = r.boolean(r.member(*reference, at, "converged"), at + ".converged");
+    const ojson& doublings = r.array(*reference, at, "doublings");
+    for (std::size_t k = 0; k < doublings.size(); ++k) {
+      const std::string d = at + ".doublings[" + std::to_string(k) + "]";
+      out.doublings.push_back({.substeps = static_cast<int>(r.integer(doublings[k], d, "substeps", 1, INT_MAX)),
+                               .change_rms_pct = measured(r.number_or_null(doublings[k], d, "change_rms_pct")),
+                               .noise_rms_pct = measured(r.number_or_null(doublings[k], d, "noise_rms_pct")),
+                               .diverged = r.boolean(r.member(doublings[k], d, "diverged"), d + ".diverged")});
+    }
   }
   return f;
 }

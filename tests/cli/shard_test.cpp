@@ -169,6 +169,22 @@ TEST_F(Shards, MergedShardsSplitByNetEqualTheUnshardedRunToo) {
   expect_processes_are_the_shards(merged, 3);
 }
 
+TEST_F(Shards, AMergedCompliantRunKeepsItsConvergedReference) {
+  // The fidelity pass of a compliant suite records how its reference's small steps were found; a merge rebuilds the
+  // floors from the shards' JSON and must keep it.
+  std::string suite = nine_by_nine_suite("c", 2);
+  suite.replace(suite.find(R"("mass": {"total": 1.0},)"), std::string(R"("mass": {"total": 1.0},)").size(), "");
+  suite.replace(suite.rfind('}'), 1,
+                R"(, "tcsb": {"masses": "cut"}, "fidelity": {"enabled": true}, "material": {"model": "compliant",)"
+                R"( "stretch_stiffness": 50, "density": 0.2, "substeps": 4}})");
+  write_file(dir_ / "c.json", suite);
+  ASSERT_EQ(tcsb("run c.json --quiet --out whole.json").exit_code, 0);
+  run_and_merge("c.json", 2, "");
+  const json whole = load("whole.json"), merged = load("merged_2.json");
+  ASSERT_TRUE(whole["fidelity"]["floors"][0].contains("reference"));
+  EXPECT_EQ(merged["fidelity"]["floors"][0]["reference"], whole["fidelity"]["floors"][0]["reference"]);
+}
+
 TEST_F(Shards, ASplitByRepetitionSpreadsEveryNetsRepetitionsWithAllItsCases) {
   // Three nets of two repetitions in three shards: the six (net, repetition) units go round the shards, each with
   // every case of its net, and no repetition is run twice.
