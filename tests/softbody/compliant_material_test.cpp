@@ -201,6 +201,11 @@ TEST(CompliantMaterial, WholeLevelsAndAMixedCutHangAsTheConvergedCloth) {
   // (each against the grid node it rests on), % of the extent. Measured 0.88, 0.40, 1.30 and 0.64 %: level 2 (17 x
   // 17 nodes) misses the 1 % by its spatial resolution, and the mixed cut errs less than the worse of its
   // two levels, so the levels compose.
+#ifdef __SANITIZE_ADDRESS__
+  // A measurement of the physics, not of memory: 8 minutes at -O0 under the sanitizers (482 s in CI's sanitized
+  // tree), 3 s in Release. The sanitized tree runs the compliant solver through the other tests here.
+  GTEST_SKIP() << "a physics measurement: run in the Release tree";
+#endif
   constexpr int kWidth = 65;
   NetSpec spec;
   spec.name = "hanging";
