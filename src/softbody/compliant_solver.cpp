@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "softbody/tc_softbody.h"
+#include "softbody/vector_conversion.h"
 
 namespace tcsb {
 
@@ -26,11 +27,6 @@ void prepare_anchors(btSoftBody& body) {
 }
 
 namespace {
-
-Eigen::Vector3d to_double(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
-btVector3 to_float(const Eigen::Vector3d& v) {
-  return {static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z())};
-}
 
 /// One pass over the links, in the links' order, on the double positions: XPBD's correction with lambda = 0, each
 /// link moved by (rl - d) / m_c0 along itself. Not btSoftBody::PSolve_Links' square-root-free (rl^2 - d^2) / (m_c0
@@ -60,13 +56,13 @@ void run_bullet_solver(btSoftBody& body, btSoftBody::ePSolver::_ solver, btScala
   btSoftBody::Node* base = &body.m_nodes[0];
   nodes([&](btSoftBody::Node* n) {
     const auto i = static_cast<std::size_t>(n - base);
-    n->m_x = to_float(p.x[i]);
-    n->m_q = to_float(p.q[i]);
+    n->m_x = to_bullet(p.x[i]);
+    n->m_q = to_bullet(p.q[i]);
   });
   btSoftBody::getSolver(solver)(&body, 1, ti);
   nodes([&](btSoftBody::Node* n) {
     const auto i = static_cast<std::size_t>(n - base);
-    p.x[i] += to_double(n->m_x) - to_double(to_float(p.x[i]));  // (0 for a node listed again)
+    p.x[i] += to_eigen(n->m_x) - to_eigen(to_bullet(p.x[i]));  // (0 for a node listed again)
   });
 }
 
@@ -89,7 +85,7 @@ void solve_in_substeps(btSoftBody& body, const SolverSettings& solver, SubstepPo
     const btVector3 start = node.m_vn;
     node.m_vn = (node.m_v - start) * per_substep;
     node.m_v = start;
-    p.x[i] = to_double(node.m_q);
+    p.x[i] = to_eigen(node.m_q);
     p.inverse_mass[i] = node.m_im;
   }
   // The contacts' constants were made for the whole step (ImpulseMatrix of sdt, and sdt x the inverse mass): their
@@ -122,7 +118,7 @@ void solve_in_substeps(btSoftBody& body, const SolverSettings& solver, SubstepPo
       btSoftBody::Node& node = body.m_nodes[static_cast<int>(i)];
       p.q[i] = p.x[i];
       node.m_v += node.m_vn;
-      p.x[i] += to_double(node.m_v) * h;
+      p.x[i] += to_eigen(node.m_v) * h;
     }
     const btScalar ti = static_cast<btScalar>(s) / static_cast<btScalar>(n);
     for (int k = 0; k < body.m_cfg.m_psequence.size(); ++k) {
@@ -142,13 +138,13 @@ void solve_in_substeps(btSoftBody& body, const SolverSettings& solver, SubstepPo
     if (after_links) after_links(p);
     for (std::size_t i = 0; i < count; ++i) {
       btSoftBody::Node& node = body.m_nodes[static_cast<int>(i)];
-      node.m_v = to_float((p.x[i] - p.q[i]) * (node.m_im > 0 ? velocity_scale : pin_velocity_scale));
+      node.m_v = to_bullet((p.x[i] - p.q[i]) * (node.m_im > 0 ? velocity_scale : pin_velocity_scale));
     }
   }
   for (std::size_t i = 0; i < count; ++i) {
     btSoftBody::Node& node = body.m_nodes[static_cast<int>(i)];
-    node.m_x = to_float(p.x[i]);
-    node.m_q = to_float(p.q[i]);
+    node.m_x = to_bullet(p.x[i]);
+    node.m_q = to_bullet(p.q[i]);
     node.m_f = btVector3(0, 0, 0);
   }
   body.m_sst.sdt = dt;
