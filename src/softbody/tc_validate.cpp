@@ -31,15 +31,16 @@ Validation TcSoftBody::validate() const {
   // Bullet's default solver calls btSoftBody::solveConstraints, which skips the interface constraints' handles
   // (m_c0 = 0) and projects nothing in their place: the levels would come apart. A world hands its solver to every
   // body it adds (btSoftRigidDynamicsWorld::addSoftBody, setSoftBodySolver); a body stepped solo has none.
-  if (settings_.interfaces == Interfaces::kHanging && getSoftBodySolver() != nullptr &&
-      dynamic_cast<const TcSoftBodySolver*>(getSoftBodySolver()) == nullptr)
-    fail("hanging interfaces in a world whose soft-body solver is not a tcsb::TcSoftBodySolver: build the world with "
-         "one (tc_softbody_solver.h)");
-  // Bullet's default solver would take one step of Bullet's iterations with the compliant constants: another cloth.
-  if (solver_.compliant_model() && getSoftBodySolver() != nullptr &&
-      dynamic_cast<const TcSoftBodySolver*>(getSoftBodySolver()) == nullptr)
-    fail("the compliant material in a world whose soft-body solver is not a tcsb::TcSoftBodySolver: build the world "
-         "with one (tc_softbody_solver.h)");
+  // The compliant material likewise: Bullet's default solver would take one step of Bullet's iterations with the
+  // compliant constants, another cloth.
+  if (getSoftBodySolver() != nullptr && dynamic_cast<const TcSoftBodySolver*>(getSoftBodySolver()) == nullptr) {
+    if (settings_.interfaces == Interfaces::kHanging)
+      fail("hanging interfaces in a world whose soft-body solver is not a tcsb::TcSoftBodySolver: build the world "
+           "with one (tc_softbody_solver.h)");
+    if (solver_.compliant_model())
+      fail("the compliant material in a world whose soft-body solver is not a tcsb::TcSoftBodySolver: build the "
+           "world with one (tc_softbody_solver.h)");
+  }
   if (m_nodes.capacity() < static_cast<int>(tree_size)) fail("node capacity below the tree size");
   // In a collision world (the world gave the body a broadphase proxy) the body's world info must be that world's:
   // Bullet's step updates the body's box in m_worldInfo->m_broadphase, and an info of the body's own has none.
