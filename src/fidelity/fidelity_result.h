@@ -67,11 +67,14 @@ struct FidelityCase {
   double step_ms = 0;                   ///< mean wall time of the subject's own steps (blends, feedback, operations,
                                         ///< switch, Bullet) over the measured steps, run on its own
   double reference_step_ms = 0;         ///< mean wall time of the reference's steps in the same pass (recording run)
-  std::optional<double> switch_ms;      ///< switch_body: building the coarse body, moving the state, freeing the fine
-  std::optional<int> switch_step;       ///< switch_body: the step at whose boundary it switched
-  std::optional<int> converged_step;    ///< TC-SB under a budget: the step at whose boundary it first fitted it
-  std::string final_state_hash;         ///< state_hash of the subject's body at the end (TC-SB: equals the timed
-                                        ///< case's hash at the same target: the pass measured the timed trajectory)
+  /// Mean step wall time of each block of measured steps (the pass interleaves bodies in blocks), in pass order:
+  /// the units an interval of a time ratio resamples. Empty for a diverged subject and in results written before.
+  std::vector<double> block_step_ms;
+  std::optional<double> switch_ms;    ///< switch_body: building the coarse body, moving the state, freeing the fine
+  std::optional<int> switch_step;     ///< switch_body: the step at whose boundary it switched
+  std::optional<int> converged_step;  ///< TC-SB under a budget: the step at whose boundary it first fitted it
+  std::string final_state_hash;       ///< state_hash of the subject's body at the end (TC-SB: equals the timed
+                                      ///< case's hash at the same target: the pass measured the timed trajectory)
 };
 
 /// The interpolation floor of one budget on one net (fidelity/fidelity_floors.h).
@@ -107,6 +110,8 @@ struct FidelityFloors {
   std::vector<InterpolationFloor> interpolation;  ///< one per distinct budget of the plan, ascending
   /// Under the compliant material: how the converged reference's small steps were found (converged_reference.h).
   std::optional<ReferenceSubsteps> reference;
+  /// The reference's mean step wall time per block of measured steps, as FidelityCase::block_step_ms.
+  std::vector<double> reference_block_step_ms;
 };
 
 /// The whole fidelity pass of a run.

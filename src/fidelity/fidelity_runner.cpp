@@ -32,6 +32,15 @@ namespace {
 /// are interleaved, like the repetitions of the timed cases.
 constexpr int kBlockSteps = 20;
 
+/// Appends the mean of series[from, end) to `blocks` when the block timed any step: a block's mean step, the unit
+/// the speed-up's interval resamples (paper/equal_error_table.h), since the blocks of all bodies are interleaved.
+void add_block_mean(const std::vector<double>& series, std::size_t from, std::vector<double>& blocks) {
+  if (series.size() <= from) return;
+  double sum = 0;
+  for (std::size_t i = from; i < series.size(); ++i) sum += series[i];
+  blocks.push_back(sum / static_cast<double>(series.size() - from));
+}
+
 /// The scene's camera as it saw the end of step `step` (at (step + 1) x dt), when the scene has one.
 std::optional<ScreenProjection> camera_view(const Suite& suite, int step) {
   if (!suite.scene.camera) return std::nullopt;
@@ -80,6 +89,7 @@ class Reference {
     block.positions.resize(frames * n);
     block.saliency.resize(frames * n);
     block.energy.assign(frames, 0.0);
+    const std::size_t timed_before = step_ms.size();
     for (int s = first; s < last; ++s) {
       const StepClock::time_point t0 = StepClock::now();
       world_.step(static_cast<btScalar>(suite_.world.dt));
@@ -109,12 +119,14 @@ class Reference {
       const std::vector<float> saliency = compute_saliency(snapshot_, suite_.feedback, view ? &*view : nullptr);
       std::copy(saliency.begin(), saliency.end(), block.saliency.begin() + static_cast<std::ptrdiff_t>(f * n));
     }
+    add_block_mean(step_ms, timed_before, block_step_ms);
     return true;
   }
 
   ReferenceBlock block;
   double initial_energy = 0;  // at rest, before the first step: the drift's denominator
   std::vector<double> step_ms;
+  std::vector<double> block_step_ms;  // per block with measured steps: their mean
   std::optional<int> diverged_step;
   std::string diverged_reason;
 
@@ -156,6 +168,7 @@ class Track {
     const int warmup = suite_.warmup_steps;
     const double to_pct = 100.0 / net_->extent();
     body_->resume();  // its feedback worker spins again before the first timed step, not woken late inside it
+    const std::size_t timed_before = step_ms_.size();
     for (int s = first; s < last && alive(); ++s) {
       const bool measured = s >= warmup;
       const StepClock::time_point t0 = StepClock::now();
@@ -200,6 +213,7 @@ class Track {
                                             reference.energy[static_cast<std::size_t>(s - first)], reference_energy0);
       if (std::isfinite(drift)) drift_.push_back(drift);  // undefined only for an initial energy of 0 (net at y = 0)
     }
+    if (alive()) add_block_mean(step_ms_, timed_before, result.block_step_ms);
     body_->pause();  // the other subjects run their blocks now: no feedback worker should spin meanwhile
   }
 
@@ -219,6 +233,7 @@ class Track {
     if (suite_.scene.camera) result.screen = screen_.finish();
     result.step_ms = mean(step_ms_);
     result.reference_step_ms = reference_ms;
+    if (!alive()) result.block_step_ms.clear();  // a part of the blocks would pair with the wrong ones
     result.mean_nodes = mean(nodes_);
     result.switch_ms = body_->switch_ms();
     result.switch_step = body_->switch_step();
@@ -361,6 +376,7 @@ void run_net(const Suite& suite, std::size_t net_index, const std::shared_ptr<co
   const double reference_ms = mean(reference.step_ms);
   for (auto& t : tracks) out.cases.push_back(t->finish(reference_ms));
   out.floors.push_back(floors.finish());
+  out.floors.back().reference_block_step_ms = reference.block_step_ms;
 }
 
 }  // namespace

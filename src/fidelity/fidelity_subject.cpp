@@ -6,6 +6,7 @@
 #include "case/case_body.h"
 #include "case/step_clock.h"
 #include "feedback/controller.h"
+#include "fidelity/converged_reference.h"
 #include "fidelity/reconstruction.h"
 #include "fidelity/surface_morph.h"
 #include "net/grid_resample.h"
@@ -13,6 +14,7 @@
 #include "softbody/plain_softbody.h"
 #include "softbody/tc_softbody.h"
 #include "softbody/vector_conversion.h"
+#include "suite/fidelity_block.h"
 
 namespace tcsb {
 
@@ -234,6 +236,15 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
     }
     case FidelityMethod::kStock:  // a uniform grid of every node: the plain body, stepped by Bullet itself
       return std::make_unique<UniformSubject>(world, stock_bullet(suite.solver), std::move(net), budget);
+    case FidelityMethod::kFullResolution: {
+      const int passes = divided_solver_count(suite.solver, spec.solver_divisor);
+      SolverSettings solver = suite.solver;
+      if (solver.compliant_model())
+        solver = with_substeps(solver, passes);
+      else
+        solver.piterations = passes;
+      return std::make_unique<UniformSubject>(world, solver, std::move(net), budget);
+    }
     case FidelityMethod::kSwitch:
       return std::make_unique<SwitchSubject>(world, suite, std::move(net), budget, pace, fallback_switch_step);
     case FidelityMethod::kTcsb:

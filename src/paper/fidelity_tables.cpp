@@ -78,12 +78,14 @@ std::vector<FidelityRow> fidelity_rows(const FidelityResult& result) {
   for (const FidelityCase& c : result.cases) {
     const std::string method = fidelity_method_name(c.subject.method);
     auto it = std::find_if(rows.begin(), rows.end(), [&](const FidelityRow& r) {
-      return r.method == method && same_compression(r.compression, c.subject.compression);
+      return r.method == method && same_compression(r.compression, c.subject.compression) &&
+             r.solver_divisor == c.subject.solver_divisor;
     });
     if (it == rows.end()) {
       rows.push_back({});
       rows.back().method = method;
       rows.back().compression = c.subject.compression;
+      rows.back().solver_divisor = c.subject.solver_divisor;
       members.emplace_back();
       it = rows.end() - 1;
     }
@@ -284,6 +286,7 @@ FidelityTables fidelity_tables(const FidelityResult& result) {
   t.calibrated_sweep = pareto_sweep(t.rows, "tcsb_calibrated");
   t.calibrated_max_compression = max_compression(t.calibrated_sweep, result.rms_threshold_pct);
   t.targets = fidelity_targets(t.rows);
+  t.equal_error = equal_error_table(result);
   return t;
 }
 

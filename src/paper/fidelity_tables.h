@@ -9,6 +9,7 @@
 
 #include "analysis/claim.h"
 #include "fidelity/fidelity_result.h"
+#include "paper/equal_error_table.h"
 
 namespace tcsb {
 
@@ -17,6 +18,7 @@ namespace tcsb {
 struct FidelityRow {
   std::string method;  ///< fidelity_method_name()
   double compression = 1.0;
+  int solver_divisor = 1;   ///< full_resolution: what the suite's passes a step were divided by
   std::optional<double> N;  ///< simulated nodes, mean over nets of the per-net mean
   MetricSummary rms_pct, max_pct, weighted_rms_pct, popping_pct, energy_drift_pct;  ///< count = nets combined
   std::optional<double> worst_net_rms_pct;  ///< the largest per-net rms_pct.mean (the maximal compression uses it)
@@ -85,6 +87,7 @@ struct FidelityTables {
   std::vector<ParetoPoint> calibrated_sweep;  ///< calibrated TC-SB's; empty without a calibration
   MaxCompression calibrated_max_compression;  ///< over `calibrated_sweep` (meaningful only when it is not empty)
   std::vector<Claim> targets;
+  std::vector<EqualErrorNet> equal_error;  ///< the speed-up at equal error; empty without fidelity.curves
 };
 
 /// The fidelity tables of a pass, its maximal compressions at the pass's rms_threshold_pct.

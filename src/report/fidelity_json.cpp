@@ -33,23 +33,81 @@ ojson claim_json(const Claim& c) {
           {"verdict", verdict_name(verdict(c))}};
 }
 
+/// A row or case of the full-resolution curve names its divisor; no other writes it (older results stay as they were).
+void add_solver_divisor(const std::string& method, int divisor, ojson& out) {
+  if (method == fidelity_method_name(FidelityMethod::kFullResolution)) out["solver_divisor"] = divisor;
+}
+
 ojson row_json(const FidelityRow& r) {
-  return {{"method", r.method},
-          {"compression", json_number(r.compression)},
-          {"N", json_number(r.N)},
-          {"rms_pct", metric_json(r.rms_pct)},
-          {"max_pct", metric_json(r.max_pct)},
-          {"weighted_rms_pct", metric_json(r.weighted_rms_pct)},
-          {"popping_pct", metric_json(r.popping_pct)},
-          {"energy_drift_pct", metric_json(r.energy_drift_pct)},
-          {"time_ratio_vs_plain", json_number(r.time_ratio_vs_plain)},
-          {"switch_ms", json_number(r.switch_ms)},
-          {"worst_net_rms_pct", json_number(r.worst_net_rms_pct)},
-          {"noise_floor_pct", json_number(r.noise_floor_pct)},
-          {"interpolation_floor_pct", json_number(r.interpolation_floor_pct)},
-          {"grid", r.grid.empty() ? ojson(nullptr) : ojson(r.grid)},
-          {"nets", r.nets},
-          {"status", r.status}};
+  ojson out = {{"method", r.method},
+               {"compression", json_number(r.compression)},
+               {"N", json_number(r.N)},
+               {"rms_pct", metric_json(r.rms_pct)},
+               {"max_pct", metric_json(r.max_pct)},
+               {"weighted_rms_pct", metric_json(r.weighted_rms_pct)},
+               {"popping_pct", metric_json(r.popping_pct)},
+               {"energy_drift_pct", metric_json(r.energy_drift_pct)},
+               {"time_ratio_vs_plain", json_number(r.time_ratio_vs_plain)},
+               {"switch_ms", json_number(r.switch_ms)},
+               {"worst_net_rms_pct", json_number(r.worst_net_rms_pct)},
+               {"noise_floor_pct", json_number(r.noise_floor_pct)},
+               {"interpolation_floor_pct", json_number(r.interpolation_floor_pct)},
+               {"grid", r.grid.empty() ? ojson(nullptr) : ojson(r.grid)},
+               {"nets", r.nets},
+               {"status", r.status}};
+  add_solver_divisor(r.method, r.solver_divisor, out);
+  return out;
+}
+
+ojson numbers_json(const std::vector<double>& values) {
+  ojson out = ojson::array();
+  for (const double v : values) out.push_back(json_number(v));
+  return out;
+}
+
+ojson equal_error_point_json(const EqualErrorPoint& p) {
+  ojson out = {{"method", p.method},
+               {"compression", json_number(p.compression)},
+               {"N", json_number(p.nodes)},
+               {"time_ms", json_number(p.time_ms)},
+               {"error", json_number(p.error)}};
+  add_solver_divisor(p.method, p.solver_divisor, out);
+  return out;
+}
+
+ojson rival_json(const EqualErrorRival& r) {
+  return {{"status", equal_error_status_name(r.status)},
+          {"time_ms", json_number(r.time_ms)},
+          {"speedup", json_number(r.speedup)},
+          {"interval",
+           r.interval ? ojson{json_number(r.interval->low), json_number(r.interval->high)} : ojson(nullptr)}};
+}
+
+ojson equal_error_json(const EqualErrorNet& n) {
+  const auto curve = [](const std::vector<EqualErrorPoint>& points) {
+    ojson out = ojson::array();
+    for (const EqualErrorPoint& p : points) out.push_back(equal_error_point_json(p));
+    return out;
+  };
+  ojson rows = ojson::array();
+  for (const EqualErrorRow& r : n.rows)
+    rows.push_back({{"compression", json_number(r.compression)},
+                    {"N", json_number(r.nodes)},
+                    {"time_ms", json_number(r.time_ms)},
+                    {"error", json_number(r.error)},
+                    {"uniform_grid", rival_json(r.grid)},
+                    {"full_resolution", rival_json(r.full)}});
+  return {{"net", n.net},
+          {"metric", n.metric},
+          {"floor", json_number(n.floor)},
+          {"missing", n.missing.empty() ? ojson(nullptr) : ojson(n.missing)},
+          {"curves",
+           {{"tcsb", curve(n.tcsb)},
+            {"uniform_grid", curve(n.grid)},
+            {"full_resolution", curve(n.full)},
+            {"monotone",
+             {{"tcsb", n.tcsb_monotone}, {"uniform_grid", n.grid_monotone}, {"full_resolution", n.full_monotone}}}}},
+          {"rows", std::move(rows)}};
 }
 
 ojson case_json(const FidelityCase& c) {
@@ -75,6 +133,8 @@ ojson case_json(const FidelityCase& c) {
                {"switch_step", json_integer(c.switch_step)},
                {"converged_step", json_integer(c.converged_step)},
                {"final_state_hash", c.final_state_hash}};
+  add_solver_divisor(out["method"], c.subject.solver_divisor, out);
+  out["block_step_ms"] = numbers_json(c.block_step_ms);
   // Only in a scene with a camera: every other result stays as it was.
   if (c.screen) out["screen"] = screen_json(*c.screen);
   return out;
@@ -90,6 +150,7 @@ ojson floors_json(const FidelityFloors& f) {
                {"noise_floor_pct", json_number(summary_mean(f.noise_rms_pct))},
                {"interpolation_floor_pct", std::move(interpolation)}};
   if (f.noise_screen) out["noise_floor_screen"] = screen_json(*f.noise_screen);
+  out["reference_block_step_ms"] = numbers_json(f.reference_block_step_ms);
   if (const std::optional<ReferenceSubsteps>& r = f.reference) {
     ojson doublings = ojson::array();
     for (const SubstepDoubling& d : r->doublings)
@@ -166,6 +227,24 @@ void add_fidelity_json(const RunResult& result, const RunTables& tables, nlohman
       {"targets", std::move(targets)},
       {"wall_s", json_number(f.wall_s)},
   };
+  if (settings.curves) {
+    doc["fidelity"]["curves"] = {{"budgets", numbers_json(settings.curves->budgets)},
+                                 {"solver_divisors", settings.curves->solver_divisors}};
+    ojson equal_error = ojson::array();
+    for (const EqualErrorNet& n : computed.equal_error) equal_error.push_back(equal_error_json(n));
+    doc["fidelity"]["equal_error"] = {
+        {"definition",
+         "per net, for the error TC-SB reaches at each budget (metric: p95_px with a camera, the mean over the "
+         "measured "
+         "steps of the per-step p95 pixel error; else rms_pct), the step time each rival's curve needs to reach it, "
+         "interpolated in log-log between its two points around it and never extrapolated (not_reached: no point is "
+         "that accurate; at_cheapest: its cheapest point already is, so time_ms and speedup are upper bounds); "
+         "speedup = that time / TC-SB's; times are medians over the pass's interleaved blocks of 20 steps, the "
+         "interval a 95 % percentile bootstrap over those blocks; errors below the noise floor count as the floor, "
+         "which is also the reference's (full resolution at the suite's or the converged solver) point on both "
+         "rival curves"},
+        {"nets", std::move(equal_error)}};
+  }
   // The sweep of TC-SB, and with a calibration that of calibrated TC-SB (written only then: older results lack it).
   add_sweep(computed.sweep, computed.max_compression, "TC-SB", doc["pareto"], doc["max_compression"]);
   if (!computed.calibrated_sweep.empty())

@@ -21,6 +21,7 @@ const char* fidelity_method_name(FidelityMethod method) {
     case FidelityMethod::kTcsbMotionOnly: return "tcsb_motion_only";
     case FidelityMethod::kTcsbCalibratedMotionOnly: return "tcsb_calibrated_motion_only";
     case FidelityMethod::kStock: return "stock_bullet";
+    case FidelityMethod::kFullResolution: return "full_resolution";
   }
   return "unknown";
 }
@@ -31,6 +32,8 @@ std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
   if (!suite.fidelity.enabled || !has_tcsb) return plan;
   std::vector<double> targets = suite.compression;
   targets.insert(targets.end(), suite.fidelity.pareto_targets.begin(), suite.fidelity.pareto_targets.end());
+  if (suite.fidelity.curves)
+    targets.insert(targets.end(), suite.fidelity.curves->budgets.begin(), suite.fidelity.curves->budgets.end());
   std::sort(targets.begin(), targets.end());
   targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
   for (const double c : targets) plan.push_back({FidelityMethod::kTcsb, c});
@@ -60,6 +63,20 @@ std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
     // stock Bullet at the suite's iterations, measured against the same converged cloth.
     if (!suite.fidelity.ablations) add_at_targets(FidelityMethod::kUniform);
     plan.push_back({FidelityMethod::kStock, 1.0});
+  }
+  if (const std::optional<FidelityCurves>& curves = suite.fidelity.curves) {
+    const auto planned = [&](FidelityMethod m, double c) {
+      return std::any_of(plan.begin(), plan.end(),
+                         [&](const FidelitySubjectSpec& p) { return p.method == m && p.compression == c; });
+    };
+    std::vector<double> grid_budgets = curves->budgets;
+    for (const double c : suite.compression)
+      if (c < 1.0) grid_budgets.push_back(c);
+    std::sort(grid_budgets.begin(), grid_budgets.end());
+    for (const double c : grid_budgets)
+      if (!planned(FidelityMethod::kUniform, c)) plan.push_back({FidelityMethod::kUniform, c});
+    if (suite.solver.compliant_model()) plan.push_back({FidelityMethod::kFullResolution, 1.0, 1});
+    for (const int d : curves->solver_divisors) plan.push_back({FidelityMethod::kFullResolution, 1.0, d});
   }
   return plan;
 }

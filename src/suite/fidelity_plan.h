@@ -30,17 +30,24 @@ enum class FidelityMethod {
   /// Under the compliant material: stock Bullet at full resolution with the suite's solver settings (kLST and
   /// piterations), against the same converged reference as every subject.
   kStock,
+  /// Full resolution of the suite's material with its link passes a step (its small steps under the compliant
+  /// material) divided by FidelitySubjectSpec::solver_divisor: the third curve of error against time, what a user
+  /// who wants a cheaper cloth without adaptivity would try (fidelity.curves).
+  kFullResolution,
 };
 
 /// Name used in reports: "tcsb", "uniform_grid", "switch_body", "tcsb_random", "tcsb_rigid", "tcsb_no_geomorph",
 /// "tcsb_calibrated", "uniform_grid_calibrated", "tcsb_calibrated_fans", "tcsb_motion_only",
-/// "tcsb_calibrated_motion_only", "stock_bullet". ("tcsb" is the suite's TC-SB, uncalibrated: the timed one.)
+/// "tcsb_calibrated_motion_only", "stock_bullet", "full_resolution". ("tcsb" is the suite's TC-SB, uncalibrated: the
+/// timed one.)
 const char* fidelity_method_name(FidelityMethod method);
 
 /// One body of the fidelity pass on every net.
 struct FidelitySubjectSpec {
   FidelityMethod method = FidelityMethod::kTcsb;
   double compression = 1.0;  ///< node budget as a fraction of the net's node count
+  /// kFullResolution: what the suite's link passes (small steps) a step are divided by; 1 for every other method.
+  int solver_divisor = 1;
 };
 
 /// The subjects, in report order: TC-SB at every target of compression and fidelity.pareto_targets (ascending,
@@ -51,7 +58,10 @@ struct FidelitySubjectSpec {
 /// when the suite's TC-SB uses the view terms (feedback.view), TC-SB with the motion-only BSWDF at the suite's targets
 /// below 1, and with a calibration the calibrated one too, so the spectator's effect is measured in the same pass;
 /// under the compliant material the uniform grid at the suite's targets below 1 (if the ablations did not add it)
-/// and stock Bullet at full resolution.
+/// and stock Bullet at full resolution. With fidelity.curves, TC-SB at every curve budget too (with the targets
+/// above), the uniform grid at every curve budget and suite target below 1 not already planned, and full resolution
+/// at every divisor (under the compliant material also at divisor 1: its reference takes more small steps than the
+/// suite, so the suite's own full-resolution body is a point of its own).
 /// Empty unless fidelity.enabled and the suite runs TC-SB.
 std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite);
 

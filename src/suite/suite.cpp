@@ -15,6 +15,7 @@
 #include "base/sha256.h"
 #include "suite/calibration_path.h"
 #include "suite/case_plan.h"
+#include "suite/fidelity_block.h"
 #include "suite/material_block.h"
 #include "suite/suite_axes.h"
 #include "suite/suite_fields.h"
@@ -149,23 +150,6 @@ void parse_settings(const Reader& r, const Object& root, Suite& s) {
     read_axis_setting(r, fb, "view_motion_scale", s);
     read_axis_setting(r, fb, "view_detail_px", s);
     read_axis_setting(r, fb, "view_static_share", s);
-  }
-
-  if (const json* j = root.find("fidelity")) {
-    const Object fi(r, *j, "fidelity", {"enabled", "rms_threshold_pct", "pareto_targets", "ablations", "calibration"});
-    fi.read("enabled", s.fidelity.enabled);
-    fi.read("rms_threshold_pct", s.fidelity.rms_threshold_pct, kPositive);
-    if (const json* targets = fi.find("pareto_targets")) {
-      r.array(*targets, fi.at("pareto_targets"), EmptyArray::kAllowed);
-      for (std::size_t i = 0; i < targets->size(); ++i) {
-        s.fidelity.pareto_targets.push_back(r.number((*targets)[i], index_path(fi.at("pareto_targets"), i), kFraction));
-      }
-    }
-    fi.read("ablations", s.fidelity.ablations);
-    if (const json* c = fi.find("calibration")) {
-      s.fidelity.calibration_path = r.string(*c, fi.at("calibration"));
-      if (s.fidelity.calibration_path.empty()) r.fail(fi.at("calibration"), "must name a file");
-    }
   }
 }
 
@@ -542,6 +526,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   read_axis_setting(r, root, "seed", s, true);
   parse_material(r, root, nets, s);
   parse_settings(r, root, s);
+  parse_fidelity(r, root, s);
   if (const json* scene = root.find("scene")) s.scene = parse_scene(r, *scene);
   if (const json* axes = root.find("axes")) parse_axes(r, *axes, s);
   // The tension only weighs the interface charge, and the pull acts through the tension: without what it needs (set,

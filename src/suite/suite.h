@@ -39,12 +39,21 @@ enum class Method {
 inline constexpr Method kAllMethods[] = {Method::kPlain, Method::kBulletPatch, Method::kTcsb, Method::kPlainEqual,
                                          Method::kStock};
 
+/// The curves of error against step time the speed-up at equal error is read from (paper/equal_error_table.h):
+/// TC-SB and the uniform grid at every budget, and full resolution with the suite's iterations (or, under the
+/// compliant material, its small steps) divided by each divisor.
+struct FidelityCurves {
+  std::vector<double> budgets;       ///< fractions of the net's nodes, each in (0, 1), ascending, no two equal
+  std::vector<int> solver_divisors;  ///< each > 1, ascending, no two equal
+};
+
 /// Fidelity measurement settings (reference run in lockstep, error metrics).
 struct FidelitySettings {
-  bool enabled = false;                ///< run the full-resolution reference beside each TC-SB case
-  double rms_threshold_pct = 1.0;      ///< maximal compression: smallest budget whose RMS error stays under this
-  std::vector<double> pareto_targets;  ///< extra compression targets for the Pareto sweep (empty: none)
-  bool ablations = false;              ///< run the equal-budget ablations
+  bool enabled = false;                  ///< run the full-resolution reference beside each TC-SB case
+  double rms_threshold_pct = 1.0;        ///< maximal compression: smallest budget whose RMS error stays under this
+  std::vector<double> pareto_targets;    ///< extra compression targets for the Pareto sweep (empty: none)
+  bool ablations = false;                ///< run the equal-budget ablations
+  std::optional<FidelityCurves> curves;  ///< the error-against-time curves (nullopt: none)
   /// The suite's calibration file as written ("converged.calibration.json", relative to the suite file); empty:
   /// none. With one, the pass adds calibrated TC-SB and the calibrated uniform grid at each target below 1.
   std::string calibration_path;

@@ -183,6 +183,18 @@ ScreenMetrics read_screen(const Reader& r, const ojson& j, const std::string& pa
   return s;
 }
 
+/// The optional array of non-negative numbers `key` (block times; results written before them lack it: empty).
+std::vector<double> read_optional_numbers(const Reader& r, const ojson& j, const std::string& path, const char* key) {
+  std::vector<double> out;
+  if (const ojson* list = r.find(j, path, key)) {
+    const std::string at = path + "." + key;
+    r.array(*list, at, EmptyArray::kAllowed);
+    for (std::size_t k = 0; k < list->size(); ++k)
+      out.push_back(r.number((*list)[k], at + "[" + std::to_string(k) + "]", kNonNegative));
+  }
+  return out;
+}
+
 /// A fidelity case of net `net`, subject `subject`, as the shard's fidelity section records it.
 FidelityCase read_fidelity_case(const Reader& r, const ojson& j, const std::string& path, std::size_t net,
                                 const FidelitySubjectSpec& subject) {
@@ -208,6 +220,7 @@ FidelityCase read_fidelity_case(const Reader& r, const ojson& j, const std::stri
   c.energy_drift_pct = metric("energy_drift_pct");
   c.step_ms = measured(r.number_or_null(j, path, "step_ms"));
   c.reference_step_ms = measured(r.number_or_null(j, path, "reference_step_ms"));
+  c.block_step_ms = read_optional_numbers(r, j, path, "block_step_ms");
   c.switch_ms = r.number_or_null(j, path, "switch_ms");
   c.switch_step = r.integer_or_null(j, path, "switch_step");
   c.converged_step = r.integer_or_null(j, path, "converged_step");
@@ -298,6 +311,7 @@ FidelityFloors read_floors(const Reader& r, const ojson& j, const std::string& p
   f.noise_rms_pct = summary_of_mean(measured(r.number_or_null(j, path, "noise_floor_pct")));
   if (j.contains("noise_floor_screen"))
     f.noise_screen = read_screen(r, j["noise_floor_screen"], path + ".noise_floor_screen");
+  f.reference_block_step_ms = read_optional_numbers(r, j, path, "reference_block_step_ms");
   const ojson& list = r.member(j, path, "interpolation_floor_pct");
   if (!list.is_array()) r.fail(path + ".interpolation_floor_pct", "must be an array");
   for (std::size_t k = 0; k < list.size(); ++k) {

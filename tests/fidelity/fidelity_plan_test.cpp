@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include "fidelity/fidelity_runner.h"
 #include "fidelity/fidelity_subject.h"
 #include "suite/calibration_file.h"
@@ -87,6 +89,32 @@ TEST(FidelityPlan, EmptyWhenDisabledOrWithoutTcsb) {
   EXPECT_TRUE(fidelity_plan(s).empty());
   s = suite_with_fidelity(false);
   EXPECT_EQ(fidelity_plan(s).size(), 5u);  // TC-SB only
+}
+
+TEST(FidelityPlan, CurvesAddTheGridsAtEveryBudgetAndFullResolutionAtEveryDivisor) {
+  Suite s = suite_with_fidelity(false);
+  s.fidelity.pareto_targets.clear();
+  s.fidelity.curves = FidelityCurves{{0.1, 0.5}, {2, 4}};
+  std::vector<std::tuple<std::string, double, int>> got;
+  for (const FidelitySubjectSpec& spec : fidelity_plan(s))
+    got.emplace_back(fidelity_method_name(spec.method), spec.compression, spec.solver_divisor);
+  const std::vector<std::tuple<std::string, double, int>> want{{"tcsb", 0.1, 1},           {"tcsb", 0.3, 1},
+                                                               {"tcsb", 0.5, 1},           {"tcsb", 0.75, 1},
+                                                               {"tcsb", 1.0, 1},           {"uniform_grid", 0.1, 1},
+                                                               {"uniform_grid", 0.3, 1},   {"uniform_grid", 0.5, 1},
+                                                               {"uniform_grid", 0.75, 1},  {"full_resolution", 1.0, 2},
+                                                               {"full_resolution", 1.0, 4}};
+  EXPECT_EQ(got, want);
+  // Under the compliant material the reference takes more small steps than the suite: its own count is a point.
+  s.solver.model = MaterialModel::kCompliant;
+  s.tcsb.masses = Masses::kCut;
+  int full_at_one = 0, grids = 0;
+  for (const FidelitySubjectSpec& spec : fidelity_plan(s)) {
+    full_at_one += spec.method == FidelityMethod::kFullResolution && spec.solver_divisor == 1;
+    grids += spec.method == FidelityMethod::kUniform;
+  }
+  EXPECT_EQ(full_at_one, 1);
+  EXPECT_EQ(grids, 4);  // each budget once, though the compliant material plans the suite's targets' grids too
 }
 
 TEST(FidelityPlan, CoarseGridHoldsAboutTheBudgetWithTheNetsAspect) {

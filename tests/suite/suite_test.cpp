@@ -1038,5 +1038,30 @@ TEST(SuiteMaterial, TheCompliantModelRefusesWhatItWouldIgnore) {
   rejected_edit([](json& j) { j["methods"] = {"plain", "stock"}; }, "methods[1]");
 }
 
+TEST(SuiteParse, FidelityCurvesAreReadAndBadOnesRefusedNamingTheField) {
+  json j = minimal();
+  j["methods"] = {"plain", "tcsb"};
+  j["compression"] = {1.0, 0.5};
+  j["fidelity"] = {{"enabled", true}, {"curves", {{"budgets", {0.1, 0.3}}, {"solver_divisors", {2, 8}}}}};
+  const Suite s = parse_suite_text(j.dump(), "curves.json");
+  ASSERT_TRUE(s.fidelity.curves);
+  EXPECT_EQ(s.fidelity.curves->budgets, (std::vector<double>{0.1, 0.3}));
+  EXPECT_EQ(s.fidelity.curves->solver_divisors, (std::vector<int>{2, 8}));
+  EXPECT_FALSE(parse_suite_text(minimal().dump(), "m.json").fidelity.curves);
+  const auto curves = [](json budgets, json divisors) {
+    return [=](json& k) {
+      k["fidelity"] = {{"enabled", true}, {"curves", {{"budgets", budgets}, {"solver_divisors", divisors}}}};
+    };
+  };
+  rejected_edit(curves({0.1, 1.0}, {2}), "fidelity.curves.budgets[1]");  // full resolution is on every curve
+  rejected_edit(curves({0.3, 0.1}, {2}), "fidelity.curves.budgets[1]");  // ascending
+  rejected_edit(curves({0.0}, {2}), "fidelity.curves.budgets[0]");
+  rejected_edit(curves(json::array(), {2}), "fidelity.curves.budgets");
+  rejected_edit(curves({0.1}, {1}), "fidelity.curves.solver_divisors[0]");  // 1 is the suite's own solver
+  rejected_edit(curves({0.1}, {4, 2}), "fidelity.curves.solver_divisors[1]");
+  rejected_edit(curves({0.1}, {2.5}), "fidelity.curves.solver_divisors[0]");
+  rejected_edit([](json& k) { k["fidelity"] = {{"curves", {{"budgets", {0.1}}}}}; }, "fidelity.curves.solver_divisors");
+}
+
 }  // namespace
 }  // namespace tcsb
