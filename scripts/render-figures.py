@@ -19,6 +19,14 @@ The inputs, each the newest by name (file names start with the date; reverse C c
                                results/runs/frames/*.json: `tcsb frames --suite viewer-SCENE --calibrated` (a scene
       with a camera): the camera's image of plain Bullet, calibrated TC-SB (its simulated nodes coloured by LOD level
       over its reconstructed surface) and the calibrated uniform grid of the same node count, at each recorded step
+  shaded_SCENE.png             results/runs/frames/*.json of SCENE (a scene with a camera, or its -compliant twin):
+      the last recorded step through the camera, as shaded surfaces (one light, Lambert) of full resolution, TC-SB
+      (coloured by the LOD level of its nearest simulated node) and the uniform grid, and each subject's per-point
+      pixel error against full resolution as a heat map. Optional, as the Pareto figures
+  pareto_SCENE.png             results/runs/*.json of SCENE (each scene suite and its -compliant twin) with
+      fidelity.equal_error: error against step time, log-log, of its largest net: TC-SB across budgets, the uniform
+      grids, full resolution at fewer solver passes. Optional: a scene without such a kept run has no figure (and a
+      figure left from one is stale)
 Usage: python3 scripts/render-figures.py --animate FRAMES GIF
                draws the same three views for every frame of FRAMES (a `tcsb frames` file of a scene with a camera)
                into an animated GIF; not part of the manifest (its input is too large to keep). Exit 2 and one line
@@ -102,9 +110,36 @@ FIGURE_INPUTS = {
 }
 
 
+SCENES = ["converged", "drape", "ball", "flag", "viewer-far", "viewer-corner", "viewer-drape"]
+
+
+def curves_of(suite):
+    return lambda doc: (doc.get("suite", {}).get("name") == suite
+                        and bool((doc.get("fidelity") or {}).get("equal_error", {}).get("nets")))
+
+
+def camera_frames_of(suite):
+    return lambda doc: doc.get("suite", {}).get("name") == suite and bool(doc.get("frames")) and "camera" in doc
+
+
+# The Pareto figures: one per scene suite and twin whose kept run drew the curves, none otherwise; the shaded ones
+# likewise for the scenes with a camera that have frames.
+OPTIONAL_INPUTS = {f"pareto_{suite}.png": (RUNS, curves_of(suite))
+                   for scene in SCENES for suite in (scene, scene + "-compliant")}
+OPTIONAL_INPUTS.update({f"shaded_{suite}.png": (FRAMES, camera_frames_of(suite))
+                        for scene in SCENES if scene.startswith("viewer-")
+                        for suite in (scene, scene + "-compliant")})
+
+
 def chosen_inputs():
-    """{png: input path or None}: what each figure must be rendered from today."""
-    return {png: newest(directory, accepts) for png, (directory, accepts) in FIGURE_INPUTS.items()}
+    """{png: input path or None}: what each figure must be rendered from today (optional ones only when they have
+    an input)."""
+    inputs = {png: newest(directory, accepts) for png, (directory, accepts) in FIGURE_INPUTS.items()}
+    for png, (directory, accepts) in OPTIONAL_INPUTS.items():
+        path = newest(directory, accepts)
+        if path is not None:
+            inputs[png] = path
+    return inputs
 
 
 def plot_fits(ax, fits, label_of, scale=1.0):
@@ -331,13 +366,185 @@ def animate(frames_path, gif):
     return 0
 
 
+def grid_quads(width, height):
+    """Corner indices of the cells of a row-major width x height grid, counter-clockwise."""
+    import numpy as np
+    r, c = np.meshgrid(np.arange(height - 1), np.arange(width - 1), indexing="ij")
+    a = (r * width + c).ravel()
+    return np.stack([a, a + 1, a + 1 + width, a + width], axis=1)
+
+
+def resample_grid(points, src_w, src_h, dst_w, dst_h):
+    """Bilinear resampling of a src_w x src_h grid of points onto dst_w x dst_h (as src/net/grid_resample.h)."""
+    import numpy as np
+    p = np.asarray(points, float).reshape(src_h, src_w, 3)
+    u = np.linspace(0, src_w - 1, dst_w)
+    v = np.linspace(0, src_h - 1, dst_h)
+    c0 = np.minimum(np.floor(u).astype(int), src_w - 2)
+    r0 = np.minimum(np.floor(v).astype(int), src_h - 2)
+    fu = (u - c0)[None, :, None]
+    fv = (v - r0)[:, None, None]
+    a = p[r0][:, c0]
+    b = p[r0][:, c0 + 1]
+    c = p[r0 + 1][:, c0]
+    d = p[r0 + 1][:, c0 + 1]
+    return ((1 - fv) * ((1 - fu) * a + fu * b) + fv * ((1 - fu) * c + fu * d)).reshape(-1, 3)
+
+
+def shade(doc, frame, points, width, height):
+    """Per cell of the grid: its corners on the image, its depth and its Lambert brightness (one light from behind
+    the camera's right shoulder, two-sided: cloth has no outside)."""
+    import numpy as np
+    p = np.asarray(points, float)
+    quads = grid_quads(width, height)
+    x, y = on_image(doc, frame, p)
+    corners = np.stack([x[quads], y[quads]], axis=2)
+    pose = frame["camera"]
+    eye = np.array(pose["position"], float)
+    forward = np.array(pose["target"], float) - eye
+    forward /= np.linalg.norm(forward)
+    light = -forward + 0.5 * np.cross(forward, doc["camera"]["up"]) + 0.5 * np.array(doc["camera"]["up"], float)
+    light /= np.linalg.norm(light)
+    normal = np.cross(p[quads[:, 2]] - p[quads[:, 0]], p[quads[:, 3]] - p[quads[:, 1]])
+    normal /= np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-12)
+    brightness = 0.2 + 0.8 * np.abs(normal @ light)
+    depth = (p[quads].mean(axis=1) - eye) @ forward
+    return quads, corners, depth, brightness
+
+
+def draw_cells(ax, corners, depth, colors):
+    """The cells in front of the camera, far ones first (the painter's order)."""
+    import numpy as np
+    from matplotlib.collections import PolyCollection
+    keep = np.isfinite(corners).all(axis=(1, 2)) & np.isfinite(depth)
+    order = np.argsort(-depth[keep])
+    ax.add_collection(PolyCollection(corners[keep][order], facecolors=colors[keep][order], edgecolors="none"))
+
+
+def figure_shaded(plt, doc, png):
+    import numpy as np
+    from matplotlib import cm
+    from matplotlib.colors import Normalize
+    frame = doc["frames"][-1]
+    net, grid = doc["net"], doc["uniform_grid"]
+    w, h = net["width"], net["height"]
+    width, height = doc["camera"]["image"]
+    reference = np.asarray(frame["plain"], float)
+    uniform = resample_grid(frame["uniform_nodes"], grid["width"], grid["height"], w, h)
+    surfaces = [reference, np.asarray(frame["tcsb_surface"], float), uniform]
+    fig, axes = plt.subplots(2, 3, figsize=(13, 6.2))
+    # TC-SB's levels: each grid point takes the level of its nearest simulated node.
+    nodes = np.asarray(frame["tcsb_nodes"], float)
+    levels = np.asarray(frame["tcsb_levels"])
+    nearest = np.argmin(((surfaces[1][:, None, :] - nodes[None, :, :]) ** 2).sum(axis=2), axis=1)
+    level_norm = Normalize(0, max(3, int(levels.max())))
+    rx, ry = on_image(doc, frame, reference)
+    errors = []
+    for k, points in enumerate(surfaces):
+        quads, corners, depth, brightness = shade(doc, frame, points, w, h)
+        if k == 1:
+            cell_level = np.round(levels[nearest][quads].mean(axis=1))
+            colors = cm.viridis(level_norm(cell_level))
+        else:
+            colors = np.tile(np.array([0.75, 0.75, 0.78, 1.0]), (len(quads), 1))
+        colors[:, :3] *= brightness[:, None]
+        draw_cells(axes[0][k], corners, depth, colors)
+        if k > 0:
+            x, y = on_image(doc, frame, points)
+            errors.append((np.hypot(x - rx, y - ry), quads, corners, depth))
+    finite = np.concatenate([e[0][np.isfinite(e[0])] for e in errors])
+    err_norm = Normalize(0, max(1.0, float(np.percentile(finite, 99)) if finite.size else 1.0))
+    for k, (err, quads, corners, depth) in enumerate(errors, start=1):
+        draw_cells(axes[1][k], corners, depth, cm.magma(err_norm(err[quads].mean(axis=1))))
+        inside = np.isfinite(rx) & (rx >= 0) & (rx < width) & (ry >= 0) & (ry < height) & np.isfinite(err)
+        shown = err[inside]
+        axes[1][k].set_title(f"pixel error: mean {shown.mean():.1f}, p95 {np.percentile(shown, 95):.1f} px"
+                             if shown.size else "no point in view", fontsize=8)
+    titles = ["full resolution (the reference)", "TC-SB, coloured by LOD level", "uniform grid, same node count"]
+    # The part of the image the cloth covers (the reference's points in view, a margin around them), same aspect.
+    seen = np.isfinite(rx) & np.isfinite(ry) & (rx >= 0) & (rx < width) & (ry >= 0) & (ry < height)
+    x0, x1, y0, y1 = 0.0, float(width), 0.0, float(height)
+    if seen.any():
+        cx, cy = 0.5 * (rx[seen].min() + rx[seen].max()), 0.5 * (ry[seen].min() + ry[seen].max())
+        half = 0.6 * max(rx[seen].max() - rx[seen].min(), (ry[seen].max() - ry[seen].min()) * width / height, 1.0)
+        x0, x1 = max(0.0, cx - half), min(float(width), cx + half)
+        y0, y1 = max(0.0, cy - half * height / width), min(float(height), cy + half * height / width)
+    for k, ax in enumerate(axes.ravel()):
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(y1, y0)
+        ax.set_aspect("equal")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        if k < 3:
+            ax.set_title(titles[k], fontsize=9)
+    axes[1][0].axis("off")
+    axes[1][0].text(0.02, 0.5, "Below each subject: how far each of its\ngrid points lies from the reference's on\n"
+                    "the image, in pixels (the error the\nspectator sees).", fontsize=9, va="center",
+                    transform=axes[1][0].transAxes)
+    fig.colorbar(cm.ScalarMappable(norm=level_norm, cmap="viridis"), ax=axes[0].tolist(), label="LOD level",
+                 shrink=0.8)
+    fig.colorbar(cm.ScalarMappable(norm=err_norm, cmap="magma"), ax=axes[1].tolist(), label="pixels", shrink=0.8)
+    model = (doc["suite"].get("material") or {}).get("model", "bullet")
+    fig.suptitle(f"{doc['suite']['name']} ({model}{', calibrated' if doc.get('calibrated') else ''}) at step "
+                 f"{frame['step']}, through its camera", fontsize=11)
+    fig.text(0.01, 0.005, viewer_source(doc), fontsize=7)
+    fig.savefig(png, dpi=90)
+    plt.close(fig)
+
+
+def largest_net(doc):
+    """The equal_error net with the most nodes (the headline's), as render-results.sh's rows choose it."""
+    nodes = {n["name"]: n.get("nodes", 0) for n in doc["suite"].get("nets", [])}
+    best = None
+    for net in doc["fidelity"]["equal_error"]["nets"]:
+        if best is None or nodes.get(net["net"], 0) >= nodes.get(best["net"], 0):
+            best = net
+    return best
+
+
+def figure_pareto(plt, doc, png):
+    net = largest_net(doc)
+    unit = "p95 pixel error (mean over steps)" if net["metric"] == "p95_px" else "RMS error, % of the extent"
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    curves = net["curves"]
+    styles = [("uniform_grid", "uniform grids (full resolution finest)", "s-", "tab:gray"),
+              ("full_resolution", "full resolution, fewer passes", "^-", "tab:blue"),
+              ("tcsb", "TC-SB across budgets", "o-", "tab:red")]
+    for key, label, style, color in styles:
+        points = curves.get(key, [])
+        if not points:
+            continue
+        ax.plot([p["time_ms"] for p in points], [p["error"] for p in points], style, color=color, label=label)
+        for p in points:
+            if p["method"] == "reference":
+                text = "reference"
+            elif p["method"] == "full_resolution":
+                text = f"÷{p['solver_divisor']}"
+            else:
+                text = f"{round(100 * p['compression'])}%"
+            ax.annotate(text, (p["time_ms"], p["error"]), fontsize=6, xytext=(3, 3), textcoords="offset points",
+                        color=color)
+    ax.axhline(net["floor"], color="k", lw=0.5, ls=":", label="noise floor")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("step time [ms] (median over the pass's blocks)")
+    ax.set_ylabel(unit)
+    model = (doc["suite"].get("material") or {}).get("model", "bullet")
+    ax.set_title(f"{doc['suite']['name']} ({model}), net {net['net']}: error against step time", fontsize=10)
+    ax.legend(fontsize=7)
+    fig.text(0.01, 0.01, source_line(doc), fontsize=6)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+
 DRAW = {"fig4_operations.png": figure4, "fig5_step_time.png": figure5, "fig6_frames.png": figure6,
         "fig6_frames_converged.png": figure6, "viewer_far.png": figure_viewer, "viewer_corner.png": figure_viewer,
-        "viewer_drape.png": figure_viewer}
+        "viewer_drape.png": figure_viewer, **{png: figure_pareto if png.startswith("pareto_") else figure_shaded for png in OPTIONAL_INPUTS}}
 
 
 def missing_inputs(inputs):
-    missing = [png for png, path in inputs.items() if path is None]
+    missing = [png for png, path in inputs.items() if path is None and png not in OPTIONAL_INPUTS]
     for png in missing:
         directory = FIGURE_INPUTS[png][0]
         print(f"render-figures: no kept file in {directory}/ holds the data of {png}", file=sys.stderr)
@@ -363,6 +570,15 @@ def render():
         DRAW[png](plt, doc, os.path.join(ROOT, FIGURES, png))
         figures[png] = {"from": path, "from_sha256": sha256(path), "png_sha256": sha256(os.path.join(FIGURES, png))}
         print(f"render-figures: {FIGURES}/{png} from {path}", file=sys.stderr)
+    # An optional figure whose input left the tree leaves with it.
+    try:
+        with open(os.path.join(ROOT, MANIFEST)) as f:
+            previous = json.load(f).get("figures", {})
+    except (OSError, ValueError):
+        previous = {}
+    for png in previous:
+        if png not in figures and os.path.exists(os.path.join(ROOT, FIGURES, png)):
+            os.remove(os.path.join(ROOT, FIGURES, png))
     manifest = {"script": SCRIPT, "script_sha256": sha256(SCRIPT), "figures": figures}
     with open(os.path.join(ROOT, MANIFEST) + ".tmp", "w") as f:
         json.dump(manifest, f, indent=2)
@@ -390,6 +606,9 @@ def stale_reasons(manifest, inputs):
             reasons.append(f"{png_path} is missing")
         elif entry.get("png_sha256") != sha256(png_path):
             reasons.append(f"{png_path} is not the PNG this script rendered")
+    for png in recorded:
+        if png not in inputs:
+            reasons.append(f"{os.path.join(FIGURES, png)} has no kept input any more")
     return reasons
 
 

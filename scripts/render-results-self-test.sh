@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
-# Tests scripts/render-results.sh on a scratch runs directory and page (the CTest docs.render_results_self_test):
-# no runs, one run (--check sees the page go stale, then pass), the order of two runs, byte-stable output, a refused
-# file leaving the page untouched, and bad usage.
+# Tests scripts/render-results.sh on a scratch runs directory, page and README (the CTest
+# docs.render_results_self_test): no runs, one run (--check sees the pages go stale, then pass; its full render beside
+# it; the README's excerpt), byte-stable output, a superseded run refused, a refused file leaving every page
+# untouched, and bad usage.
 # Usage: bash scripts/render-results-self-test.sh TCSB_BINARY
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 binary=${1:?usage: bash scripts/render-results-self-test.sh TCSB_BINARY}
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-export TCSB_RUNS_DIR=$scratch/runs TCSB_RESULTS_MD=$scratch/results.md
+export TCSB_RUNS_DIR=$scratch/runs TCSB_RESULTS_MD=$scratch/results.md TCSB_README=$scratch/README.md
 mkdir "$TCSB_RUNS_DIR"
 render() { bash "$root/scripts/render-results.sh" "$@" 2>"$scratch/stderr"; }
 fail() {
@@ -28,30 +29,40 @@ render --check "$binary" >"$scratch/diff"
 status=$?
 set -e
 [[ $status -eq 1 ]] || fail "--check exits $status, not 1, when a run was added"
-grep -q '^+## Run: suite `ci`' "$scratch/diff" || fail "--check shows no diff"
+grep -q '^+- ci: ' "$scratch/diff" || fail "--check shows no diff"
 
+printf '# readme\n<!-- headline-begin -->\nold rows\n<!-- headline-end -->\nafter\n' >"$TCSB_README"
 render "$binary" || fail "rendering one run failed"
 render --check "$binary" || fail "--check fails after rendering"
+grep -q '^## Run: suite `ci`' "$TCSB_RUNS_DIR/2026-11-22-e58bb68-ci.md" || fail "no full render beside the run"
+grep -q '^| scene | model |' "$TCSB_README" || fail "the README's excerpt has no table"
+grep -q '^old rows' "$TCSB_README" && fail "the README's excerpt was not replaced"
+grep -qx 'after' "$TCSB_README" || fail "the README lost what follows its excerpt"
 cp "$TCSB_RESULTS_MD" "$scratch/first.md"
 render "$binary"
 cmp -s "$TCSB_RESULTS_MD" "$scratch/first.md" || fail "two renderings of the same files differ"
 
 cp "$root/results/baselines/ci.json" "$TCSB_RUNS_DIR/2026-11-21-0000000-ci.json"
+set +e
 render "$binary"
-newer=$(grep -n 'results/runs/2026-11-22-' "$TCSB_RESULTS_MD" | cut -d: -f1)
-older=$(grep -n 'results/runs/2026-11-21-' "$TCSB_RESULTS_MD" | cut -d: -f1)
-[[ -n $newer && -n $older && $newer -lt $older ]] || fail "the newest run is not first"
+status=$?
+set -e
+[[ $status -eq 1 ]] || fail "a superseded run exits $status, not 1"
+grep -q '2026-11-21-0000000-ci.json is superseded' "$scratch/stderr" || fail "the superseded run is not named"
+rm "$TCSB_RUNS_DIR/2026-11-21-0000000-ci.json"
 
 cp "$TCSB_RESULTS_MD" "$scratch/before.md"
-echo '{}' >"$TCSB_RUNS_DIR/2026-11-23-0000000-bad.json"
+cp "$TCSB_RUNS_DIR/2026-11-22-e58bb68-ci.md" "$scratch/before-run.md"
+echo '{}' >"$TCSB_RUNS_DIR/2026-11-23-0000000-paper.json"
 set +e
 render "$binary"
 status=$?
 set -e
 [[ $status -eq 2 ]] || fail "a refused result file exits $status, not 2"
-grep -q '2026-11-23-0000000-bad.json' "$scratch/stderr" || fail "the refused file is not named on stderr"
+grep -q '2026-11-23-0000000-paper.json' "$scratch/stderr" || fail "the refused file is not named on stderr"
 cmp -s "$TCSB_RESULTS_MD" "$scratch/before.md" || fail "a refused file changed the page"
-[[ -z $(find "$scratch" -name '.results.md.*') ]] || fail "a temporary file was left behind"
+cmp -s "$TCSB_RUNS_DIR/2026-11-22-e58bb68-ci.md" "$scratch/before-run.md" || fail "a refused file changed a render"
+[[ -z $(find "$scratch" -name '.*.md.*') ]] || fail "a temporary file was left behind"
 
 set +e
 render --bogus "$binary"

@@ -1,5 +1,6 @@
 #include "report/format_registry.h"
 
+#include "report/equal_error_markdown.h"
 #include "report/gbench_export.h"
 #include "report/github_action_export.h"
 #include "report/markdown_export.h"
@@ -27,6 +28,8 @@ constexpr Registration kFormats[] = {
     {"github-action-smaller", &create<GithubActionSmallerFormat>},
     {"github-action-bigger", &create<GithubActionBiggerFormat>},
     {"markdown", &create<MarkdownFormat>},
+    {"markdown-headline", &create<HeadlineRowFormat>},
+    {"markdown-verdict", &create<HeadlineVerdictFormat>},
 };
 
 }  // namespace

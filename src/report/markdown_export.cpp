@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "report/equal_error_markdown.h"
 #include "report/markdown_table.h"
 #include "report/text_table.h"
 
@@ -452,6 +453,8 @@ std::string fidelity_section(const ojson& doc) {
                                                             }}};
     if (any_cell(rows, [](const ojson& row) { return text_of(at(row, "grid")); }))
       columns.push_back(field("grid", "grid"));
+    if (any_cell(rows, [](const ojson& row) { return text_of(at(row, "solver_divisor")); }))
+      columns.push_back(field("passes ÷", "solver_divisor"));
     for (Column c : {field("N", "N"), metric("RMS % mean", "rms_pct", "mean"), metric("RMS % p95", "rms_pct", "p95"),
                      metric("max %", "max_pct", "max"), metric("weighted RMS %", "weighted_rms_pct", "mean"),
                      metric("pop max %", "popping_pct", "max"), metric("energy drift %", "energy_drift_pct", "mean"),
@@ -462,6 +465,7 @@ std::string fidelity_section(const ojson& doc) {
   }
   out += screen_section(fidelity);
   out += sweep_section(pareto, best, "TC-SB");
+  out += equal_error_section(doc);
   out += sweep_section(at(doc, "pareto_calibrated"), at(doc, "max_compression_calibrated"), "calibrated TC-SB");
   // A reproduction lists these targets with the claims; a plain run with a fidelity pass has them only here.
   if (const ojson& targets = at(fidelity, "targets"); non_empty_array(targets) && !at(doc, "reproduction").is_object())
