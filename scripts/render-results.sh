@@ -127,7 +127,8 @@ The kept runs are the newest run of each suite in results/runs/ (`<date>-<short 
 leave the tree and git keeps them. Each kept run's full render (its source line with date, commit, machine and load,
 every table) is beside it as `results/runs/<name>.md`. To add a run, put its file there, `git rm` the run it
 supersedes and run `bash scripts/render-results.sh`. How the numbers are measured: [methodology.md](methodology.md).
-The paper's own numbers were measured with Bullet 2.78 on other hardware: only same-run ratios compare.
+The paper's own numbers were measured with Bullet 2.78 on other hardware: only same-run ratios compare. Runs an
+investigation names that have left the tree are in git: `git log --diff-filter=D --name-only -- results/runs`.
 PREAMBLE
   if ((${#runs[@]} == 0)); then
     printf '\nNo runs are stored in results/runs/ yet.\n'
