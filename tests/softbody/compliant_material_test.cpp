@@ -148,9 +148,9 @@ double sag_at_rest(int substeps, int passes) {
 }
 
 TEST(CompliantMaterial, PassesThatKeepLambdaHangAsTheMaterialAtLargeSmallSteps) {
-  // At 2 small steps k h^2 w is 0.56 on this net: one pass a small step is a spring of k / (1 + k h^2 w), softer
-  // than the material, and sags more than the cloth of many small steps; passes that sum lambda over the small step
-  // converge to the implicit Euler step, whose rest is the material's whatever h.
+  // At 2 small steps k h^2 w is 1.1 on this net's links: one pass a small step is a spring of k / (1 + k h^2 w),
+  // softer than the material, and sags more than the cloth of many small steps; passes that sum lambda over the small
+  // step converge to the implicit Euler step, whose rest is the material's whatever h.
   const double converged = sag_at_rest(64, 4);
   const double one_pass = sag_at_rest(2, 1) - converged, summed = sag_at_rest(2, 16) - converged;
   EXPECT_GT(one_pass, 0.0);  // softer
