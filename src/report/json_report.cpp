@@ -112,6 +112,8 @@ ojson suite_json(const Suite& s) {
                        {"density", json_number(m.density)},
                        {"damping", json_number(m.damping)},
                        {"substeps", m.substeps}};
+    // Only when more than one, so a result of one pass a small step reads as it did before the field.
+    if (m.passes != 1) out["material"]["passes"] = m.passes;
   }
   // Only in a scene with colliders, a camera, wind or moving pins, like the penetrations of its repetitions.
   if (s.scene.has_colliders() || s.scene.camera || s.scene.wind || s.scene.pin_path.moves()) {

@@ -3,6 +3,7 @@
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <BulletSoftBody/btSoftBodyInternals.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "softbody/tc_softbody.h"
@@ -28,10 +29,17 @@ void prepare_anchors(btSoftBody& body) {
 
 namespace {
 
-/// One pass over the links, in the links' order, on the double positions: XPBD's correction with lambda = 0, each
-/// link moved by (rl - d) / m_c0 along itself. Not btSoftBody::PSolve_Links' square-root-free (rl^2 - d^2) / (m_c0
+/// One pass over the links, in the links' order, on the double positions: XPBD's correction, each link moved along
+/// itself by its change of lambda, (rl - d - alpha~ lambda) / m_c0 (XPBD: Macklin, Müller and Chentanez, MIG 2016,
+/// with the constraint's gradient along the link). Not btSoftBody::PSolve_Links' square-root-free (rl^2 - d^2) / (m_c0
 /// (rl^2 + d^2)), the same near rest but 1.2 x at twice the rest length: with it the 97 x 97 flag at 12 small steps
 /// diverged at step 58 (the body 92 m wide), with this one it did not (nor at 16).
+///
+/// kAccumulateLambda false (one pass a small step): lambda = 0, the expression as before passes existed, bit for
+/// bit. True: each link's lambda summed over the small step's passes in p.link_lambda, and alpha~ the part of m_c0
+/// that is not the endpoints' inverse masses (compliance_in_constant), so the passes converge to the implicit Euler
+/// step of the material's springs instead of to a stiffer cloth or a softer one.
+template <bool kAccumulateLambda>
 void solve_links(const btSoftBody& body, SubstepPositions& p) {
   const btSoftBody::Node* base = &body.m_nodes[0];
   for (int i = 0; i < body.m_links.size(); ++i) {
@@ -41,9 +49,19 @@ void solve_links(const btSoftBody& body, SubstepPositions& p) {
     const Eigen::Vector3d del = p.x[b] - p.x[a];
     const double length = del.norm();
     if (length <= SIMD_EPSILON) continue;
-    const double k = (static_cast<double>(l.m_rl) - length) / (length * static_cast<double>(l.m_c0));
-    p.x[a] -= del * (k * p.inverse_mass[a]);
-    p.x[b] += del * (k * p.inverse_mass[b]);
+    const double c0 = static_cast<double>(l.m_c0);
+    if constexpr (kAccumulateLambda) {
+      double& lambda = p.link_lambda[static_cast<std::size_t>(i)];
+      const double alpha_tilde = compliance_in_constant(c0, p.inverse_mass[a] + p.inverse_mass[b]);
+      const double k = (static_cast<double>(l.m_rl) - length - alpha_tilde * lambda) / (length * c0);
+      lambda += k * length;
+      p.x[a] -= del * (k * p.inverse_mass[a]);
+      p.x[b] += del * (k * p.inverse_mass[b]);
+    } else {
+      const double k = (static_cast<double>(l.m_rl) - length) / (length * c0);
+      p.x[a] -= del * (k * p.inverse_mass[a]);
+      p.x[b] += del * (k * p.inverse_mass[b]);
+    }
   }
 }
 
@@ -113,6 +131,10 @@ void solve_in_substeps(btSoftBody& body, const SolverSettings& solver, SubstepPo
   const auto every_node = [&](const auto& f) {
     for (int i = 0; i < body.m_nodes.size(); ++i) f(&body.m_nodes[i]);
   };
+  // One pass: lambda = 0 in it, nothing to keep. More: lambda summed over the passes of each small step.
+  const int passes = solver.compliant.passes;
+  const bool accumulate = passes > 1;
+  p.link_lambda.resize(accumulate ? static_cast<std::size_t>(body.m_links.size()) : 0);
   for (int s = 0; s < n; ++s) {
     for (std::size_t i = 0; i < count; ++i) {
       btSoftBody::Node& node = body.m_nodes[static_cast<int>(i)];
@@ -120,22 +142,38 @@ void solve_in_substeps(btSoftBody& body, const SolverSettings& solver, SubstepPo
       node.m_v += node.m_vn;
       p.x[i] += to_eigen(node.m_v) * h;
     }
-    const btScalar ti = static_cast<btScalar>(s) / static_cast<btScalar>(n);
-    for (int k = 0; k < body.m_cfg.m_psequence.size(); ++k) {
-      switch (const btSoftBody::ePSolver::_ which = body.m_cfg.m_psequence[k]) {
-        case btSoftBody::ePSolver::Linear: solve_links(body, p); break;
-        case btSoftBody::ePSolver::Anchors:
-          if (body.m_anchors.size() > 0) run_bullet_solver(body, which, ti, p, anchored);
-          break;
-        case btSoftBody::ePSolver::RContacts:
-          if (body.m_rcontacts.size() > 0) run_bullet_solver(body, which, ti, p, in_contact);
-          break;
-        default:
-          if (body.m_scontacts.size() > 0) run_bullet_solver(body, which, ti, p, every_node);
-          break;
-      }
+    if (accumulate) {  // each small step is an implicit Euler step of its own: its lambda starts from 0
+      std::fill(p.link_lambda.begin(), p.link_lambda.end(), 0.0);
+      std::fill(p.constraint_lambda.begin(), p.constraint_lambda.end(), 0.0);
     }
-    if (after_links) after_links(p);
+    const btScalar ti = static_cast<btScalar>(s) / static_cast<btScalar>(n);
+    for (int pass = 0; pass < passes; ++pass) {
+      for (int k = 0; k < body.m_cfg.m_psequence.size(); ++k) {
+        const btSoftBody::ePSolver::_ which = body.m_cfg.m_psequence[k];
+        if (which == btSoftBody::ePSolver::Linear) {
+          if (accumulate)
+            solve_links<true>(body, p);
+          else
+            solve_links<false>(body, p);
+          continue;
+        }
+        // Anchors and contacts once a small step: their hardness is the small step's share of the step's, and
+        // solved again in every pass it would pull a node `passes` times as far.
+        if (pass > 0) continue;
+        switch (which) {
+          case btSoftBody::ePSolver::Anchors:
+            if (body.m_anchors.size() > 0) run_bullet_solver(body, which, ti, p, anchored);
+            break;
+          case btSoftBody::ePSolver::RContacts:
+            if (body.m_rcontacts.size() > 0) run_bullet_solver(body, which, ti, p, in_contact);
+            break;
+          default:
+            if (body.m_scontacts.size() > 0) run_bullet_solver(body, which, ti, p, every_node);
+            break;
+        }
+      }
+      if (after_links) after_links(p);
+    }
     for (std::size_t i = 0; i < count; ++i) {
       btSoftBody::Node& node = body.m_nodes[static_cast<int>(i)];
       node.m_v = to_bullet((p.x[i] - p.q[i]) * (node.m_im > 0 ? velocity_scale : pin_velocity_scale));

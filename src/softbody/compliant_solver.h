@@ -3,10 +3,10 @@
 //
 // A step of dt is Bullet's btSoftBody::predictMotion (the step's forces, and the predicted positions the collision
 // detection meets), then `substeps` small steps of h = dt / substeps, each: the step's forces for h, positions
-// advanced from the small step's start, the configured position solvers once (anchors, rigid contacts — the step's
-// contact set reused in every small step, as Macklin et al. 2019 do —, one pass over the links with XPBD's
-// correction and the compliant constants, in double precision), the caller's own
-// constraints (TC-SB's interfaces), and velocities from the positions, damped by exp(-damping h).
+// advanced from the small step's start, the configured position solvers (anchors and rigid contacts once — the step's
+// contact set reused in every small step, as Macklin et al. 2019 do —, `passes` passes over the links with XPBD's
+// correction and the compliant constants, in double precision, each followed by the caller's own constraints: TC-SB's
+// interfaces), and velocities from the positions, damped by exp(-damping h).
 #pragma once
 
 #include <BulletSoftBody/btSoftBody.h>
@@ -36,11 +36,19 @@ struct SubstepPositions {
   std::vector<Eigen::Vector3d> x;    ///< now
   std::vector<Eigen::Vector3d> q;    ///< at the small step's start
   std::vector<double> inverse_mass;  ///< Bullet's m_im, read once a step
+  /// With more than one pass a small step (CompliantMaterial::passes), XPBD's lambda of each link (index as in
+  /// m_links) and of each of the caller's constraints (index as the caller's; the caller sizes it), summed over the
+  /// passes of the small step and zeroed at its start: lambda lives one small step, so links that come and go between
+  /// steps need nothing kept. Empty with one pass, whose lambda is 0.
+  std::vector<double> link_lambda;
+  std::vector<double> constraint_lambda;
 };
 
 /// The small steps of a compliant body (after predictMotion and the world's collision detection): what
-/// btSoftBody::solveConstraints does for a Bullet body. `after_links` runs after the position solvers of every small
-/// step, on the double positions (may be empty). O(substeps x (N + L + contacts)).
+/// btSoftBody::solveConstraints does for a Bullet body. Anchors and contacts are solved once a small step (their
+/// hardness is shared among the small steps), the links `passes` times; `after_links` runs after every pass, on the
+/// double positions (may be empty), and reads `positions.constraint_lambda` when passes > 1.
+/// O(substeps x (N + passes x L + contacts)).
 void solve_in_substeps(btSoftBody& body, const SolverSettings& solver, SubstepPositions& positions,
                        const std::function<void(SubstepPositions&)>& after_links);
 

@@ -33,6 +33,8 @@ void check_solver_settings(const SolverSettings& s) {
   if (!(std::isfinite(c.density) && c.density > 0)) refuse("compliant.density", "a finite number > 0", c.density);
   if (!(std::isfinite(c.damping) && c.damping >= 0)) refuse("compliant.damping", "a finite number >= 0", c.damping);
   if (c.substeps < 1 || c.substeps > 4096) refuse("compliant.substeps", "in [1, 4096]", c.substeps);
+  if (c.passes < 1 || c.passes > kMaxLinkPasses)
+    refuse("compliant.passes", "in [1, " + std::to_string(kMaxLinkPasses) + "]", c.passes);
 }
 
 }  // namespace tcsb

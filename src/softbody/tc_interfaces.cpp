@@ -170,9 +170,10 @@ void TcSoftBody::prepare_interfaces() {
     const btScalar w = p.fine[0] == p.fine[1] ? p.coarse->m_im + p.fine[0]->m_im
                                               : p.coarse->m_im + btScalar(0.25) * (p.fine[0]->m_im + p.fine[1]->m_im);
     const double alpha = blend_alpha(link_meta_[static_cast<std::size_t>(c.links[0])]);
-    if (solver_.compliant_model())  // (the far kind, an interpolated point, without compliance: w alone)
+    if (solver_.compliant_model()) {  // (the far kind, an interpolated point, without compliance: w alone)
       p.c0 = w > 0 ? compliant_constant(w, interface_link_stiffness(c, corner), alpha) : btScalar(0);
-    else
+      p.compliance = compliance_in_constant(p.c0, w);
+    } else
       p.c0 = w > 0 ? static_cast<btScalar>(w / c.stiffness / alpha) : btScalar(0);
     p.c1 = rest * rest;
   }
@@ -198,6 +199,24 @@ void project_interface(Vector& c, Vector& f0, Vector& f1, Scalar im_c, Scalar im
   f1 += del * (k * Scalar(0.5) * im_f1);
 }
 
+/// The compliant material's interface projection with more than one pass a small step: XPBD, lambda summed over the
+/// small step's passes. The square-root-free correction's (rl^2 - d^2) / (rl^2 + d^2) d stands for rl - d (-C, the
+/// same near rest), less alpha~ lambda; with lambda = 0 it is project_interface's correction.
+void project_interface_accumulating(Eigen::Vector3d& c, Eigen::Vector3d& f0, Eigen::Vector3d& f1, double im_c,
+                                    double im_f0, double im_f1, double c0, double c1, double compliance,
+                                    double& lambda) {
+  const Eigen::Vector3d del = (f0 + f1) * 0.5 - c;
+  const double len = del.squaredNorm();
+  if (c1 + len <= SIMD_EPSILON) return;
+  const double d = std::sqrt(len);
+  double k = (c1 - len) / (c0 * (c1 + len));
+  if (d > SIMD_EPSILON) k -= compliance * lambda / (d * c0);
+  lambda += k * d;
+  c -= del * (k * im_c);
+  f0 += del * (k * 0.5 * im_f0);
+  f1 += del * (k * 0.5 * im_f1);
+}
+
 }  // namespace
 
 void TcSoftBody::project_interfaces() {
@@ -210,18 +229,26 @@ void TcSoftBody::project_interfaces() {
 
 void TcSoftBody::project_interfaces(SubstepPositions& x) {
   const Node* base = &m_nodes[0];
-  for (const PreparedInterface& p : prepared_interfaces_) {
+  const bool accumulate = !x.constraint_lambda.empty();  // (more than one pass a small step: solve_constraints)
+  for (std::size_t i = 0; i < prepared_interfaces_.size(); ++i) {
+    const PreparedInterface& p = prepared_interfaces_[i];
     if (p.c0 <= 0) continue;
     const auto c = static_cast<std::size_t>(p.coarse - base), f0 = static_cast<std::size_t>(p.fine[0] - base),
                f1 = static_cast<std::size_t>(p.fine[1] - base);
-    project_interface(x.x[c], x.x[f0], x.x[f1], x.inverse_mass[c], x.inverse_mass[f0], x.inverse_mass[f1],
-                      static_cast<double>(p.c0), static_cast<double>(p.c1));
+    if (accumulate)
+      project_interface_accumulating(x.x[c], x.x[f0], x.x[f1], x.inverse_mass[c], x.inverse_mass[f0],
+                                     x.inverse_mass[f1], static_cast<double>(p.c0), static_cast<double>(p.c1),
+                                     p.compliance, x.constraint_lambda[i]);
+    else
+      project_interface(x.x[c], x.x[f0], x.x[f1], x.inverse_mass[c], x.inverse_mass[f0], x.inverse_mass[f1],
+                        static_cast<double>(p.c0), static_cast<double>(p.c1));
   }
 }
 
 void TcSoftBody::solve_constraints() {
   if (solver_.compliant_model()) {  // the compliant material's small steps, the interfaces in every one of them
     prepare_interfaces();
+    substep_positions_.constraint_lambda.resize(solver_.compliant.passes > 1 ? prepared_interfaces_.size() : 0);
     solve_in_substeps(*this, solver_, substep_positions_, [this](SubstepPositions& x) { project_interfaces(x); });
     return;
   }

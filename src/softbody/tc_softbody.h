@@ -515,6 +515,7 @@ class TcSoftBody : public btSoftBody {
     Node* coarse = nullptr;
     Node* fine[2] = {nullptr, nullptr};
     btScalar c0 = 0, c1 = 0;
+    double compliance = 0;  ///< the compliant material's alpha~ that c0 stands for (compliance_in_constant)
   };
   std::vector<PreparedInterface> prepared_interfaces_;  // per step, reused
   SubstepPositions substep_positions_;  // the compliant material's small steps (compliant_solver.h), reused

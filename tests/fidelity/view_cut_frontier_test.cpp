@@ -185,9 +185,9 @@ TEST(FixedViewCuts, DISABLED_Frontier) {
   ASSERT_TRUE(suite.scene.camera && (suite.calibration || compliant));
   const double compression = 0.3;
   if (compliant)
-    std::printf("suite %s, compliant, %d small steps (reference: %d); p95 px (mean over steps) / %% RMS / nodes (%% "
-                "of the net)\n\n",
-                suite.name.c_str(), suite.solver.compliant.substeps,
+    std::printf("suite %s, compliant, %d small steps of %d link passes (reference: %d small steps); p95 px (mean "
+                "over steps) / %% RMS / nodes (%% of the net)\n\n",
+                suite.name.c_str(), suite.solver.compliant.substeps, suite.solver.compliant.passes,
                 kConvergedFactor * suite.solver.compliant.substeps);
   else
     std::printf("suite %s, %d solver iterations; p95 px (mean over steps) / %% RMS / nodes (%% of the net)\n\n",

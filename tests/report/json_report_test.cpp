@@ -203,6 +203,16 @@ TEST(NativeJson, TheCandidateChargesAreWrittenOnlyWhenSet) {
   EXPECT_EQ(testing::native_json_of(run)["suite"]["tcsb"]["rebuild_dbvt"], false);
 }
 
+TEST(NativeJson, TheMaterialsLinkPassesAreWrittenOnlyAboveOne) {
+  // Absent at one pass a small step, so a compliant suite without the field writes what it wrote before it existed.
+  RunResult run = small_run();
+  run.suite.solver.model = MaterialModel::kCompliant;
+  EXPECT_EQ(testing::native_json_of(run)["suite"]["material"]["substeps"], run.suite.solver.compliant.substeps);
+  EXPECT_FALSE(testing::native_json_of(run)["suite"]["material"].contains("passes"));
+  run.suite.solver.compliant.passes = 4;
+  EXPECT_EQ(testing::native_json_of(run)["suite"]["material"]["passes"], 4);
+}
+
 TEST(NativeJson, TcsbCasesCarryTheirPairedRatioToTheGridOfTheirBudget) {
   RunResult r = small_run();
   EXPECT_FALSE(testing::native_json_of(r)["cases"][1].contains("ratio_vs_equal_plain"));  // no plain_equal in the run

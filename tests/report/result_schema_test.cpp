@@ -98,6 +98,18 @@ TEST(ResultSchema, AScenesSettingsConform) {
   EXPECT_FALSE(problems(broken).empty());
 }
 
+TEST(ResultSchema, TheCompliantMaterialConformsWithAndWithoutPasses) {
+  RunResult r = run_with_cases();
+  r.suite.solver.model = MaterialModel::kCompliant;
+  EXPECT_EQ(problems(testing::native_json_of(r)), Lines{});
+  r.suite.solver.compliant.passes = 3;
+  const ojson doc = testing::native_json_of(r);
+  EXPECT_EQ(problems(doc), Lines{});
+  ojson broken = doc;
+  broken["suite"]["material"]["passes"] = 0;
+  EXPECT_FALSE(problems(broken).empty());
+}
+
 TEST(ResultSchema, OptionalSectionsOfOtherCommandsConform) {
   ojson doc = testing::native_json_of(run_with_cases());
   doc["reproduction"] = {{"pass", true}};

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <stdexcept>
@@ -111,21 +112,88 @@ TEST(CompliantMaterial, EveryWholeLevelOfTheCutIsTheSameMaterial) {
 }
 
 TEST(CompliantMaterial, FullResolutionTcsbIsThePlainBodyBitForBit) {
+  for (const int passes : {1, 3}) {
+    SCOPED_TRACE("passes " + std::to_string(passes));
+    const auto net = compliant_net(17);
+    SolverSettings solver = compliant_solver(6);
+    solver.compliant.passes = passes;
+    SceneWorld plain_world({}), tc_world({});
+    const auto plain = make_plain_softbody(plain_world.info(), *net, solver);
+    TcSoftBody tc(tc_world.info(), net, solver, cut_settings());
+    const auto a = plain_world.attach(*plain);
+    const auto b = tc_world.attach(tc);
+    for (int s = 0; s < 30; ++s) {
+      plain_world.step(testing::kDt);
+      tc_world.step(testing::kDt);
+    }
+    for (int i = 0; i < plain->m_nodes.size(); ++i) {
+      ASSERT_EQ(plain->m_nodes[i].m_x, tc.m_nodes[i].m_x) << "node " << i;
+      ASSERT_EQ(plain->m_nodes[i].m_v, tc.m_nodes[i].m_v) << "node " << i;
+    }
+  }
+}
+
+TEST(CompliantMaterial, PassesThatKeepLambdaHoldThroughBlendsAndInterfaces) {
+  // Half the net coarsened while it hangs: links fading in and out (their constants divided by the blend weight, so
+  // their alpha~ read back from m_c0 is a softer spring) and hanging interfaces, whose lambda the caller keeps, in
+  // every pass. The body stays valid and finite and ends near where one pass a small step ends.
   const auto net = compliant_net(17);
-  const SolverSettings solver = compliant_solver(6);
-  SceneWorld plain_world({}), tc_world({});
-  const auto plain = make_plain_softbody(plain_world.info(), *net, solver);
-  TcSoftBody tc(tc_world.info(), net, solver, cut_settings());
-  const auto a = plain_world.attach(*plain);
-  const auto b = tc_world.attach(tc);
-  for (int s = 0; s < 30; ++s) {
-    plain_world.step(testing::kDt);
-    tc_world.step(testing::kDt);
+  std::vector<std::vector<btVector3>> ends;
+  for (const int passes : {1, 3}) {
+    SCOPED_TRACE("passes " + std::to_string(passes));
+    SceneWorld world({});
+    SolverSettings solver = compliant_solver(6);
+    solver.compliant.passes = passes;
+    solver.compliant.damping = 4.0;
+    TcSoftBody tc(world.info(), net, solver, cut_settings());
+    const auto attached = world.attach(tc);
+    for (int s = 0; s < 30; ++s) world.step(testing::kDt);
+    for (TreeId id = 0; id < static_cast<TreeId>(net->lod().size()); ++id) {
+      const LodNode& n = net->lod().node(id);
+      if (n.level == 1 && n.leaf_x1 <= 8 && tc.can_coarsen(id).ok) tc.begin_coarse(id);
+    }
+    for (int s = 0; s < 90; ++s) {
+      world.step(testing::kDt);
+      tc.advance_blends();
+      ASSERT_TRUE(tc.validate().ok()) << "step " << s << ": " << tc.validate().summary();
+    }
+    EXPECT_FALSE(tc.interface_constraints().empty());
+    std::vector<btVector3> end;
+    for (int i = 0; i < tc.node_count(); ++i) {
+      ASSERT_TRUE(std::isfinite(tc.m_nodes[i].m_x.length2())) << "node " << i;
+      end.push_back(tc.m_nodes[i].m_x);
+    }
+    ends.push_back(std::move(end));
   }
-  for (int i = 0; i < plain->m_nodes.size(); ++i) {
-    ASSERT_EQ(plain->m_nodes[i].m_x, tc.m_nodes[i].m_x) << "node " << i;
-    ASSERT_EQ(plain->m_nodes[i].m_v, tc.m_nodes[i].m_v) << "node " << i;
-  }
+  ASSERT_EQ(ends[0].size(), ends[1].size());
+  double farthest = 0;
+  for (std::size_t i = 0; i < ends[0].size(); ++i)
+    farthest = std::max(farthest, static_cast<double>((ends[0][i] - ends[1][i]).length()));
+  EXPECT_LT(farthest, 0.05);  // measured 0.024 m on the 4 m net: one pass's softness at k h^2 w = 0.12
+}
+
+/// The sag at rest of the middle of a 17 x 17 net hanging from its corners (4 x 4 m, 50 N/m, 0.1 kg/m^2, damped to
+/// rest in two seconds), metres below the corners, at `substeps` small steps of `passes` link passes.
+double sag_at_rest(int substeps, int passes) {
+  const auto net = compliant_net(17);
+  SceneWorld world({});
+  SolverSettings solver = compliant_solver(substeps);
+  solver.compliant.passes = passes;
+  solver.compliant.damping = 4.0;
+  const auto body = make_plain_softbody(world.info(), *net, solver);
+  const auto attached = world.attach(*body);
+  for (int s = 0; s < 120; ++s) world.step(testing::kDt);
+  return 8.0 - static_cast<double>(body->m_nodes[17 * 8 + 8].m_x.y());
+}
+
+TEST(CompliantMaterial, PassesThatKeepLambdaHangAsTheMaterialAtLargeSmallSteps) {
+  // At 2 small steps k h^2 w is 1.1 on this net's links: one pass a small step is a spring of k / (1 + k h^2 w),
+  // softer than the material, and sags more than the cloth of many small steps; passes that sum lambda over the small
+  // step converge to the implicit Euler step, whose rest is the material's whatever h.
+  const double converged = sag_at_rest(64, 4);
+  const double one_pass = sag_at_rest(2, 1) - converged, summed = sag_at_rest(2, 16) - converged;
+  EXPECT_GT(one_pass, 0.0);  // softer
+  EXPECT_LT(std::abs(summed), 0.1 * one_pass) << "one pass " << one_pass << " m";
 }
 
 TEST(CompliantMaterial, SmallStepsKeepTheirPrecisionAtMetreScale) {
@@ -173,6 +241,7 @@ TEST(SolverSettingsCheck, EveryBodyFactoryRefusesSettingsNoBodyCanStepWith) {
       {"compliant.stretch_stiffness", [](SolverSettings& s) { s.compliant.stretch_stiffness = -1; }},
       {"compliant.density", [](SolverSettings& s) { s.compliant.density = 0; }},
       {"compliant.substeps", [](SolverSettings& s) { s.compliant.substeps = 0; }},
+      {"compliant.passes", [](SolverSettings& s) { s.compliant.passes = 0; }},
       {"step_dt", [](SolverSettings& s) { s.step_dt = std::nan(""); }},
   };
   SceneWorld world({});
@@ -194,72 +263,112 @@ TEST(SolverSettingsCheck, EveryBodyFactoryRefusesSettingsNoBodyCanStepWith) {
   }
 }
 
+/// The level consistency, in the hanging net of the viewer and converged suites' compliant twins (8 m, 65 x
+/// 65, corners pinned, 100 N/m, 1/64 kg/m^2, damped to rest in two seconds): each cut against the full-resolution
+/// cloth at 192 small steps of one pass (k h^2 w = 0.014 on its finest links), RMS over the cut's nodes (each
+/// against the grid node it rests on), % of the extent.
+class HangingNetLevels {
+ public:
+  static constexpr int kWidth = 65;
+  static constexpr int kSteps = 120;
+  static constexpr int kMixedCut = -1;  ///< level 1 on the half x < 4 m, level 0 on the rest
+
+  HangingNetLevels() : net_(make_net()) {
+    SceneWorld world({});
+    const auto body = make_plain_softbody(world.info(), *net_, solver(8 * 24, 1));
+    const auto attached = world.attach(*body);
+    for (int s = 0; s < kSteps; ++s) world.step(testing::kDt);
+    for (int i = 0; i < body->m_nodes.size(); ++i) reference_.push_back(body->m_nodes[i].m_x);
+  }
+
+  /// RMS % of the extent per cut: whole levels 0, 1, 2 and kMixedCut, at `substeps` small steps of `passes` passes.
+  std::map<int, double> errors(int substeps, int passes) const {
+    std::map<int, double> error;
+    for (const int cut : {0, 1, 2, kMixedCut}) {
+      SCOPED_TRACE("cut " + std::to_string(cut));
+      SceneWorld world({});
+      TcSoftBody tc(world.info(), net_, solver(substeps, passes), cut_settings());
+      if (cut >= 0) {
+        tc.coarsen_to_level(cut);
+      } else {
+        for (TreeId id = 0; id < static_cast<TreeId>(net_->lod().size()); ++id) {
+          const LodNode& n = net_->lod().node(id);
+          if (n.level == 1 && n.leaf_x1 <= kWidth / 2 && tc.can_coarsen(id).ok) tc.begin_coarse(id);
+        }
+        for (int k = 0; k <= tc.settings().blend_steps; ++k) tc.advance_blends();
+      }
+      EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
+      const auto attached = world.attach(tc);
+      for (int s = 0; s < kSteps; ++s) world.step(testing::kDt);
+      EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
+      error[cut] = rms_pct(tc);
+    }
+    return error;
+  }
+
+ private:
+  static std::shared_ptr<const Net> make_net() {
+    NetSpec spec;
+    spec.name = "hanging";
+    spec.width = spec.height = kWidth;
+    spec.mass_mode = MassMode::kDensity;
+    spec.mass = 1.0 / 64;
+    return std::make_shared<const Net>(spec, RestPlacement::kVertex);
+  }
+  static SolverSettings solver(int substeps, int passes) {
+    SolverSettings s = compliant_solver(substeps);
+    s.compliant.passes = passes;
+    s.compliant.stretch_stiffness = 100;
+    s.compliant.damping = 4.0;  // to rest in the two seconds
+    return s;
+  }
+  double rms_pct(const TcSoftBody& tc) const {
+    double sum = 0;
+    for (int i = 0; i < tc.node_count(); ++i) {
+      const auto leaf = static_cast<std::size_t>(net_->lod().rest_leaf(tc.tree_id(i)));
+      sum += static_cast<double>((tc.m_nodes[i].m_x - reference_[leaf]).length2());
+    }
+    return 100.0 * std::sqrt(sum / tc.node_count()) / net_->extent();
+  }
+
+  std::shared_ptr<const Net> net_;
+  std::vector<btVector3> reference_;
+};
+
 TEST(CompliantMaterial, WholeLevelsAndAMixedCutHangAsTheConvergedCloth) {
-  // The level consistency, in the hanging net of the viewer and converged suites' compliant twins (8 m, 65 x
-  // 65, corners pinned, 100 N/m, 1/64 kg/m^2, 24 small steps): damped to rest at whole levels 0, 1 and 2 and with
-  // the half x < 4 m at level 1, against the full-resolution cloth at 8 x the small steps, RMS over the cut's nodes
-  // (each against the grid node it rests on), % of the extent. Measured 0.88, 0.40, 1.30 and 0.64 %: level 2 (17 x
-  // 17 nodes) misses the 1 % by its spatial resolution, and the mixed cut errs less than the worse of its
-  // two levels, so the levels compose.
+  // At the twins' 24 small steps of one pass: measured 0.88, 0.40, 1.30 and 0.64 %. Level 2 (17 x 17 nodes) misses
+  // the 1 % by its spatial resolution, and the mixed cut errs less than the worse of its two levels, so the
+  // levels compose.
 #ifdef __SANITIZE_ADDRESS__
   // A measurement of the physics, not of memory: 8 minutes at -O0 under the sanitizers (482 s in CI's sanitized
   // tree), 3 s in Release. The sanitized tree runs the compliant solver through the other tests here.
   GTEST_SKIP() << "a physics measurement: run in the Release tree";
 #endif
-  constexpr int kWidth = 65;
-  NetSpec spec;
-  spec.name = "hanging";
-  spec.width = spec.height = kWidth;
-  spec.mass_mode = MassMode::kDensity;
-  spec.mass = 1.0 / 64;
-  const auto net = std::make_shared<const Net>(spec, RestPlacement::kVertex);
-  SolverSettings solver = compliant_solver(24);
-  solver.compliant.stretch_stiffness = 100;
-  solver.compliant.damping = 4.0;  // to rest in the two seconds
-  constexpr int kSteps = 120;
-  std::vector<btVector3> reference;
-  {
-    SceneWorld world({});
-    SolverSettings converged = solver;
-    converged.compliant.substeps = 8 * 24;
-    const auto body = make_plain_softbody(world.info(), *net, converged);
-    const auto attached = world.attach(*body);
-    for (int s = 0; s < kSteps; ++s) world.step(testing::kDt);
-    for (int i = 0; i < body->m_nodes.size(); ++i) reference.push_back(body->m_nodes[i].m_x);
-  }
-  const auto rms_pct = [&](const TcSoftBody& tc) {
-    double sum = 0;
-    for (int i = 0; i < tc.node_count(); ++i) {
-      const auto leaf = static_cast<std::size_t>(net->lod().rest_leaf(tc.tree_id(i)));
-      sum += static_cast<double>((tc.m_nodes[i].m_x - reference[leaf]).length2());
-    }
-    return 100.0 * std::sqrt(sum / tc.node_count()) / net->extent();
-  };
-  std::map<int, double> error;  // per cut: 0, 1, 2, and -1 for the mixed one
-  for (const int cut : {0, 1, 2, -1}) {
-    SCOPED_TRACE("cut " + std::to_string(cut));
-    SceneWorld world({});
-    TcSoftBody tc(world.info(), net, solver, cut_settings());
-    if (cut >= 0) {
-      tc.coarsen_to_level(cut);
-    } else {
-      for (TreeId id = 0; id < static_cast<TreeId>(net->lod().size()); ++id) {
-        const LodNode& n = net->lod().node(id);
-        if (n.level == 1 && n.leaf_x1 <= kWidth / 2 && tc.can_coarsen(id).ok) tc.begin_coarse(id);
-      }
-      for (int k = 0; k <= tc.settings().blend_steps; ++k) tc.advance_blends();
-    }
-    ASSERT_TRUE(tc.validate().ok()) << tc.validate().summary();
-    const auto attached = world.attach(tc);
-    for (int s = 0; s < kSteps; ++s) world.step(testing::kDt);
-    ASSERT_TRUE(tc.validate().ok()) << tc.validate().summary();
-    error[cut] = rms_pct(tc);
-  }
+  const HangingNetLevels levels;
+  std::map<int, double> error = levels.errors(24, 1);
   EXPECT_LT(error[0], 1.0);
   EXPECT_LT(error[1], 1.0);
   EXPECT_LT(error[2], 1.4);
-  EXPECT_LT(error[-1], 1.0);
-  EXPECT_LE(error[-1], std::max(error[0], error[1]));  // the levels compose
+  EXPECT_LT(error[HangingNetLevels::kMixedCut], 1.0);
+  EXPECT_LE(error[HangingNetLevels::kMixedCut], std::max(error[0], error[1]));  // the levels compose
+}
+
+TEST(CompliantMaterial, DISABLED_LevelErrorsAtEqualCost) {
+  // The measurement behind docs/investigations/compliant-material.md, "Passes at equal cost": the level-consistency
+  // errors at pairs of (small steps, passes), grouped by their cost in link passes a step (24: the twins').
+  // Run: build/tests_softbody --gtest_also_run_disabled_tests --gtest_filter='CompliantMaterial.DISABLED_Level*'
+  const HangingNetLevels levels;
+  std::printf(
+      "link passes a step | substeps x passes | level 0 | level 1 | level 2 | mixed 0/1  (RMS %% of the extent)\n");
+  // Costs of 24, 48, 96, 192 (192 x 1: the reference itself) and 384 link passes a step.
+  const std::vector<std::pair<int, int>> pairs = {{24, 1},  {12, 2}, {8, 3},  {6, 4},  {4, 6},   {3, 8},
+                                                  {48, 1},  {24, 2}, {12, 4}, {96, 1}, {48, 2},  {24, 4},
+                                                  {192, 1}, {96, 2}, {64, 3}, {48, 4}, {12, 16}, {24, 16}};
+  for (const auto& [substeps, passes] : pairs) {
+    std::map<int, double> error = levels.errors(substeps, passes);
+    std::printf("%d | %d x %d | %.3f | %.3f | %.3f | %.3f\n", substeps * passes, substeps, passes, error[0], error[1],
+                error[2], error[HangingNetLevels::kMixedCut]);
+  }
 }
 
 }  // namespace

@@ -981,10 +981,17 @@ TEST(SuiteMaterial, BulletIsTheDefaultAndTheCompliantModelIsReadInPhysicalUnits)
   EXPECT_EQ(s.solver.compliant.density, 0.2);
   EXPECT_EQ(s.solver.compliant.damping, 0.5);
   EXPECT_EQ(s.solver.compliant.substeps, 8);
+  EXPECT_EQ(s.solver.compliant.passes, 1);   // one link pass a small step unless the suite says otherwise
   EXPECT_DOUBLE_EQ(s.solver.step_dt, 0.01);  // the suite's dt: the constants are made for it
   // One material: the net's mass is the density's, lumped by area.
   EXPECT_EQ(s.nets[0].mass_mode, MassMode::kDensity);
   EXPECT_DOUBLE_EQ(s.nets[0].total_mass(), 0.2 * 8.0 * 8.0);
+}
+
+TEST(SuiteMaterial, LinkPassesPerSmallStepAreRead) {
+  json j = compliant_minimal();
+  j["material"]["passes"] = 3;
+  EXPECT_EQ(parse_suite_text(j.dump(), "m.json").solver.compliant.passes, 3);
 }
 
 TEST(SuiteReject, NetValuesBeyondWhatBulletCanRepresent) {
@@ -1002,11 +1009,14 @@ TEST(SuiteMaterial, BadMaterialsAreRefusedNamingTheField) {
       rejected_compliant([&](json& j) { j["material"][key] = bad; }, "material." + std::string(key));
     rejected_compliant([&](json& j) { j["material"].erase(key); }, "material." + std::string(key));
   }
+  for (const double bad : {0.0, -1.0, 1.5, 1001.0})  // (at least one pass, whole, at most kMaxLinkPasses)
+    rejected_compliant([&](json& j) { j["material"]["passes"] = bad; }, "material.passes");
   rejected_compliant([](json& j) { j["material"]["damping"] = -0.1; }, "material.damping");
   rejected_compliant([](json& j) { j["material"]["stretch_stiffness"] = 1e39; }, "material.stretch_stiffness");
   rejected_compliant([](json& j) { j["material"]["kLST"] = 1; }, "material.kLST");
   // Bullet's model takes its stiffness from solver: a compliant field there would be read and ignored.
   rejected_edit([](json& j) { j["material"] = {{"model", "bullet"}, {"density", 1}}; }, "material.density");
+  rejected_edit([](json& j) { j["material"] = {{"model", "bullet"}, {"passes", 2}}; }, "material.passes");
 }
 
 TEST(SuiteMaterial, TheCompliantModelRefusesWhatItWouldIgnore) {
