@@ -1,15 +1,16 @@
 #!/usr/bin/env python3
 """The walls between modules, checked before anything links: every `#include "MODULE/..."` (or "../MODULE/...") in
 src/ and include/ must follow an arrow of src/modules.txt, directly or through other modules' arrows, and every
-folder of src/ must be a module there. A module's include path holds all of src/, so without this an upward include
-compiles and shows only at link time, if at all (a header-only use never does).
+folder of src/ and tests/ must be a module there. A module's include path holds all of src/, so without this an
+upward include compiles and shows only at link time, if at all (a header-only use never does).
 
 Rules, from src/modules.txt:
   - src/MODULE/ includes its own headers and those of the modules its arrows reach;
   - include/tcsb/ (the public headers) includes itself (tcsb/...) and library modules only;
   - a library module's header, installed under include/tcsb/MODULE/, names a module's header relative to itself
     ("../net/net.h"): a user's include path holds no "net/" of ours, and may hold one of its own;
-  - the table itself: every arrow points to a module on a line above, and a library module's only to library ones.
+  - the table itself: every arrow points to a module on a line above, and a library module's only to library ones;
+  - every folder of src/ and of tests/ is a module of the table (CMake builds the tests of its modules only).
 
 Usage: python3 scripts/check-include-walls.py [--root DIR]
        python3 scripts/check-include-walls.py --self-test
@@ -100,6 +101,11 @@ def violations(root):
     for module in modules:
         if module not in folders:
             found.append(f"{TABLE}: {module} has no folder src/{module}/")
+    # CMake builds tests/MODULE/ for the modules of the table only: any other folder's tests would never run.
+    tests = root / "tests"
+    for folder in sorted(d.name for d in tests.iterdir() if d.is_dir()) if tests.is_dir() else []:
+        if folder not in modules:
+            found.append(f"tests/{folder}/: tests of no module of {TABLE}, which CMake would not build")
     # (folder, the modules its files may include, how to say so, whether its headers are installed)
     scopes = [(src / m, reached[m], f"{m} may include {', '.join(sorted(reached[m]))}", m in library)
               for m in folders if m in modules]
@@ -177,6 +183,7 @@ def self_test(repo):
     run({"include/tcsb/public.h": '#include "suite/suite.h"\n'}, 1, "include/tcsb/public.h:1")
     run({"src/case/unknown.h": '#include "nowhere/thing.h"\n'}, 1, "nowhere/ is not a module")
     run({"src/newmodule/a.cpp": "int a;\n"}, 1, "src/newmodule/")
+    run({"tests/nomodule/a_test.cpp": "int a;\n"}, 1, "tests/nomodule/")
     run({"src/feedback/installed.h": '#include "softbody/tc_softbody.h"\n'}, 1, '"../softbody/tc_softbody.h"')
     if ok:
         print("check-include-walls self-test: ok")
