@@ -11,12 +11,15 @@ trap 'rm -rf "$scratch"' EXIT
 cmake --install "$build" --prefix "$scratch/prefix" > "$scratch/install.log"
 # The package puts <prefix>/include alone on a user's include path, and its headers reach each other relative to
 # themselves: a user's own headers of the generic names tcsb's modules use must never be picked up in their place.
-# Each of these stops the build if any tcsb header includes it through the include path.
-for header in net/net.h net/lod_tree.h softbody/tc_softbody.h softbody/tc_settings.h feedback/controller.h \
-              feedback/feedback_settings.h; do
-  mkdir -p "$scratch/user-include/$(dirname "$header")"
-  echo "#error \"a tcsb header reached the user's own $header through the include path\"" \
-    > "$scratch/user-include/$header"
+# A user's header of the name of every header of the library modules (src/modules.txt) stops the build if any tcsb
+# header includes it through the include path.
+for module in $(awk '$2 == "library" {print $1}' "$source_dir/src/modules.txt"); do
+  mkdir -p "$scratch/user-include/$module"
+  for source in "$source_dir/src/$module"/*.h; do
+    header=$module/$(basename "$source")
+    echo "#error \"a tcsb header reached the user's own $header through the include path\"" \
+      > "$scratch/user-include/$header"
+  done
 done
 grep -q "include/tcsb\b[^/]" "$scratch/prefix"/lib*/cmake/tcsb/tcsbTargets.cmake &&
   { echo "check-example: the package puts include/tcsb itself on the include path" >&2; exit 1; }

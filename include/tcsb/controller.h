@@ -15,7 +15,7 @@
 // step boundary: examples/client_tcsb.cpp. The settings to start from per kind of scene: presets.h, docs/library.md.
 //
 // With settings.view the saliency sees through a camera (the BSWDF's view terms: motion on the image, nothing out of
-// view kept fine): pass make_controller a Spectator (feedback/camera.h: the camera, fixed or along keyframes, and the
+// view kept fine): pass make_controller a Spectator (tcsb/view.h: the camera, fixed or along keyframes, and the
 // step length), as make_controller(settings, target_nodes, seed, Spectator{camera, dt}).
 #pragma once
 

@@ -8,3 +8,4 @@
 #include "tcsb/controller.h"   // IWYU pragma: export
 #include "tcsb/net.h"          // IWYU pragma: export
 #include "tcsb/tc_softbody.h"  // IWYU pragma: export
+#include "tcsb/view.h"         // IWYU pragma: export

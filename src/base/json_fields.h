@@ -124,6 +124,9 @@ class JsonFields {
   std::string string(const Json& parent, const std::string& path, std::string_view key) const {
     return string(member(parent, path, key), key_path(path, key));
   }
+  double number(const Json& parent, const std::string& path, std::string_view key, const NumberRange& range) const {
+    return number(member(parent, path, key), key_path(path, key), range);
+  }
   std::int64_t integer(const Json& parent, const std::string& path, std::string_view key,
                        std::int64_t lo = std::numeric_limits<std::int64_t>::min(),
                        std::int64_t hi = std::numeric_limits<std::int64_t>::max()) const {

@@ -5,9 +5,9 @@
 #include <memory>
 #include <optional>
 
-#include "../feedback/camera.h"
 #include "../feedback/feedback_settings.h"
 #include "../softbody/tc_softbody.h"
+#include "../view/camera.h"
 
 namespace tcsb {
 

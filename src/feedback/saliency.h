@@ -24,7 +24,7 @@
 
 #include "../feedback/cut_snapshot.h"
 #include "../feedback/feedback_settings.h"
-#include "../feedback/screen_projection.h"
+#include "../view/screen_projection.h"
 
 namespace tcsb {
 

@@ -1,7 +1,6 @@
 #include "fidelity/screen_error.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "analysis/statistics.h"
 
@@ -14,8 +13,7 @@ ScreenError screen_error(const ScreenProjection& view, std::span<const Eigen::Ve
   for (std::size_t i = 0; i < n; ++i) {
     const ScreenPoint r = view.project(reference[i]);
     if (!r.in_view) continue;
-    const ScreenPoint s = view.project(subject[i]);
-    scratch.push_back(s.depth >= kNearPlane ? std::hypot(s.x - r.x, s.y - r.y) : view.diagonal_px());
+    scratch.push_back(view.displacement_px(subject[i], r));
   }
   ScreenError e;
   e.in_view = scratch.size();

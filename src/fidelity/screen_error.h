@@ -11,8 +11,8 @@
 #include <span>
 #include <vector>
 
-#include "feedback/screen_projection.h"
 #include "fidelity/fidelity_result.h"
+#include "view/screen_projection.h"
 
 namespace tcsb {
 
@@ -22,9 +22,9 @@ struct ScreenError {
   double mean = 0, p95 = 0, max = 0;  ///< pixels
 };
 
-/// The screen error of `subject` against `reference` (the same grid points, in the same order) seen through `view`.
-/// A subject point at or behind the near plane, where its image does not exist, counts as the image's diagonal (the
-/// largest displacement two points in view can have). `scratch` is reused between calls.
+/// The screen error of `subject` against `reference` (the same grid points, in the same order) seen through `view`,
+/// each point's ScreenProjection::displacement_px (a subject point without an image counts as the image's
+/// diagonal). `scratch` is reused between calls.
 ScreenError screen_error(const ScreenProjection& view, std::span<const Eigen::Vector3d> subject,
                          std::span<const Eigen::Vector3d> reference, std::vector<double>& scratch);
 

@@ -10,6 +10,7 @@
 #include "analysis/bootstrap.h"
 #include "analysis/relative_change.h"
 #include "analysis/statistics.h"
+#include "base/case_pairing.h"
 #include "gate/result_comparison.h"
 
 namespace tcsb {
@@ -216,7 +217,7 @@ std::vector<NetTax> judge_tax(const std::vector<ResultView>& runs, const TaxTarg
     const ResultView& run = runs[r];
     for (std::size_t i = 0; i < run.cases.size(); ++i) {
       const CaseView& c = run.cases[i];
-      if (c.method != "tcsb" || !c.compression || std::abs(*c.compression - target.compression) > 1e-9) continue;
+      if (c.method != "tcsb" || !c.compression || !same_compression(*c.compression, target.compression)) continue;
       const std::optional<std::size_t> equal = equal_plain_case_of(run, i);
       if (!equal) continue;
       if (!c.net_nodes)

@@ -30,7 +30,8 @@ struct PaperReference {
   double time_ratio(const std::string& compression) const;
 };
 
-/// Reads results/paper.json. Throws InputError-style std::runtime_error "FILE: FIELD: problem" on a bad file.
+/// Reads results/paper.json with the typed reader of every input (base/json_fields.h). Throws InputError "FILE:
+/// FIELD: problem" on a bad file.
 PaperReference load_paper_reference(const std::filesystem::path& path);
 
 }  // namespace tcsb

@@ -1,9 +1,9 @@
 #include "report/gbench_export.h"
 
 #include <cmath>
+#include <optional>
 #include <string_view>
 
-#include "analysis/statistics.h"
 #include "report/json_report.h"
 
 namespace tcsb {
@@ -68,22 +68,6 @@ ojson entry_head(const std::string& name, const CaseView& c, std::size_t family,
           {"run_name", c.label}, {"run_type", run_type},   {"repetitions", repetitions}};
 }
 
-struct OkSamples {
-  std::vector<double> ms, nodes, links, interpolations;
-};
-
-OkSamples ok_samples(const CaseView& c) {
-  OkSamples s;
-  for (const RepetitionView& r : c.repetitions) {
-    if (r.status != "ok" || !r.mean_step_ms) continue;
-    s.ms.push_back(*r.mean_step_ms);
-    s.nodes.push_back(r.mean_nodes.value_or(0.0));
-    s.links.push_back(r.mean_links.value_or(0.0));
-    s.interpolations.push_back(r.mean_interpolations.value_or(0.0));
-  }
-  return s;
-}
-
 void add_case(const ResultView& r, std::size_t family, ojson& out) {
   const CaseView& c = r.cases[family];
   for (const RepetitionView& rep : c.repetitions) {
@@ -100,34 +84,38 @@ void add_case(const ResultView& r, std::size_t family, ojson& out) {
     e["I"] = json_number(rep.mean_interpolations);
     out.push_back(std::move(e));
   }
-  const OkSamples s = ok_samples(c);
-  if (s.ms.size() < 2) return;  // as Google Benchmark: aggregates only over repetitions
-  const Summary ms = summarize(s.ms), n = summarize(s.nodes), l = summarize(s.links), i = summarize(s.interpolations);
+  // As Google Benchmark: aggregates only over repetitions. They are the run's own summary of the case (step_ms), not
+  // the export's, so every format shows the same numbers; the counters are the case's means, so they go with the
+  // mean alone (the run summarises N, L and I by their means only).
+  if (c.step_ms_count < 2) return;
   struct Aggregate {
     const char* name;
     const char* unit;
-    double (*pick)(const Summary&);
+    std::optional<double> value;
   };
   // The cv is a fraction, not a time: it is not converted.
-  static const Aggregate kAggregates[] = {
-      {"mean", "time", [](const Summary& x) { return x.mean; }},
-      {"median", "time", [](const Summary& x) { return x.median; }},
-      {"stddev", "time", [](const Summary& x) { return x.stddev; }},
-      {"cv", "percentage", [](const Summary& x) { return x.cv; }},
+  const Aggregate aggregates[] = {
+      {"mean", "time", c.mean_step_ms},
+      {"median", "time", c.median_step_ms},
+      {"stddev", "time", c.stddev_step_ms},
+      {"cv", "percentage", c.cv_step_ms},
   };
-  for (const Aggregate& a : kAggregates) {
+  for (const Aggregate& a : aggregates) {
+    if (!a.value) continue;
     ojson e = entry_head(c.label + "_" + a.name, c, family, "aggregate", r.repetitions);
     e["threads"] = 1;
     e["aggregate_name"] = a.name;
     e["aggregate_unit"] = a.unit;
-    e["iterations"] = s.ms.size();
+    e["iterations"] = c.step_ms_count;
     const double scale = std::string_view(a.unit) == "time" ? kMicrosecondsPerMs : 1.0;
-    e["real_time"] = json_number(scale * a.pick(ms));
-    e["cpu_time"] = json_number(scale * a.pick(ms));
+    e["real_time"] = json_number(scale * *a.value);
+    e["cpu_time"] = json_number(scale * *a.value);
     e["time_unit"] = "us";
-    e["N"] = json_number(a.pick(n));
-    e["L"] = json_number(a.pick(l));
-    e["I"] = json_number(a.pick(i));
+    if (std::string_view(a.name) == "mean") {
+      e["N"] = json_number(c.mean_nodes);
+      e["L"] = json_number(c.mean_links);
+      e["I"] = json_number(c.mean_interpolations);
+    }
     out.push_back(std::move(e));
   }
 }

@@ -4,7 +4,8 @@
 // One "iteration" entry per ok repetition, named after its case ("n33/tcsb@0.3"), with real_time = cpu_time = the
 // repetition's mean step time in microseconds (time_unit "us": compare.py prints times without decimals, and steps
 // are often below a millisecond; tcsb measures wall time only), iterations = timed steps, and counters N, L, I;
-// then the _mean, _median, _stddev and _cv aggregates Google Benchmark writes for --benchmark_repetitions.
+// then the _mean, _median, _stddev and _cv aggregates Google Benchmark writes for --benchmark_repetitions, read off
+// the run's own summary of the case (step_ms), with the counters, the case's means, on _mean alone.
 // Diverged repetitions are left out: Google Benchmark has no null time, and a NaN would break the tools.
 #pragma once
 

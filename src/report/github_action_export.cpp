@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "analysis/statistics.h"
 #include "report/json_report.h"
 #include "report/text_table.h"
 
@@ -25,15 +24,14 @@ std::string counts(const CaseView& c) {
 ojson github_action_step_times(const ResultView& result) {
   ojson out = ojson::array();
   for (const CaseView& c : result.cases) {
-    const std::vector<double> times = ok_step_times(c);
-    if (times.empty()) continue;
-    const Summary s = summarize(times);
+    if (c.step_ms_count == 0 || !c.median_step_ms) continue;  // no ok repetition
+    // The run's own summary of the case (step_ms), not one of the export's: every format shows the same numbers.
     out.push_back({{"name", c.label + " step time"},
                    {"unit", "ms"},
-                   {"value", json_number(s.median)},
-                   {"range", "± " + formatted("%.3g", s.stddev)},
-                   {"extra", "median of " + std::to_string(s.count) + " repetitions' mean step times (CV " +
-                                 formatted("%.1f", 100.0 * s.cv) + " %); " + counts(c)}});
+                   {"value", json_number(*c.median_step_ms)},
+                   {"range", "± " + formatted("%.3g", c.stddev_step_ms.value_or(0.0))},
+                   {"extra", "median of " + std::to_string(c.step_ms_count) + " repetitions' mean step times (CV " +
+                                 formatted("%.1f", 100.0 * c.cv_step_ms.value_or(0.0)) + " %); " + counts(c)}});
   }
   return out;
 }
@@ -43,28 +41,20 @@ ojson github_action_speedups(const ResultView& result) {
   for (std::size_t i = 0; i < result.cases.size(); ++i) {
     const CaseView& c = result.cases[i];
     const auto plain = plain_case_of(result, i);
-    if (c.method != "tcsb" || !plain) continue;
-    // plain / TC-SB per repetition: the reciprocal of the paired ratio, so that bigger is better.
-    std::vector<double> speedups;
-    for (const double ratio : paired_step_ratios(result, i, *plain)) {
-      // A ratio can be finite and its reciprocal not (1e308 ms against 0.5 ms): such a pair has no speed-up to
-      // show, and summarising an infinity would be an internal error instead of a page.
-      const double speedup = 1.0 / ratio;
-      if (ratio > 0.0 && std::isfinite(speedup)) speedups.push_back(speedup);
-    }
-    if (speedups.empty()) continue;
-    const Summary s = summarize(speedups);
+    if (c.method != "tcsb" || !plain || !c.ratio_vs_plain || !(*c.ratio_vs_plain > 0.0)) continue;
+    // plain / TC-SB: the reciprocal of the run's paired ratio (ratio_vs_plain), so that bigger is better. A ratio can
+    // be finite and its reciprocal not (1e308 ms against 0.5 ms): such a case has no speed-up to show.
+    const double speedup = 1.0 / *c.ratio_vs_plain;
+    if (!std::isfinite(speedup)) continue;
     const CaseView& p = result.cases[*plain];
-    std::string extra = "plain / TC-SB step time, paired by repetition in the same run, median of " +
-                        std::to_string(s.count) + "; " + counts(c);
+    std::string extra = "plain / TC-SB step time, the reciprocal of the median ratio over repetitions paired in the "
+                        "same run; " +
+                        counts(c);
     if (c.mean_nodes && p.mean_nodes && *p.mean_nodes > 0) {
       extra += "; N/plain " + formatted("%.3f", *c.mean_nodes / *p.mean_nodes);
     }
-    out.push_back({{"name", c.label + " speed-up vs plain"},
-                   {"unit", "x"},
-                   {"value", json_number(s.median)},
-                   {"range", "± " + formatted("%.3g", s.stddev)},
-                   {"extra", std::move(extra)}});
+    out.push_back(
+        {{"name", c.label + " speed-up vs plain"}, {"unit", "x"}, {"value", json_number(speedup)}, {"extra", extra}});
   }
   return out;
 }

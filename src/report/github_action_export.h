@@ -1,8 +1,11 @@
 // The two custom formats of github-action-benchmark (benchmark-action/github-action-benchmark), which draws charts
-// of a metric across commits and can alert on a change. Each is a JSON array of {name, unit, value, range, extra}:
-//   github-action-smaller  tool "customSmallerIsBetter": each case's step time (median over repetitions, ms)
+// of a metric across commits and can alert on a change. Each is a JSON array of {name, unit, value, extra}, read off
+// what the run computed once for each case (step_ms, ratio_vs_plain), so they show the numbers every format shows:
+//   github-action-smaller  tool "customSmallerIsBetter": each case's step time (median over repetitions, ms), with
+//                          its standard deviation as the range
 //   github-action-bigger   tool "customBiggerIsBetter": each TC-SB case's speed-up over plain of the same net
-//                          (plain / TC-SB step time, paired by repetition in the same run, median; "x")
+//                          (plain / TC-SB step time: the reciprocal of the median ratio over repetitions paired in
+//                          the same run; "x")
 // The speed-ups are the machine-independent numbers to chart on shared runners; the step times are for dedicated
 // ones. Cases without a number (every repetition diverged) are left out: the action needs a number.
 #pragma once

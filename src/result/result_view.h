@@ -43,9 +43,16 @@ struct CaseView {
   std::optional<std::int64_t> net_nodes;
   std::string status;
   std::optional<double> mean_nodes, mean_links, mean_interpolations;
-  std::optional<double> median_step_ms;  ///< step_ms.median
-  std::optional<double> stddev_step_ms;  ///< step_ms.stddev
-  std::optional<double> cv_step_ms;      ///< step_ms.cv
+  /// step_ms, the run's summary of the ok repetitions' mean step times: its count (0 when a hand-made document has
+  /// none), mean, median, stddev and cv.
+  std::int64_t step_ms_count = 0;
+  std::optional<double> mean_step_ms;
+  std::optional<double> median_step_ms;
+  std::optional<double> stddev_step_ms;
+  std::optional<double> cv_step_ms;
+  /// ratio_vs_plain, the run's median of the case's step time over its plain case's, paired by repetition
+  /// (base/case_pairing.h); nullopt without a plain case or in a hand-made document without it.
+  std::optional<double> ratio_vs_plain;
   std::vector<RepetitionView> repetitions;
   std::optional<InstructionsView> instructions;  ///< `instructions`, when the run counted them
 };

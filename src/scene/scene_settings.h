@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "feedback/camera.h"
-#include "feedback/keyframe_path.h"
+#include "view/camera.h"
+#include "view/keyframe_path.h"
 
 namespace tcsb {
 
@@ -38,7 +38,7 @@ struct Collider {
   std::array<double, 3> normal{0, 1, 0};        ///< plane, unit length (the parser normalises it)
   std::array<double, 3> velocity{0, 0, 0};      ///< kinematic: constant; dynamic: initial; m/s
   /// Kinematic only, instead of a velocity: the centre's (or plane point's) positions at keyframe times
-  /// (feedback/keyframe_path.h: linear between, held after the last); `position` is then the path's at time 0.
+  /// (view/keyframe_path.h: linear between, held after the last); `position` is then the path's at time 0.
   /// Empty: `position` + `velocity` x t.
   std::vector<VectorKey> path;
   double mass = 1.0;      ///< dynamic only, kg

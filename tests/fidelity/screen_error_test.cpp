@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "../feedback/test_camera.h"
+#include "../view/test_camera.h"
 
 namespace tcsb {
 namespace {

@@ -16,7 +16,7 @@ using testing::make_case;
 using testing::synthetic_suite;
 
 /// Two nets, plain and TC-SB at 50 %, six repetitions each (enough for intervals), no operations.
-RunResult small_run() {
+RunResult two_nets_six_repetitions() {
   RunResult run;
   run.suite = synthetic_suite(2);
   run.suite.compression = {0.5};
@@ -34,7 +34,7 @@ PaperReference paper() {
 }
 
 TEST(Reproduction, TablesAreThoseOfTheRunAfterItsLastLook) {
-  RunResult run = small_run();
+  RunResult run = two_nets_six_repetitions();
   ReproductionOptions options;
   options.budget_s = 0;  // the first look only: the run's own repetitions
   const Reproduction r = check_reproduction(run, paper(), options);
@@ -52,7 +52,7 @@ TEST(Reproduction, TablesAreThoseOfTheRunAfterItsLastLook) {
 }
 
 TEST(Reproduction, TheRenderersShowTheTablesTheyAreGiven) {
-  RunResult run = small_run();
+  RunResult run = two_nets_six_repetitions();
   Reproduction r = check_reproduction(run, paper());
   ASSERT_FALSE(r.tables.run.whole.table2.empty());
   r.tables.run.whole.table2.front().total_ms =

@@ -1,4 +1,5 @@
-// Hand-built RunResults for the report tests: no Bullet, every number chosen so the expected tables are obvious.
+// Hand-built RunResults for the report and paper tests: no Bullet, every number chosen so the expected tables are
+// obvious.
 #pragma once
 
 #include <cmath>

@@ -10,13 +10,13 @@
 #include <random>
 
 #include "../softbody/test_bodies.h"
-#include "feedback/keyframe_path.h"
 #include "feedback/random_policy.h"
 #include "net/net.h"
 #include "scene/scene_world.h"
 #include "softbody/plain_softbody.h"
 #include "softbody/tc_softbody.h"
 #include "softbody/vector_conversion.h"
+#include "view/keyframe_path.h"
 
 namespace tcsb {
 namespace {

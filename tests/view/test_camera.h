@@ -2,7 +2,7 @@
 // 200 x 100 pixels, so the focal length is 50 pixels and one metre sideways at the origin is 5 pixels.
 #pragma once
 
-#include "feedback/camera.h"
+#include "view/camera.h"
 
 namespace tcsb {
 

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "synthetic_run.h"
+#include "../report/synthetic_run.h"
 
 namespace tcsb {
 namespace {
@@ -15,7 +15,7 @@ using testing::op;
 using testing::synthetic_suite;
 
 /// Two nets; plain, tcsb@1.0 and tcsb@0.5 on each, in the runner's case order.
-RunResult two_nets() {
+RunResult two_nets_at_two_budgets() {
   RunResult r;
   r.suite = synthetic_suite(2);
   r.suite.compression = {1.0, 0.5};
@@ -32,7 +32,7 @@ RunResult two_nets() {
 }
 
 TEST(Table2, MeansOverNetsAndRatiosToPlain) {
-  const std::vector<Table2Row> rows = table2(two_nets());
+  const std::vector<Table2Row> rows = table2(two_nets_at_two_budgets());
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0].method, "plain");
   EXPECT_FALSE(rows[0].compression);
@@ -69,7 +69,7 @@ TEST(Table2, CompressionLabels) {
 }
 
 TEST(Table2, DivergedCasesAreLeftOutAndTheRowIsPartial) {
-  RunResult r = two_nets();
+  RunResult r = two_nets_at_two_budgets();
   diverge(r.cases[5], 17);  // n1/tcsb@0.5
   const std::vector<Table2Row> rows = table2(r);
   ASSERT_EQ(rows.size(), 3u);
@@ -84,7 +84,7 @@ TEST(Table2, DivergedCasesAreLeftOutAndTheRowIsPartial) {
 }
 
 TEST(Table2, AllDivergedGivesNoNumbers) {
-  RunResult r = two_nets();
+  RunResult r = two_nets_at_two_budgets();
   diverge(r.cases[2], 3);
   diverge(r.cases[5], 4);
   const Table2Row row = table2(r)[2];
@@ -95,9 +95,9 @@ TEST(Table2, AllDivergedGivesNoNumbers) {
   EXPECT_FALSE(row.time_ratio_vs_plain);
 }
 
-/// two_nets() with plain_equal at 0.5 on each net after the TC-SB cases, as the runner orders them.
+/// two_nets_at_two_budgets() with plain_equal at 0.5 on each net after the TC-SB cases, as the runner orders them.
 RunResult two_nets_with_equal_plain() {
-  RunResult r = two_nets();
+  RunResult r = two_nets_at_two_budgets();
   r.suite.methods.push_back(Method::kPlainEqual);
   const Suite& s = r.suite;
   r.cases.insert(r.cases.begin() + 3, make_case(s, 0, Method::kPlainEqual, 0.5, 49, 84, 0, 0.4));
@@ -117,7 +117,7 @@ TEST(Table2, TcsbAgainstPlainEqualOfTheSameTarget) {
   EXPECT_EQ(rows[3].compression_label, "50%");
   EXPECT_DOUBLE_EQ(*rows[3].time_ratio_vs_plain, 1.5 / 4.0);
   EXPECT_FALSE(rows[3].time_ratio_vs_equal_plain);
-  EXPECT_FALSE(table2(two_nets())[2].time_ratio_vs_equal_plain);  // no plain_equal cases: no ratio
+  EXPECT_FALSE(table2(two_nets_at_two_budgets())[2].time_ratio_vs_equal_plain);  // no plain_equal cases: no ratio
 }
 
 TEST(Table2, EqualPlainRatioOnlyOverNetsOkInBoth) {
@@ -127,7 +127,7 @@ TEST(Table2, EqualPlainRatioOnlyOverNetsOkInBoth) {
 }
 
 TEST(Table2, NoPlainMeansNoRatios) {
-  RunResult r = two_nets();
+  RunResult r = two_nets_at_two_budgets();
   r.cases = {r.cases[1], r.cases[4]};
   const std::vector<Table2Row> rows = table2(r);
   ASSERT_EQ(rows.size(), 1u);
@@ -153,7 +153,7 @@ TEST(PairedRatio, MedianOverRepetitionsOkInBoth) {
 }
 
 TEST(PairedRatio, PlainCaseOfTheSameNet) {
-  const RunResult r = two_nets();
+  const RunResult r = two_nets_at_two_budgets();
   EXPECT_EQ(plain_case_for(r, 2), 0u);
   EXPECT_EQ(plain_case_for(r, 4), 3u);
   EXPECT_EQ(plain_case_for(r, 3), 3u);
@@ -164,7 +164,7 @@ TEST(PairedRatio, PlainCaseOfTheSameNet) {
 }
 
 TEST(Table1, SharesMeansAndPercentiles) {
-  RunResult r = two_nets();
+  RunResult r = two_nets_at_two_budgets();
   // refine: complete times 4, 8, 12, 16 us; node share 3/4 of the total.
   r.cases[2].ops.samples = {op(OpKind::kRefine, 3000, 1000, 100, 200), op(OpKind::kRefine, 6000, 2000, 110, 220)};
   r.cases[5].ops.samples = {op(OpKind::kRefine, 9000, 3000, 120, 240), op(OpKind::kRefine, 12000, 4000, 130, 260),
@@ -197,7 +197,7 @@ TEST(Table1, SharesMeansAndPercentiles) {
 }
 
 TEST(Table1, DivergedCasesContributeNoSamples) {
-  RunResult r = two_nets();
+  RunResult r = two_nets_at_two_budgets();
   r.cases[2].ops.samples = {op(OpKind::kCoarse, 1000, 1000, 10, 20)};
   r.cases[5].ops.samples = {op(OpKind::kCoarse, 900000, 1000, 10, 20)};
   diverge(r.cases[5], 9);
@@ -247,7 +247,7 @@ TEST(StepFit, DegenerateFitIsListedWithoutNumbers) {
 }
 
 TEST(OpFit, OnePointPerNetPooledOverItsCasesAndFlatness) {
-  RunResult r = two_nets();
+  RunResult r = two_nets_at_two_budgets();
   // n0: refine at 100 nodes taking 1 us (two cases pooled); n1: at 300 nodes taking 3 us.
   r.cases[1].ops.samples = {op(OpKind::kRefine, 800, 200, 100, 200)};
   r.cases[2].ops.samples = {op(OpKind::kRefine, 500, 500, 100, 200), op(OpKind::kRefine, 900, 100, 100, 200)};
@@ -274,7 +274,7 @@ TEST(OpFit, OnePointPerNetPooledOverItsCasesAndFlatness) {
 }
 
 TEST(OpFit, ConstantCostIsFlat) {
-  RunResult r = two_nets();
+  RunResult r = two_nets_at_two_budgets();
   r.cases[2].ops.samples = {op(OpKind::kEndRefine, 700, 300, 100, 200)};
   r.cases[5].ops.samples = {op(OpKind::kEndRefine, 600, 400, 400, 800)};
   const OpFit f = op_ms_vs_nodes(r)[1];

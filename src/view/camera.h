@@ -1,7 +1,8 @@
 // Camera: where the spectator stands and what they see — a pinhole camera (position, target, up, vertical field of
 // view, image size in pixels), optionally moving along a scripted path of keyframes. A scene states one (the
-// suite's scene.camera); the BSWDF's view terms (feedback/screen_projection.h, saliency.h) and the fidelity pass's
-// error in pixels see the cloth through it. Plain data and its pose over time; no Bullet.
+// suite's scene.camera); the BSWDF's view terms (feedback/saliency.h) and the fidelity pass's error in pixels
+// (fidelity/screen_error.h) see the cloth through it, both by its projection (view/screen_projection.h). Plain data
+// and its pose over time; no Bullet.
 #pragma once
 
 #include <algorithm>
@@ -11,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "../feedback/keyframe_path.h"
+#include "../view/keyframe_path.h"
 
 namespace tcsb {
 
@@ -28,8 +29,8 @@ enum class CameraPoseProblem {
   kLooksAlongUp,  ///< the viewing direction is parallel to up: the image has no up
 };
 
-/// The one rule for a usable pose, for the suite parser and ScreenProjection alike (inline: the parser's library
-/// does not link this one). Parallel means within 1e-6 of the product of the two lengths.
+/// The one rule for a usable pose, for the suite parser, validate_spectator and ScreenProjection alike. Parallel
+/// means within 1e-6 of the product of the two lengths.
 inline CameraPoseProblem camera_pose_problem(const CameraPose& pose, const std::array<double, 3>& up) {
   const std::array<double, 3> d{pose.target[0] - pose.position[0], pose.target[1] - pose.position[1],
                                 pose.target[2] - pose.position[2]};

@@ -1,6 +1,6 @@
-#include "feedback/camera.h"
+#include "view/camera.h"
 
-#include "feedback/keyframe_path.h"
+#include "view/keyframe_path.h"
 
 #include <sstream>
 #include <stdexcept>

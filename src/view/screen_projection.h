@@ -1,14 +1,14 @@
 // ScreenProjection: the camera at one moment as a map from the world to its image — where a point appears (pixels,
 // origin at the image's top-left corner, y downwards), whether it is in view, and how fast a motion moves across
-// the image. The BSWDF's view terms (saliency.h) and the fidelity pass's error in pixels (fidelity/screen_error.h)
-// both see the cloth through it. Pure geometry: O(1) per point.
+// the image. The one projection of the cloth: the BSWDF's view terms (feedback/saliency.h) and the fidelity pass's
+// error in pixels (fidelity/screen_error.h) both see it through this. Pure geometry: O(1) per point.
 #pragma once
 
 #include <Eigen/Core>
 
 #include <array>
 
-#include "../feedback/camera.h"
+#include "../view/camera.h"
 
 namespace tcsb {
 
@@ -46,6 +46,9 @@ class ScreenProjection {
   double degrees_per_pixel() const { return degrees_per_pixel_; }
   /// Length of the image's diagonal, pixels: the largest displacement two points in view can have.
   double diagonal_px() const;
+  /// How far from `seen_in_view` (a point's image, in view) the point `x` appears, pixels; where `x` is at or behind
+  /// the near plane it has no image, and counts as the image's diagonal.
+  double displacement_px(const Eigen::Vector3d& x, const ScreenPoint& seen_in_view) const;
 
  private:
   Eigen::Vector3d eye_, right_, up_, forward_;

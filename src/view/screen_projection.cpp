@@ -1,4 +1,4 @@
-#include "feedback/screen_projection.h"
+#include "view/screen_projection.h"
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -57,5 +57,10 @@ double ScreenProjection::apparent_size_px(const Eigen::Vector3d& x, double lengt
 }
 
 double ScreenProjection::diagonal_px() const { return std::sqrt(width_ * width_ + height_ * height_); }
+
+double ScreenProjection::displacement_px(const Eigen::Vector3d& x, const ScreenPoint& seen_in_view) const {
+  const ScreenPoint p = project(x);
+  return p.depth >= kNearPlane ? std::hypot(p.x - seen_in_view.x, p.y - seen_in_view.y) : diagonal_px();
+}
 
 }  // namespace tcsb
