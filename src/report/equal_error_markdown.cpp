@@ -163,12 +163,16 @@ std::string HeadlineVerdictFormat::render_native(const ojson& doc) const {
   const ojson* net = headline_net(doc);
   if (!net || at(*net, "missing").is_string()) return line + "no speed-up could be computed.\n";
   const ojson* best = best_grid_row(*net);
-  if (!best) return line + "TC-SB's error is never on the uniform grids' curve: no speed-up against them.\n";
+  if (!best)
+    return line + "at no budget does TC-SB's error fall on the uniform grids' curve (at each, the cheapest grid errs "
+                  "as little or less, or no grid is as accurate): no speed-up against them.\n";
   const ojson& grid = at(*best, "uniform_grid");
   const double s = at(grid, "speedup").get<double>();
   const std::string target = markdown_number(ojson(kHeadlineSpeedup), 2) + "×";
   line += "its largest speed-up against the best uniform grid is " + speedup_text(grid) + ", at " +
           compression_text(at(*best, "compression"));
+  // Read off a curve that is not monotone, the first crossing can start at a point a cheaper one beats: say so.
+  if (at(at(at(*net, "curves"), "monotone"), "uniform_grid") == false) line += " (the grids' curve is not monotone)";
   // Three verdicts on the interval, as every claim here: decided only where the whole interval is on one side.
   const ojson& interval = at(grid, "interval");
   const bool has_interval = interval.is_array() && interval.size() == 2 && interval[0].is_number();

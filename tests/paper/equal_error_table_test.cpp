@@ -7,37 +7,37 @@
 namespace tcsb {
 namespace {
 
-constexpr std::size_t kBlocks = 12;
+constexpr std::size_t kPassBlocks = 12;
 
-FidelityCase timed(FidelityMethod method, double compression, double rms, double ms, int divisor = 1) {
+FidelityCase timed_case(FidelityMethod method, double compression, double rms, double ms, int divisor = 1) {
   FidelityCase c;
   c.net_name = std::string("n");
   c.subject = {method, compression, divisor};
   c.mean_nodes = 1000.0 * compression;
   c.rms_pct = {400, rms, rms, rms};
   // Blocks alternate ±5 % around the time: a median of `ms`, and an interval with some width.
-  for (std::size_t b = 0; b < kBlocks; ++b) c.block_step_ms.push_back(ms * (b % 2 ? 1.05 : 0.95));
+  for (std::size_t b = 0; b < kPassBlocks; ++b) c.block_step_ms.push_back(ms * (b % 2 ? 1.05 : 0.95));
   return c;
 }
 
-FidelityResult pass() {
+FidelityResult pass_with_curves() {
   FidelityResult r;
   FidelityFloors f;
   f.net_name = std::string("n");
   f.noise_rms_pct = {400, 0.01, 0.01, 0.01};
-  f.reference_block_step_ms.assign(kBlocks, 8.0);
+  f.reference_block_step_ms.assign(kPassBlocks, 8.0);
   r.floors = {f};
-  r.cases = {timed(FidelityMethod::kTcsb, 0.3, 5.0, 1.0),
-             timed(FidelityMethod::kTcsb, 1.0, 0.0, 8.0),  // full resolution: on no curve of TC-SB
-             timed(FidelityMethod::kUniform, 0.1, 20.0, 0.5),
-             timed(FidelityMethod::kUniform, 0.3, 10.0, 1.0),
-             timed(FidelityMethod::kUniform, 0.5, 2.5, 4.0),
-             timed(FidelityMethod::kFullResolution, 1.0, 40.0, 2.0, 2)};
+  r.cases = {timed_case(FidelityMethod::kTcsb, 0.3, 5.0, 1.0),
+             timed_case(FidelityMethod::kTcsb, 1.0, 0.0, 8.0),  // full resolution: on no curve of TC-SB
+             timed_case(FidelityMethod::kUniform, 0.1, 20.0, 0.5),
+             timed_case(FidelityMethod::kUniform, 0.3, 10.0, 1.0),
+             timed_case(FidelityMethod::kUniform, 0.5, 2.5, 4.0),
+             timed_case(FidelityMethod::kFullResolution, 1.0, 40.0, 2.0, 2)};
   return r;
 }
 
 TEST(EqualErrorTable, ReadsEachRivalsTimeAtTcsbsErrorOffItsCurve) {
-  const std::vector<EqualErrorNet> nets = equal_error_table(pass());
+  const std::vector<EqualErrorNet> nets = equal_error_table(pass_with_curves());
   ASSERT_EQ(nets.size(), 1u);
   const EqualErrorNet& n = nets[0];
   EXPECT_EQ(n.metric, "rms_pct");
@@ -71,7 +71,7 @@ TEST(EqualErrorTable, ReadsEachRivalsTimeAtTcsbsErrorOffItsCurve) {
 }
 
 TEST(EqualErrorTable, SaysWhichInputIsMissing) {
-  FidelityResult r = pass();
+  FidelityResult r = pass_with_curves();
   std::erase_if(r.cases, [](const FidelityCase& c) { return c.subject.method == FidelityMethod::kUniform; });
   const std::vector<EqualErrorNet> nets = equal_error_table(r);
   ASSERT_EQ(nets.size(), 1u);
@@ -82,7 +82,7 @@ TEST(EqualErrorTable, SaysWhichInputIsMissing) {
 }
 
 TEST(EqualErrorTable, APassWithoutCurvesHasNoTable) {
-  FidelityResult r = pass();
+  FidelityResult r = pass_with_curves();
   std::erase_if(r.cases, [](const FidelityCase& c) { return c.subject.method == FidelityMethod::kFullResolution; });
   EXPECT_TRUE(equal_error_table(r).empty());
 }

@@ -13,26 +13,26 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
-ojson rival(double speedup, double low, double high) {
+ojson interpolated_rival(double speedup, double low, double high) {
   return {{"status", "interpolated"}, {"time_ms", speedup}, {"speedup", speedup}, {"interval", {low, high}}};
 }
 
 /// A run with two nets: the small one with a large speed-up, the large one (the headline's) with `grid` at 30 %.
-ojson run(const ojson& grid) {
+ojson headline_run(const ojson& grid) {
   const ojson row30 = {{"compression", 0.3},   {"N", 300},
                        {"time_ms", 1.5},       {"error", 4.25},
-                       {"uniform_grid", grid}, {"full_resolution", rival(3, 2.5, 3.5)}};
+                       {"uniform_grid", grid}, {"full_resolution", interpolated_rival(3, 2.5, 3.5)}};
   const ojson row75 = {{"compression", 0.75},
                        {"N", 750},
                        {"time_ms", 3.0},
                        {"error", 1.0},
                        {"uniform_grid",
                         {{"status", "not_reached"}, {"time_ms", nullptr}, {"speedup", nullptr}, {"interval", nullptr}}},
-                       {"full_resolution", rival(1, 0.9, 1.1)}};
+                       {"full_resolution", interpolated_rival(1, 0.9, 1.1)}};
   const ojson small = {{"net", "s"},
                        {"metric", "rms_pct"},
                        {"missing", nullptr},
-                       {"rows", {{{"compression", 0.3}, {"uniform_grid", rival(9, 8, 10)}}}}};
+                       {"rows", {{{"compression", 0.3}, {"uniform_grid", interpolated_rival(9, 8, 10)}}}}};
   const ojson large = {{"net", "l"}, {"metric", "p95_px"}, {"missing", nullptr}, {"rows", {row30, row75}}};
   return {{"suite",
            {{"name", "scene"},
@@ -43,10 +43,10 @@ ojson run(const ojson& grid) {
           {"fidelity", {{"equal_error", {{"nets", {small, large}}}}}}};
 }
 
-std::string render(const char* format, const ojson& doc) { return make_format(format)->render_native(doc); }
+std::string render_as(const char* format, const ojson& doc) { return make_format(format)->render_native(doc); }
 
 TEST(HeadlineExport, ARowOfTheLargestNetAtThirtyPercent) {
-  const std::string row = render("markdown-headline", run(rival(1.25, 1.1, 1.4)));
+  const std::string row = render_as("markdown-headline", headline_run(interpolated_rival(1.25, 1.1, 1.4)));
   EXPECT_EQ(
       row,
       "| scene | compliant | viewer, contact | l, p95 px | 1.50 ms, 4.25 | 1.25× (1.10–1.40) | 3.00× (2.50–3.50) | "
@@ -54,23 +54,25 @@ TEST(HeadlineExport, ARowOfTheLargestNetAtThirtyPercent) {
 }
 
 TEST(HeadlineExport, TheVerdictOnTwoTimesIsThreeValued) {
-  EXPECT_NE(render("markdown-verdict", run(rival(2.5, 2.1, 2.9))).find(": reaches 2.0×."), std::string::npos);
-  const std::string short_of = render("markdown-verdict", run(rival(1.25, 1.1, 1.4)));
+  EXPECT_NE(render_as("markdown-verdict", headline_run(interpolated_rival(2.5, 2.1, 2.9))).find(": reaches 2.0×."),
+            std::string::npos);
+  const std::string short_of = render_as("markdown-verdict", headline_run(interpolated_rival(1.25, 1.1, 1.4)));
   EXPECT_NE(short_of.find("short of 2.0× by a factor of 1.60"), std::string::npos) << short_of;
-  EXPECT_NE(render("markdown-verdict", run(rival(2.5, 1.5, 3))).find("undecided"), std::string::npos);
+  EXPECT_NE(render_as("markdown-verdict", headline_run(interpolated_rival(2.5, 1.5, 3))).find("undecided"),
+            std::string::npos);
 }
 
 TEST(HeadlineExport, ANetWithoutCurvesSaysWhatIsMissing) {
-  ojson doc = run(rival(1, 1, 1));
+  ojson doc = headline_run(interpolated_rival(1, 1, 1));
   doc["fidelity"]["equal_error"]["nets"][1]["missing"] = "no uniform grid ran to the end (fidelity.curves.budgets)";
-  EXPECT_NE(render("markdown-headline", doc).find("no speed-up: no uniform grid ran"), std::string::npos);
-  EXPECT_NE(render("markdown-verdict", doc).find("no speed-up could be computed"), std::string::npos);
-  EXPECT_NE(render("markdown-headline", ojson{{"suite", {{"name", "x"}}}}).find("no curves"), std::string::npos);
+  EXPECT_NE(render_as("markdown-headline", doc).find("no speed-up: no uniform grid ran"), std::string::npos);
+  EXPECT_NE(render_as("markdown-verdict", doc).find("no speed-up could be computed"), std::string::npos);
+  EXPECT_NE(render_as("markdown-headline", ojson{{"suite", {{"name", "x"}}}}).find("no curves"), std::string::npos);
 }
 
 TEST(HeadlineExport, TheRunsRenderHasTheSectionOnlyWithCurves) {
   EXPECT_EQ(equal_error_section(ojson{{"fidelity", ojson::object()}}), "");
-  ojson doc = run(rival(1.25, 1.1, 1.4));
+  ojson doc = headline_run(interpolated_rival(1.25, 1.1, 1.4));
   doc["fidelity"]["equal_error"]["definition"] = "d";
   const std::string section = equal_error_section(doc);
   EXPECT_NE(section.find("### Speed-up at equal error"), std::string::npos);
