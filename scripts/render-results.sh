@@ -52,6 +52,7 @@ if [[ ! -x $binary ]]; then
   echo "render-results: no tcsb executable at $binary (build it, or pass its path)" >&2
   exit 2
 fi
+binary=$(realpath "$binary") # the pooled sections run it from their own directory
 
 # The suites whose headline rows the README shows (each under every model it was run with).
 readme_suites=" viewer-corner drape "
@@ -172,6 +173,19 @@ HEAD
         printf '![%s](../results/figures/pareto_%s.png)\n' "$suite" "$suite"
       done
     fi
+    local shaded=()
+    for f in "${runs[@]}"; do
+      suite=$(suite_of "$f")
+      [[ -f $root/results/figures/shaded_$suite.png ]] && shaded+=("$suite")
+    done
+    if ((${#shaded[@]} > 0)); then
+      printf '\n### Through the camera\n\nPer scene with a camera, its last recorded step: full resolution, TC-SB at 30 %% (its\n'
+      printf 'levels coloured) and the uniform grid of its node count, shaded, and each one'"'"'s pixel error against full\n'
+      printf 'resolution (scripts/render-figures.py, from the newest `tcsb frames` of the scene in results/runs/frames/).\n\n'
+      for suite in "${shaded[@]}"; do
+        printf '![%s](../results/figures/shaded_%s.png)\n' "$suite" "$suite"
+      done
+    fi
   fi
   printf '\n## Every kept run\n\n'
   for f in "${runs[@]}"; do
@@ -198,11 +212,11 @@ render_pooled() {
   for flags in "${flag_lines[@]}"; do
     local table status=0 args=()
     read -ra args <<<"$flags"
-    # The verdict is the command's exit code (0 pass, 1 fail, 4 undecided); 2 and 3 mean it could not judge.
+    # The verdict is the command's exit code (0 pass, 1 fail, 4 undecided); any other means it could not judge.
     table=$(cd "$runs_dir/pooled/$d" && "$binary" tax "${runs_in[@]}" "${args[@]}" 2>&1 >/dev/null) || status=$?
-    if ((status == 2 || status == 3)); then
+    if ((status != 0 && status != 1 && status != 4)); then
       echo "$table" >&2
-      return "$status"
+      return $((status == 2 ? 2 : 3))
     fi
     printf '\n```\n$ tcsb tax %s%s\n%s\n```\n' "${runs_in[*]}" "${flags:+ $flags}" "$table"
   done
