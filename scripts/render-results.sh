@@ -117,6 +117,21 @@ headline_rows() {
   done
 }
 
+# A section of the figures PREFIX_SUITE.png that exist for the kept runs' suites: $1 the prefix, $2 the heading, $3
+# the text before the pictures; nothing when there are none.
+figure_section() {
+  local f suite found=()
+  for f in "${runs[@]}"; do
+    suite=$(suite_of "$f")
+    [[ -f $root/results/figures/$1_$suite.png ]] && found+=("$suite")
+  done
+  ((${#found[@]} > 0)) || return 0
+  printf '\n### %s\n\n%s\n\n' "$2" "$3"
+  for suite in "${found[@]}"; do
+    printf '![%s](../results/figures/%s_%s.png)\n' "$suite" "$1" "$suite"
+  done
+}
+
 # The headline page on stdout.
 render_page() {
   cat <<'PREAMBLE'
@@ -161,31 +176,13 @@ HEAD
       grep -q '"equal_error"' "$runs_dir/$f" || continue
       "$binary" export "$runs_dir/$f" --format markdown-verdict || return $?
     done
-    local figures=()
-    for f in "${runs[@]}"; do
-      suite=$(suite_of "$f")
-      [[ -f $root/results/figures/pareto_$suite.png ]] && figures+=("$suite")
-    done
-    if ((${#figures[@]} > 0)); then
-      printf '\n### Error against step time\n\nPer scene, its largest net (log-log): TC-SB across budgets, the uniform\n'
-      printf 'grids, full resolution at fewer passes (scripts/render-figures.py, from the kept run).\n\n'
-      for suite in "${figures[@]}"; do
-        printf '![%s](../results/figures/pareto_%s.png)\n' "$suite" "$suite"
-      done
-    fi
-    local shaded=()
-    for f in "${runs[@]}"; do
-      suite=$(suite_of "$f")
-      [[ -f $root/results/figures/shaded_$suite.png ]] && shaded+=("$suite")
-    done
-    if ((${#shaded[@]} > 0)); then
-      printf '\n### Through the camera\n\nPer scene with a camera, its last recorded step: full resolution, TC-SB at 30 %% (its\n'
-      printf 'levels coloured) and the uniform grid of its node count, shaded, and each one'"'"'s pixel error against full\n'
-      printf 'resolution (scripts/render-figures.py, from the newest `tcsb frames` of the scene in results/runs/frames/).\n\n'
-      for suite in "${shaded[@]}"; do
-        printf '![%s](../results/figures/shaded_%s.png)\n' "$suite" "$suite"
-      done
-    fi
+    figure_section pareto "Error against step time" \
+      "Per scene, its largest net (log-log): TC-SB across budgets, the uniform grids, full resolution at fewer passes
+(scripts/render-figures.py, from the kept run)."
+    figure_section shaded "Through the camera" \
+      "Per scene with a camera, its last recorded step: full resolution, TC-SB at 30 % (its levels coloured) and the
+uniform grid of its node count, shaded, and each one's pixel error against full resolution (scripts/render-figures.py,
+from the newest \`tcsb frames\` of the scene in results/runs/frames/)."
   fi
   printf '\n## Every kept run\n\n'
   for f in "${runs[@]}"; do
