@@ -165,7 +165,9 @@ Camera parse_camera(const Reader& r, const json& j, const std::string& path) {
       const CameraPose& a = c.path[bad->segment].pose;
       const CameraPose& b = c.path[bad->segment + 1].pose;
       const auto point = [](const std::array<double, 3>& v) {
-        return "[" + fmt_number(v[0]) + ", " + fmt_number(v[1]) + ", " + fmt_number(v[2]) + "]";
+        std::string text = "[";  // (appended piece by piece: GCC 12 -Wrestrict false positive on "[" + ...)
+        text += fmt_number(v[0]) + ", " + fmt_number(v[1]) + ", " + fmt_number(v[2]) + "]";
+        return text;
       };
       r.fail(index_path(o.at("path"), bad->segment + 1),
              "on the way from the keyframe before, at time " + fmt_number(bad->time) + " s (position " +
