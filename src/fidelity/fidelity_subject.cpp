@@ -1,5 +1,6 @@
 #include "fidelity/fidelity_subject.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "analysis/fidelity_metrics.h"
@@ -14,13 +15,21 @@
 #include "softbody/plain_softbody.h"
 #include "softbody/tc_softbody.h"
 #include "softbody/vector_conversion.h"
-#include "suite/fidelity_block.h"
 
 namespace tcsb {
 
 namespace {
 
 GridSize grid_of(const Net& net) { return {net.width(), net.height()}; }
+
+/// The solver of the curves' full-resolution body: the suite's link passes a step (its small steps under the compliant
+/// material) divided by `divisor`, at least 1.
+SolverSettings with_passes_divided(const SolverSettings& solver, int divisor) {
+  if (solver.compliant_model()) return with_substeps(solver, std::max(1, solver.compliant.substeps / divisor));
+  SolverSettings divided = solver;
+  divided.piterations = std::max(1, solver.piterations / divisor);
+  return divided;
+}
 
 std::string grid_label(const Net& net) { return std::to_string(net.width()) + "x" + std::to_string(net.height()); }
 
@@ -236,15 +245,9 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
     }
     case FidelityMethod::kStock:  // a uniform grid of every node: the plain body, stepped by Bullet itself
       return std::make_unique<UniformSubject>(world, stock_bullet(suite.solver), std::move(net), budget);
-    case FidelityMethod::kFullResolution: {
-      const int passes = divided_solver_count(suite.solver, spec.solver_divisor);
-      SolverSettings solver = suite.solver;
-      if (solver.compliant_model())
-        solver = with_substeps(solver, passes);
-      else
-        solver.piterations = passes;
-      return std::make_unique<UniformSubject>(world, solver, std::move(net), budget);
-    }
+    case FidelityMethod::kFullResolution:
+      return std::make_unique<UniformSubject>(world, with_passes_divided(suite.solver, spec.solver_divisor),
+                                              std::move(net), budget);
     case FidelityMethod::kSwitch:
       return std::make_unique<SwitchSubject>(world, suite, std::move(net), budget, pace, fallback_switch_step);
     case FidelityMethod::kTcsb:

@@ -1,7 +1,5 @@
 #include "suite/fidelity_block.h"
 
-#include <algorithm>
-
 namespace tcsb {
 
 using namespace suite_fields;
@@ -38,11 +36,6 @@ FidelityCurves parse_curves(const Reader& r, const json& j, const std::string& p
 }
 
 }  // namespace
-
-int divided_solver_count(const SolverSettings& solver, int divisor) {
-  const int passes = solver.compliant_model() ? solver.compliant.substeps : solver.piterations;
-  return std::max(1, passes / std::max(1, divisor));
-}
 
 void parse_fidelity(const Reader& r, const Object& root, Suite& s) {
   const json* j = root.find("fidelity");

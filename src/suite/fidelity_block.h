@@ -10,8 +10,4 @@ namespace tcsb {
 /// Reads root's "fidelity" (absent: no fidelity pass) into s.fidelity. Throws InputError naming the field.
 void parse_fidelity(const suite_fields::Reader& r, const suite_fields::Object& root, Suite& s);
 
-/// The curves' full-resolution bodies: the suite's link passes a step (its small steps under the compliant
-/// material) divided by `divisor`, at least 1.
-int divided_solver_count(const SolverSettings& solver, int divisor);
-
 }  // namespace tcsb
