@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "base/case_pairing.h"
 #include "report/markdown_table.h"
 
 namespace tcsb {
@@ -50,7 +51,7 @@ const ojson* headline_net(const ojson& doc) {
 
 const ojson* row_at(const ojson& net, double compression) {
   for (const ojson& row : at(net, "rows"))
-    if (at(row, "compression").is_number() && std::abs(at(row, "compression").get<double>() - compression) < 1e-9)
+    if (at(row, "compression").is_number() && same_compression(at(row, "compression").get<double>(), compression))
       return &row;
   return nullptr;
 }
