@@ -21,6 +21,7 @@
 #include "softbody/divergence.h"
 #include "softbody/plain_softbody.h"
 #include "suite/case_plan.h"
+#include "view/depth_buffer.h"
 
 namespace tcsb {
 
@@ -53,6 +54,7 @@ struct ReferenceBlock {
   std::size_t nodes = 0;
   std::vector<std::array<float, 3>> positions;  // frame f: [f * nodes, (f + 1) * nodes)
   std::vector<float> saliency;                  // same layout
+  std::vector<std::uint8_t> seen;               // same layout, when the camera models occlusion: the points it sees
   std::vector<double> energy;                   // per frame
 
   void frame(int step, std::vector<Eigen::Vector3d>& x) const {
@@ -65,6 +67,11 @@ struct ReferenceBlock {
   }
   std::span<const float> weights(int step) const {
     return {saliency.data() + static_cast<std::size_t>(step - first_step) * nodes, nodes};
+  }
+  /// Which points the spectator sees at `step`; empty (every point in view counts) without occlusion.
+  std::span<const std::uint8_t> seen_at(int step) const {
+    if (seen.empty()) return {};
+    return {seen.data() + static_cast<std::size_t>(step - first_step) * nodes, nodes};
   }
 };
 
@@ -89,6 +96,8 @@ class Reference {
     block.positions.resize(frames * n);
     block.saliency.resize(frames * n);
     block.energy.assign(frames, 0.0);
+    const bool occlusion = suite_.scene.camera && suite_.scene.camera->occlusion_cell_px > 0;
+    block.seen.resize(occlusion ? frames * n : 0);
     const std::size_t timed_before = step_ms.size();
     for (int s = first; s < last; ++s) {
       const StepClock::time_point t0 = StepClock::now();
@@ -118,6 +127,7 @@ class Reference {
                     contact ? &contacts_ : nullptr);
       const std::vector<float> saliency = compute_saliency(snapshot_, suite_.feedback, view ? &*view : nullptr);
       std::copy(saliency.begin(), saliency.end(), block.saliency.begin() + static_cast<std::ptrdiff_t>(f * n));
+      if (occlusion) see_through_camera(s, f);
     }
     add_block_mean(step_ms, timed_before, block_step_ms);
     return true;
@@ -131,6 +141,19 @@ class Reference {
   std::string diverged_reason;
 
  private:
+  /// Records which points the camera sees at the end of step `step` (frame f of the block): those its depth buffer
+  /// of the reference's surface does not hide, at a tolerance of one link's rest length (view/depth_buffer.h: a
+  /// surface seen edge-on must not hide itself; folds closer than a link count as one layer).
+  void see_through_camera(int step, std::size_t f) {
+    const Camera& camera = *suite_.scene.camera;
+    const ScreenProjection view = *camera_view(suite_, step);
+    if (!depth_) depth_.emplace(view, camera.occlusion_cell_px);
+    const NetSpec& spec = net_->spec();
+    const double link = std::max(spec.size_x / std::max(1, spec.width - 1), spec.size_z / std::max(1, spec.height - 1));
+    visible_grid_points(view, x_, net_->width(), net_->height(), link, *depth_, seen_);
+    std::copy(seen_.begin(), seen_.end(), block.seen.begin() + static_cast<std::ptrdiff_t>(f * block.nodes));
+  }
+
   const Suite& suite_;
   std::shared_ptr<const Net> net_;
   SceneWorld world_;
@@ -140,6 +163,8 @@ class Reference {
   CutSnapshot snapshot_;
   std::vector<TreeId> contacts_;
   std::vector<Eigen::Vector3d> x_, v_;
+  std::optional<DepthBuffer> depth_;  // the camera's image is one size throughout: one buffer, cleared each step
+  std::vector<std::uint8_t> seen_;
 };
 
 /// One subject on one net: its body and the per-step series of its metrics.
@@ -208,7 +233,7 @@ class Track {
       max_.push_back(to_pct * e.max);
       weighted_.push_back(to_pct * e.weighted_rms);
       if (const std::optional<ScreenProjection> view = camera_view(suite_, s))
-        screen_.add(screen_error(*view, surface_, reference_x_, scratch_));
+        screen_.add(screen_error(*view, surface_, reference_x_, reference.seen_at(s), scratch_));
       const double drift = energy_drift_pct(body_->energy(suite_.world.gravity),
                                             reference.energy[static_cast<std::size_t>(s - first)], reference_energy0);
       if (std::isfinite(drift)) drift_.push_back(drift);  // undefined only for an initial energy of 0 (net at y = 0)
@@ -305,7 +330,7 @@ class FloorTrack {
         copy_positions(*body_, x_);
         noise_.push_back(to_pct * surface_error(x_, reference_x_).rms);
         if (const std::optional<ScreenProjection> view = camera_view(suite_, s))
-          noise_screen_.add(screen_error(*view, x_, reference_x_, scratch_));
+          noise_screen_.add(screen_error(*view, x_, reference_x_, reference.seen_at(s), scratch_));
       }
       for (std::size_t k = 0; k < grids_.size(); ++k) {
         resample_through(fine, reference_x_, grids_[k], coarse_, x_);

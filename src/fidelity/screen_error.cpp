@@ -7,10 +7,12 @@
 namespace tcsb {
 
 ScreenError screen_error(const ScreenProjection& view, std::span<const Eigen::Vector3d> subject,
-                         std::span<const Eigen::Vector3d> reference, std::vector<double>& scratch) {
+                         std::span<const Eigen::Vector3d> reference, std::span<const std::uint8_t> seen,
+                         std::vector<double>& scratch) {
   scratch.clear();
   const std::size_t n = std::min(subject.size(), reference.size());
   for (std::size_t i = 0; i < n; ++i) {
+    if (!seen.empty() && !seen[i]) continue;
     const ScreenPoint r = view.project(reference[i]);
     if (!r.in_view) continue;
     scratch.push_back(view.displacement_px(subject[i], r));

@@ -128,6 +128,9 @@ ojson suite_json(const Suite& s) {
     if (const std::optional<Camera>& c = s.scene.camera)
       out["scene"]["camera"] = {
           {"fov_deg", json_number(c->fov_deg)}, {"image", {c->width_px, c->height_px}}, {"keyframes", c->path.size()}};
+    // Only when on, so results written before the setting read as before.
+    if (s.scene.camera && s.scene.camera->occlusion_cell_px > 0)
+      out["scene"]["camera"]["occlusion_cell_px"] = s.scene.camera->occlusion_cell_px;
     if (const std::optional<Wind>& w = s.scene.wind)
       out["scene"]["wind"] = {{"model", aero_model_name(w->model)},
                               {"velocity",

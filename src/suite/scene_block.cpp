@@ -136,7 +136,7 @@ CameraPose parse_camera_pose(const Reader& r, const Object& o, const std::array<
 }
 
 Camera parse_camera(const Reader& r, const json& j, const std::string& path) {
-  const Object o(r, j, path, {"position", "target", "up", "fov_deg", "image", "path"});
+  const Object o(r, j, path, {"position", "target", "up", "fov_deg", "image", "path", "occlusion_cell_px"});
   Camera c;
   c.up = read_vector(r, o, "up", kSceneCoordinate, c.up);
   if (c.up == std::array<double, 3>{}) r.fail(o.at("up"), "must not be the zero vector");
@@ -147,6 +147,8 @@ Camera parse_camera(const Reader& r, const json& j, const std::string& path) {
     c.width_px = static_cast<int>(r.integer((*image)[0], index_path(o.at("image"), 0), 16, 16384));
     c.height_px = static_cast<int>(r.integer((*image)[1], index_path(o.at("image"), 1), 16, 16384));
   }
+  // At most 64 pixels a cell: coarser, a silhouette's misjudged band would be most of a cloth far away.
+  o.read("occlusion_cell_px", c.occlusion_cell_px, 1, 64);
   if (const json* keys = o.find("path")) {
     // A path gives every pose; a fixed position or target beside it would be silently ignored.
     for (const char* fixed : {"position", "target"})

@@ -111,6 +111,9 @@ struct Camera {
   /// Keyframes, times strictly ascending; empty: the camera stands at `pose`. Between keyframes position and target
   /// move linearly; before the first and after the last the camera holds that keyframe's pose.
   std::vector<CameraKey> path;
+  /// Occlusion: 0, not modelled (every point in view counts as seen); else points hidden behind the surface count as
+  /// unseen, decided on a depth buffer of cells this many pixels wide (view/depth_buffer.h states what that costs).
+  int occlusion_cell_px = 0;
 
   /// The pose at `time` seconds of simulated time.
   CameraPose pose_at(double time) const;

@@ -46,6 +46,9 @@ class ScreenProjection {
   double degrees_per_pixel() const { return degrees_per_pixel_; }
   /// Length of the image's diagonal, pixels: the largest displacement two points in view can have.
   double diagonal_px() const;
+  /// The image's size, pixels.
+  double width_px() const { return width_; }
+  double height_px() const { return height_; }
   /// How far from `seen_in_view` (a point's image, in view) the point `x` appears, pixels; where `x` is at or behind
   /// the near plane it has no image, and counts as the image's diagonal.
   double displacement_px(const Eigen::Vector3d& x, const ScreenPoint& seen_in_view) const;

@@ -182,5 +182,35 @@ TEST(FidelityPass, ACompliantSuiteIsMeasuredAgainstItsConvergedReference) {
   EXPECT_EQ(full.rms_pct.max > 0.0, r.substeps != 4);  // its own small steps' error, unless they converged already
 }
 
+/// The points of the reference the camera counts at full resolution (TC-SB without compression), mean over steps.
+double points_counted(Suite s, int occlusion_cell_px) {
+  Camera c;
+  c.pose = {{0, 5.5, 14}, {0, 7, 0}};  // below the cloth's corners, looking up at it from beside the net
+  c.fov_deg = 60;
+  c.width_px = 320;
+  c.height_px = 240;
+  c.occlusion_cell_px = occlusion_cell_px;
+  s.scene.camera = c;
+  s.fidelity.ablations = false;
+  s.fidelity.pareto_targets.clear();
+  const RunResult run = run_suite(s, Context{});
+  const FidelityCase& full = find(*run.fidelity, FidelityMethod::kTcsb, 1.0);
+  EXPECT_TRUE(full.screen);
+  return full.screen ? full.screen->points_in_view : 0.0;
+}
+
+TEST(FidelityPass, WithOcclusionThePixelErrorCountsOnlyThePointsTheCameraSees) {
+  // Flat (no gravity), the sheet seen obliquely hides none of itself: the tolerance of a link's length keeps a surface
+  // from hiding its own points. Sagging between its pinned corners, it is a dome seen from below: its far side hides
+  // behind its near side.
+  const double flat = points_counted(tiny_suite(0.0), 0);
+  EXPECT_GT(flat, 0.0);
+  EXPECT_EQ(points_counted(tiny_suite(0.0), 1), flat);
+  const double sagging = points_counted(tiny_suite(9.81), 0);
+  const double seen = points_counted(tiny_suite(9.81), 1);
+  EXPECT_LT(seen, 0.9 * sagging);
+  EXPECT_GT(seen, 0.2 * sagging);
+}
+
 }  // namespace
 }  // namespace tcsb

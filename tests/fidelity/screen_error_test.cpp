@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "../view/test_camera.h"
 
@@ -16,7 +18,7 @@ ScreenProjection view() { return {camera_looking_at_origin(), 0.0}; }
 TEST(ScreenError, IdenticalSurfacesHaveNone) {
   const std::vector<Eigen::Vector3d> x{{0, 0, 0}, {1, 1, 0}, {-2, 0, 1}};
   std::vector<double> scratch;
-  const ScreenError e = screen_error(view(), x, x, scratch);
+  const ScreenError e = screen_error(view(), x, x, {}, scratch);
   EXPECT_EQ(e.in_view, 3u);
   EXPECT_EQ(e.mean, 0.0);
   EXPECT_EQ(e.max, 0.0);
@@ -27,7 +29,7 @@ TEST(ScreenError, CountsThePointsTheReferenceShowsInPixels) {
   // The first moves 1 m sideways (5 px), the second along the line of sight (0 px), the third is out of view.
   const std::vector<Eigen::Vector3d> subject{{1, 0, 0}, {1, 0, -0.0}, {0, 0, 0}};
   std::vector<double> scratch;
-  const ScreenError e = screen_error(view(), subject, reference, scratch);
+  const ScreenError e = screen_error(view(), subject, reference, {}, scratch);
   EXPECT_EQ(e.in_view, 2u);
   EXPECT_NEAR(e.mean, 2.5, 1e-12);
   EXPECT_NEAR(e.max, 5.0, 1e-12);
@@ -37,7 +39,16 @@ TEST(ScreenError, CountsThePointsTheReferenceShowsInPixels) {
 TEST(ScreenError, APointBehindTheCameraCountsAsTheDiagonal) {
   const std::vector<Eigen::Vector3d> reference{{0, 0, 0}}, subject{{0, 0, 20}};
   std::vector<double> scratch;
-  EXPECT_DOUBLE_EQ(screen_error(view(), subject, reference, scratch).max, std::hypot(200.0, 100.0));
+  EXPECT_DOUBLE_EQ(screen_error(view(), subject, reference, {}, scratch).max, std::hypot(200.0, 100.0));
+}
+
+TEST(ScreenError, APointTheSpectatorCannotSeeDoesNotCount) {
+  const std::vector<Eigen::Vector3d> reference{{0, 0, 0}, {1, 0, 0}}, subject{{1, 0, 0}, {3, 0, 0}};
+  const std::vector<std::uint8_t> seen{1, 0};  // the second is hidden: its 10 pixels are not seen
+  std::vector<double> scratch;
+  const ScreenError e = screen_error(view(), subject, reference, seen, scratch);
+  EXPECT_EQ(e.in_view, 1u);
+  EXPECT_NEAR(e.max, 5.0, 1e-12);
 }
 
 TEST(ScreenErrorSeries, SummarisesTheStepsThatShowSomething) {

@@ -90,7 +90,7 @@ BodyError measure(const Suite& suite, const Net& net, const ReferenceRun& refere
     if (s < suite.warmup_steps) continue;
     reconstruct(surface);
     const std::vector<Eigen::Vector3d>& truth = reference.frames[static_cast<std::size_t>(s - suite.warmup_steps)];
-    series.add(screen_error(view_at(suite, s), surface, truth, scratch));
+    series.add(screen_error(view_at(suite, s), surface, truth, {}, scratch));
     rms += surface_error(surface, truth).rms;
   }
   return {0, series.finish().p95_px.mean, 100 * rms / suite.steps / net.extent()};

@@ -598,6 +598,7 @@ TEST(SuiteParse, CameraAndViewTerms) {
   EXPECT_DOUBLE_EQ(s.scene.camera->fov_deg, 50.0);
   EXPECT_EQ(s.scene.camera->width_px, 640);
   EXPECT_EQ(s.scene.camera->height_px, 480);
+  EXPECT_EQ(s.scene.camera->occlusion_cell_px, 0) << "occlusion is off unless a suite asks";
   EXPECT_TRUE(s.feedback.view);
   EXPECT_DOUBLE_EQ(s.feedback.view_motion_scale, 10.0);
   EXPECT_DOUBLE_EQ(s.feedback.view_detail_px, 4.0);
@@ -613,6 +614,8 @@ TEST(SuiteParse, CameraAndViewTerms) {
   const Suite moving = parse_suite_text(j.dump(), "path.json");
   ASSERT_EQ(moving.scene.camera->path.size(), 2u);
   EXPECT_DOUBLE_EQ(moving.scene.camera->path[1].pose.position[0], 4.0);
+  j["scene"]["camera"]["occlusion_cell_px"] = 4;
+  EXPECT_EQ(parse_suite_text(j.dump(), "occlusion.json").scene.camera->occlusion_cell_px, 4);
 }
 
 TEST(SuiteReject, CameraFields) {
@@ -627,6 +630,10 @@ TEST(SuiteReject, CameraFields) {
   rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "image": [1280]})"), "scene.camera.image");
   rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "image": [1280, 8]})"), "scene.camera.image[1]");
   rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "zoom": 2})"), "scene.camera.zoom");
+  rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "occlusion_cell_px": 0})"),
+                "scene.camera.occlusion_cell_px");
+  rejected_edit(camera(R"({"position": [0, 0, 5], "target": [0, 0, 0], "occlusion_cell_px": 2.5})"),
+                "scene.camera.occlusion_cell_px");
   rejected_edit(camera(R"({"position": [0, 0, 5], "path": [{"time": 0, "position": [0, 0, 5], "target": [0, 0, 0]}]})"),
                 "scene.camera.position");
   rejected_edit(camera(R"({"path": [{"time": 1, "position": [0, 0, 5], "target": [0, 0, 0]},

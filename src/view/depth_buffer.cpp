@@ -1,0 +1,82 @@
+#include "view/depth_buffer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace tcsb {
+
+namespace {
+constexpr float kEmptyCell = std::numeric_limits<float>::infinity();
+}  // namespace
+
+DepthBuffer::DepthBuffer(const ScreenProjection& view, int cell_px) : cell_px_(cell_px) {
+  if (cell_px < 1) throw std::invalid_argument("DepthBuffer: cell_px must be at least 1");
+  columns_ = std::max(1, static_cast<int>(std::ceil(view.width_px() / cell_px)));
+  rows_ = std::max(1, static_cast<int>(std::ceil(view.height_px() / cell_px)));
+  nearest_.assign(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_), kEmptyCell);
+}
+
+void DepthBuffer::clear() { std::fill(nearest_.begin(), nearest_.end(), kEmptyCell); }
+
+void DepthBuffer::add_triangle(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c) {
+  if (a.depth < kNearPlane || b.depth < kNearPlane || c.depth < kNearPlane) return;
+  // Twice the signed area; a triangle seen edge-on covers no cell centre.
+  const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  if (!(std::abs(area) > 0)) return;
+  const double cell = cell_px_;
+  // Cells whose centre (i + 0.5) x cell may lie inside the triangle's bounding box.
+  const auto first = [cell](double lo) { return static_cast<int>(std::ceil(lo / cell - 0.5)); };
+  const auto last = [cell](double hi) { return static_cast<int>(std::floor(hi / cell - 0.5)); };
+  const int i0 = std::max(0, first(std::min({a.x, b.x, c.x})));
+  const int i1 = std::min(columns_ - 1, last(std::max({a.x, b.x, c.x})));
+  const int j0 = std::max(0, first(std::min({a.y, b.y, c.y})));
+  const int j1 = std::min(rows_ - 1, last(std::max({a.y, b.y, c.y})));
+  const double inv_a = 1.0 / a.depth, inv_b = 1.0 / b.depth, inv_c = 1.0 / c.depth;
+  for (int j = j0; j <= j1; ++j) {
+    const double y = (j + 0.5) * cell;
+    for (int i = i0; i <= i1; ++i) {
+      const double x = (i + 0.5) * cell;
+      // Barycentric weights by the edge functions, positive inside whichever way round the corners run.
+      const double wa = ((b.x - x) * (c.y - y) - (b.y - y) * (c.x - x)) / area;
+      const double wb = ((c.x - x) * (a.y - y) - (c.y - y) * (a.x - x)) / area;
+      const double wc = 1.0 - wa - wb;
+      if (wa < 0 || wb < 0 || wc < 0) continue;
+      const float depth = static_cast<float>(1.0 / (wa * inv_a + wb * inv_b + wc * inv_c));
+      float& nearest =
+          nearest_[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(i)];
+      nearest = std::min(nearest, depth);
+    }
+  }
+}
+
+bool DepthBuffer::visible(const ScreenPoint& p, double tolerance) const {
+  if (!p.in_view) return false;
+  // An image on the right or bottom edge belongs to the last cell.
+  const int i = std::min(columns_ - 1, static_cast<int>(p.x / cell_px_));
+  const int j = std::min(rows_ - 1, static_cast<int>(p.y / cell_px_));
+  return p.depth <=
+         static_cast<double>(
+             nearest_[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(i)]) +
+             tolerance;
+}
+
+void visible_grid_points(const ScreenProjection& view, std::span<const Eigen::Vector3d> points, int width, int height,
+                         double tolerance, DepthBuffer& buffer, std::vector<std::uint8_t>& visible) {
+  if (width < 1 || height < 1 || points.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
+    throw std::invalid_argument("visible_grid_points: points do not form a width x height grid");
+  std::vector<ScreenPoint> image(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) image[k] = view.project(points[k]);
+  buffer.clear();
+  const auto at = [width](int x, int y) { return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + x; };
+  for (int y = 0; y + 1 < height; ++y)
+    for (int x = 0; x + 1 < width; ++x) {
+      buffer.add_triangle(image[at(x, y)], image[at(x + 1, y)], image[at(x + 1, y + 1)]);
+      buffer.add_triangle(image[at(x, y)], image[at(x + 1, y + 1)], image[at(x, y + 1)]);
+    }
+  visible.resize(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) visible[k] = buffer.visible(image[k], tolerance) ? 1 : 0;
+}
+
+}  // namespace tcsb
