@@ -13,6 +13,8 @@ void Controller::set_spectator(const Spectator&) {
   throw std::logic_error("Controller::set_spectator: this controller has no view terms");
 }
 
+bool Controller::budget_demand(BudgetDemand&) const { return false; }
+
 std::unique_ptr<Controller> make_controller(const FeedbackSettings& settings, int target_nodes, std::uint64_t seed,
                                             const std::optional<Spectator>& spectator) {
   check_feedback_settings(settings);  // evaluation_interval 0 was a SIGFPE at the first step

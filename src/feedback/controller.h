@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "../feedback/feedback_settings.h"
+#include "../feedback/world_budget.h"
 #include "../softbody/tc_softbody.h"
 #include "../view/camera.h"
 
@@ -44,6 +45,11 @@ class Controller {
   /// outside (0, 180), an image of no pixels), std::logic_error when the controller has no view terms (this default,
   /// and a saliency controller made without FeedbackSettings::view).
   virtual void set_spectator(const Spectator& spectator);
+  /// The priorities of the candidates the next before_step will choose from (BudgetDemand's refine and coarse; the
+  /// caller fills in the body's node counts), for a world budget to weigh this body against others
+  /// (feedback/world_budget.h). Call between after_step and before_step. False when the controller ranks nothing
+  /// this boundary (this default, and a controller between evaluations); `out` is then left as it was.
+  virtual bool budget_demand(BudgetDemand& out) const;
 };
 
 /// The controller a suite asks for, holding the body near `target_nodes`. `seed` makes random choices repeatable.

@@ -64,6 +64,15 @@ void SaliencyController::evaluate() {
   evaluation_ms_ = ms_since(t0);
 }
 
+bool SaliencyController::budget_demand(BudgetDemand& out) const {
+  if (!evaluation_ready_ || job_running_ || evaluation_.snapshot_step != boundary_ - 1) return false;
+  out.refine.clear();
+  out.coarse.clear();
+  for (const Candidate& c : evaluation_.refine) out.refine.push_back(c.priority);
+  for (const Candidate& c : evaluation_.coarse) out.coarse.push_back(c.priority);
+  return true;
+}
+
 void SaliencyController::set_budget(int nodes) {
   if (nodes < 1) throw std::invalid_argument("set_budget: the node budget must be >= 1");
   pending_budget_ = nodes;

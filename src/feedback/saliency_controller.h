@@ -41,6 +41,8 @@ class SaliencyController final : public Controller {
   void set_budget(int nodes) override;
   /// Effective at the next evaluation (taken in before_step, after any worker joined). Requires settings.view.
   void set_spectator(const Spectator& spectator) override;
+  /// The evaluation taken at the last boundary, once after_step has joined it.
+  bool budget_demand(BudgetDemand& out) const override;
 
   /// The budget in force now: the node budget, lowered by the time budget when one is set.
   int budget() const;

@@ -170,11 +170,21 @@ void TreeCutDriver::body_destroyed(TcSoftBody& body) {
   entries_.erase(it);
 }
 
+void TreeCutDriver::set_world_budget(std::optional<int> nodes, double hysteresis) {
+  if (nodes && *nodes < 1) throw std::invalid_argument("TreeCutDriver::set_world_budget: the budget must be >= 1");
+  world_budget_ = nodes;
+  world_hysteresis_ = hysteresis;
+}
+
 void TreeCutDriver::pre_tick() {
   for (const auto& e : entries_) e->seen = false;
   btSoftBodyArray& bodies = world_.getSoftBodyArray();
   // Every soft body first: one built with another world info crashes in Bullet's step, so none is operated on.
   for (int i = 0; i < bodies.size(); ++i) check_world_info(*bodies[i], true);
+  // First every body's controller sees the last step, so a world budget weighs all of their rankings; then each
+  // body's blends move on and its operations begin. (The bodies' cuts do not touch each other: the order between
+  // bodies changes nothing else.)
+  ticking_.clear();
   for (int i = 0; i < bodies.size(); ++i) {
     auto* body = dynamic_cast<TcSoftBody*>(bodies[i]);
     if (body == nullptr) continue;
@@ -186,11 +196,20 @@ void TreeCutDriver::pre_tick() {
       else if (e.ticks > 0)
         e.controller->resume();  // back after a while out of the world (or with a new controller: a no-op)
     }
-    body->advance_blends();
-    if (e.controller != nullptr) e.controller->before_step(*body);
-    body->refresh_faces();  // a stock world's solver does not: the faces must follow the cut before predictMotion
-    e.stepped = true;
-    ++e.ticks;
+    ticking_.push_back(&e);
+  }
+  if (world_budget_) {
+    members_.clear();
+    for (Entry* e : ticking_)
+      if (e->controller != nullptr) members_.push_back({e->body, e->controller});
+    share_world_budget(members_, *world_budget_, world_hysteresis_);
+  }
+  for (Entry* e : ticking_) {
+    e->body->advance_blends();
+    if (e->controller != nullptr) e->controller->before_step(*e->body);
+    e->body->refresh_faces();  // a stock world's solver does not: the faces must follow the cut before predictMotion
+    e->stepped = true;
+    ++e->ticks;
   }
   // A body that left the world since the last tick: its controller lets its workers sleep, and will not see a step
   // the body did not take.

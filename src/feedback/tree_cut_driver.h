@@ -28,9 +28,11 @@
 #include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "../feedback/controller.h"
+#include "../feedback/world_budget.h"
 #include "../softbody/tc_softbody.h"
 
 namespace tcsb {
@@ -72,6 +74,12 @@ class TreeCutDriver final : private TcSoftBody::LifetimeListener {
   /// Throw std::invalid_argument when the driver has no controller for the body (and what the controller throws).
   void set_budget(const TcSoftBody& body, int nodes);
   void set_spectator(const TcSoftBody& body, const Spectator& spectator);
+  /// One node budget for all the bodies the driver has a controller for (feedback/world_budget.h: spent where their
+  /// controllers rank detail highest, the bodies' shares re-split before every internal step, each body's
+  /// controller then holding its share as its budget); std::nullopt, the default: each body keeps the budget its
+  /// controller has. `hysteresis`: how much a block's priority must beat another body's to take its nodes (as
+  /// FeedbackSettings::threshold within a body). Throws std::invalid_argument when nodes < 1.
+  void set_world_budget(std::optional<int> nodes, double hysteresis = 0.05);
 
   /// What the callback does before every internal step, for every TC-SB body in the world: the controller sees the
   /// last step (after_step), the blends move on and finished operations end (advance_blends), new operations begin
@@ -108,6 +116,10 @@ class TreeCutDriver final : private TcSoftBody::LifetimeListener {
   Install install_;
   std::vector<std::unique_ptr<Entry>> entries_;
   long long ticks_ = 0;
+  std::optional<int> world_budget_;
+  double world_hysteresis_ = 0.05;
+  std::vector<Entry*> ticking_;             // this tick's bodies, in the world's order
+  std::vector<WorldBudgetMember> members_;  // of them, those with a controller, for the world budget
 };
 
 }  // namespace tcsb

@@ -410,5 +410,42 @@ TEST(TreeCutDriver, TheCameraMovesWhileTheWorldRuns) {
   app.world.removeRigidBody(&ground);
 }
 
+TEST(TreeCutDriver, AWorldBudgetGoesToTheBodyTheCameraSeesClosest) {
+  // Two sheets on the ground, one under a close-up camera, one 60 m behind it; one budget of 200 nodes for both
+  // (each alone would take 200 of its 289): the near sheet gets most of it (153 against 32 when written: the far
+  // sheet, 15 pixels wide, keeps blocks about view_detail_px wide).
+  AppWorld app;
+  btBoxShape ground_shape(btVector3(80, 0.5f, 80));
+  btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &ground_shape));
+  ground.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, -0.5f, 0)));
+  app.world.addRigidBody(&ground);
+  auto near = sheet_body(app, 17);
+  auto far = sheet_body(app, 17);
+  far->translate(btVector3(0, 0, -60));
+  app.world.addSoftBody(near.get());
+  app.world.addSoftBody(far.get());
+  FeedbackSettings feedback;
+  feedback.view = true;
+  Spectator camera;
+  camera.camera.pose = {{0, 1.5, 4}, {0, 0, -5}};
+  camera.camera.fov_deg = 50;
+  camera.camera.width_px = 640;
+  camera.camera.height_px = 480;
+  TreeCutDriver driver(app.world);
+  driver.drive(*near, make_controller(feedback, 200, 1, camera));
+  driver.drive(*far, make_controller(feedback, 200, 2, camera));
+  driver.set_world_budget(200);
+  for (int f = 0; f < 60; ++f) frame(app);
+  EXPECT_LE(near->committed_count() + far->committed_count(), 200);
+  EXPECT_GT(near->committed_count(), 3 * far->committed_count());
+  EXPECT_TRUE(near->validate().ok()) << near->validate().summary();
+  EXPECT_TRUE(far->validate().ok()) << far->validate().summary();
+  driver.set_world_budget(std::nullopt);  // back to each body's own: its last share
+  EXPECT_THROW(driver.set_world_budget(0), std::invalid_argument);
+  app.world.removeSoftBody(near.get());
+  app.world.removeSoftBody(far.get());
+  app.world.removeRigidBody(&ground);
+}
+
 }  // namespace
 }  // namespace tcsb
