@@ -178,7 +178,7 @@ constexpr SuiteSetting kSettings[] = {
     {"feedback.pin_level_pull", setting_member<&Suite::feedback, &FeedbackSettings::pin_level_pull>(),
      number_range(kNonNegative), 24, false, Written::kUnlessDefault},
     {"feedback.contact_saliency", setting_member<&Suite::feedback, &FeedbackSettings::contact_saliency>(),
-     number_range(kUnit), kNoAxis, false, Written::kUnlessDefault},
+     number_range(kUnit), 34, false, Written::kUnlessDefault},
     {"feedback.view", setting_member<&Suite::feedback, &FeedbackSettings::view>(), kUnbounded, 25, false,
      Written::kUnlessDefault},
     {"feedback.view_motion_scale", setting_member<&Suite::feedback, &FeedbackSettings::view_motion_scale>(),

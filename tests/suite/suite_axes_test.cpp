@@ -188,7 +188,7 @@ TEST(SuiteAxes, TheFidelityPassIsNotCombinedWithAxes) {
 TEST(SuiteAxes, EverySettingThatCanBeAnAxisIsReadThroughTheAxisTable) {
   // Each axis-able path is a real setting whose reader accepts a valid value.
   const std::vector<std::string> paths = axis_setting_paths();
-  EXPECT_EQ(paths.size(), 33u);
+  EXPECT_EQ(paths.size(), 34u);
   for (const std::string& path : paths) {
     json value;
     if (path == "tcsb.placement")
@@ -202,7 +202,7 @@ TEST(SuiteAxes, EverySettingThatCanBeAnAxisIsReadThroughTheAxisTable) {
              path == "feedback.view")  // on, the view terms need a camera
       value = false;
     else if (path == "solver.damping" || path == "solver.stiffness" || path == "dt" ||
-             path == "feedback.view_static_share")
+             path == "feedback.view_static_share" || path == "feedback.contact_saliency")
       value = 0.5;
     else
       value = 3;
