@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "../suite/small_suite_json.h"
 #include "report/json_report.h"
 #include "suite/suite_axes.h"
 
@@ -14,24 +15,17 @@ namespace {
 
 using json = nlohmann::json;
 
-json contact_suite() {
-  return json::parse(R"({
-    "name": "contact", "nets": [{"name": "n9", "width": 9, "height": 9}], "methods": ["plain", "tcsb"],
-    "compression": [1.0, 0.5], "dt": 0.02, "steps": 20, "warmup_steps": 5, "repetitions": 2, "seed": 7,
-    "solver": {"piterations": 2}})");
-}
-
 Suite parse_contact_suite(const json& suite) { return parse_suite_text(suite.dump(), "contact.json"); }
 
 TEST(SuiteSettingEndToEnd, ContactSaliencyIsRead) {
-  json suite = contact_suite();
+  json suite = testing::small_suite_json();
   suite["feedback"]["contact_saliency"] = 0.3;
   EXPECT_EQ(parse_contact_suite(suite).feedback.contact_saliency, 0.3);
-  EXPECT_EQ(parse_contact_suite(contact_suite()).feedback.contact_saliency, 0.0);  // the default
+  EXPECT_EQ(parse_contact_suite(testing::small_suite_json()).feedback.contact_saliency, 0.0);  // the default
 }
 
 TEST(SuiteSettingEndToEnd, ContactSaliencyOutOfRangeIsRefusedNamingFileAndField) {
-  json suite = contact_suite();
+  json suite = testing::small_suite_json();
   suite["feedback"]["contact_saliency"] = 1.5;
   try {
     parse_contact_suite(suite);
@@ -42,7 +36,7 @@ TEST(SuiteSettingEndToEnd, ContactSaliencyOutOfRangeIsRefusedNamingFileAndField)
 }
 
 TEST(SuiteSettingEndToEnd, ContactSaliencyIsSweptByAnAxis) {
-  json suite = contact_suite();
+  json suite = testing::small_suite_json();
   suite["axes"] = {{"feedback.contact_saliency", {0, 0.5}}, {"solver.piterations", {2, 4}}};
   const Suite s = parse_contact_suite(suite);
   ASSERT_EQ(s.configurations.size(), 4u);
@@ -60,8 +54,8 @@ TEST(SuiteSettingEndToEnd, ContactSaliencyIsSweptByAnAxis) {
 }
 
 TEST(SuiteSettingEndToEnd, ContactSaliencyIsWrittenOnlyWhenSet) {
-  EXPECT_FALSE(suite_json(parse_contact_suite(contact_suite()))["feedback"].contains("contact_saliency"));
-  json suite = contact_suite();
+  EXPECT_FALSE(suite_json(parse_contact_suite(testing::small_suite_json()))["feedback"].contains("contact_saliency"));
+  json suite = testing::small_suite_json();
   suite["feedback"]["contact_saliency"] = 0.3;
   EXPECT_EQ(suite_json(parse_contact_suite(suite))["feedback"]["contact_saliency"], 0.3);
 }

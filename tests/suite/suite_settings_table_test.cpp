@@ -10,19 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "small_suite_json.h"
 #include "suite/suite_axes.h"
 
 namespace tcsb {
 namespace {
 
 using json = nlohmann::json;
-
-json table_test_suite() {
-  return json::parse(R"({
-    "name": "table", "nets": [{"name": "n9", "width": 9, "height": 9}], "methods": ["plain", "tcsb"],
-    "compression": [1.0, 0.5], "dt": 0.02, "steps": 20, "warmup_steps": 5, "repetitions": 2, "seed": 7,
-    "solver": {"piterations": 2}})");
-}
 
 /// `suite` with `value` at the row's place in the file.
 json with_setting(json suite, const SuiteSetting& row, const json& value) {
@@ -35,7 +29,7 @@ TEST(SuiteSettingsTable, EveryRowReadsBackTheValueItWrites) {
   const Suite defaults;
   for (const SuiteSetting& row : suite_settings()) {
     const json written = json::parse(row.member.value(row, defaults).dump());
-    const Suite parsed = parse_suite_text(with_setting(table_test_suite(), row, written).dump(), "table.json");
+    const Suite parsed = parse_suite_text(with_setting(testing::small_suite_json(), row, written).dump(), "table.json");
     EXPECT_EQ(row.member.value(row, parsed), row.member.value(row, defaults)) << row.path;
   }
 }
@@ -59,10 +53,10 @@ json other_value(const SuiteSetting& row, const json& current) {
 
 TEST(SuiteSettingsTable, EveryRowSetsItsOwnMember) {
   // A value other than the default: a row pointing at another member would leave its own at the default.
-  const Suite base = parse_suite_text(table_test_suite().dump(), "table.json");
+  const Suite base = parse_suite_text(testing::small_suite_json().dump(), "table.json");
   for (const SuiteSetting& row : suite_settings()) {
     const json other = other_value(row, json::parse(row.member.value(row, base).dump()));
-    json suite = with_setting(table_test_suite(), row, other);
+    json suite = with_setting(testing::small_suite_json(), row, other);
     // What some settings need beside them (suite.cpp refuses them alone).
     if (row.path == "interleave_across_nets") suite["interleave_steps"] = 4;
     if (row.path == "feedback.view")
@@ -103,7 +97,7 @@ TEST(SuiteSettingsTable, AxesAreTheAxisRowsInLabelOrder) {
 TEST(SuiteSettingsTable, SectionsAcceptExactlyTheirRowsKeys) {
   EXPECT_EQ(suite_setting_keys("solver"),
             (std::vector<std::string_view>{"piterations", "viterations", "diterations", "damping", "stiffness"}));
-  json suite = table_test_suite();
+  json suite = testing::small_suite_json();
   suite["solver"]["iterations"] = 3;
   try {
     parse_suite_text(suite.dump(), "table.json");
