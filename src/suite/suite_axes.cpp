@@ -42,8 +42,10 @@ constexpr std::string_view kStructuredKeys[] = {"name",
                                                 "fidelity.ablations",
                                                 "fidelity.calibration"};
 
+/// Whether `path`, which no axis row took, names a setting or block of the suite file (so it "cannot be an axis",
+/// rather than being unknown).
 bool is_fixed_setting(std::string_view path) {
-  if (find_suite_setting(path)) return true;  // (a row that is an axis was found before)
+  if (find_suite_setting(path)) return true;
   return std::find(std::begin(kStructuredKeys), std::end(kStructuredKeys), path) != std::end(kStructuredKeys);
 }
 
