@@ -16,6 +16,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -100,6 +101,10 @@ class JsonFields {
   template <class E>
   E choice(const Json& j, const std::string& path,
            std::initializer_list<std::pair<std::string_view, E>> options) const {
+    return choice(j, path, std::span<const std::pair<std::string_view, E>>(options.begin(), options.size()));
+  }
+  template <class E>
+  E choice(const Json& j, const std::string& path, std::span<const std::pair<std::string_view, E>> options) const {
     if (j.is_string()) {
       for (const auto& [name, value] : options) {
         if (j.template get<std::string>() == name) return value;

@@ -7,13 +7,85 @@
 #include "report/fidelity_json.h"
 #include "report/op_work_json.h"
 #include "suite/suite_axes.h"
+#include "suite/suite_settings_table.h"
 
 namespace tcsb {
 namespace {
 
 using ojson = nlohmann::ordered_json;
 
-const char* placement_name(Placement p) { return p == Placement::kRigid ? "rigid" : "affine"; }
+/// A setting's value as a result records it: a number that is not finite as null, like every number of a result.
+ojson result_value(const ojson& value) {
+  if (value.is_number_float()) return json_number(value.get<double>());
+  if (!value.is_array()) return value;
+  ojson out = ojson::array();
+  for (const ojson& v : value) out.push_back(result_value(v));
+  return out;
+}
+
+/// The table's settings (suite/suite_settings_table.h) the suite block records for `s`, in table order, each under
+/// its section: with `always`, those it always records, else those it records only when they matter (Written), so a
+/// suite that does not use a setting writes the block it wrote before the setting existed and its results still
+/// compare with older baselines.
+void write_suite_settings(ojson& out, const Suite& s, bool always) {
+  for (const SuiteSetting& row : suite_settings()) {
+    if ((row.written == Written::kAlways) != always || !suite_setting_written(row, s)) continue;
+    ojson& section = row.section().empty() ? out : out[std::string(row.section())];
+    section[std::string(row.key())] = result_value(row.member.value(row, s));
+  }
+}
+
+/// The nets as run: names and sizes, and pins only beyond the corners.
+ojson nets_json(const std::vector<NetSpec>& net_specs) {
+  ojson nets = ojson::array();
+  for (const NetSpec& n : net_specs) {
+    nets.push_back({{"name", n.name}, {"width", n.width}, {"height", n.height}, {"nodes", n.node_count()}});
+    // Only pins beyond the corners (which the suite file, by its sha256, holds): a corner-pinned net writes what it
+    // wrote before edges and listed nodes existed, so its results compare with older ones.
+    if (pins_beyond_corners(n)) {
+      ojson edges = ojson::array(), nodes = ojson::array();
+      for (const PinnedEdge e : {kEdgeMinX, kEdgeMaxX, kEdgeMinZ, kEdgeMaxZ})
+        if (n.pinned_edges & e) edges.push_back(pinned_edge_name(e));
+      for (const GridNode& p : n.pinned_nodes) nodes.push_back({p.x, p.z});
+      nets.back()["pinned"] = {{"corners", n.pinned_corners}, {"edges", std::move(edges)}, {"nodes", std::move(nodes)}};
+    }
+  }
+  return nets;
+}
+
+/// The scene's block (only in a scene with colliders, a camera, wind or moving pins, like the penetrations of its
+/// repetitions).
+ojson scene_json(const SceneSettings& scene) {
+  ojson colliders = ojson::array();
+  for (const Collider& c : scene.colliders) colliders.push_back(collider_name(c));
+  ojson out = {{"colliders", std::move(colliders)},
+               {"margin", json_number(scene.margin)},
+               {"friction", json_number(scene.friction)},
+               {"sdf_voxel", json_number(scene.sdf_voxel)}};
+  // Only when not Bullet's default, so results written before the setting read as before.
+  if (!scene.rigid_contact) out["collisions"] = ojson::array();
+  if (const std::optional<Camera>& c = scene.camera)
+    out["camera"] = {
+        {"fov_deg", json_number(c->fov_deg)}, {"image", {c->width_px, c->height_px}}, {"keyframes", c->path.size()}};
+  // Only when on, so results written before the setting read as before.
+  if (scene.camera && scene.camera->occlusion_cell_px > 0)
+    out["camera"]["occlusion_cell_px"] = scene.camera->occlusion_cell_px;
+  if (const std::optional<Wind>& w = scene.wind)
+    out["wind"] = {{"model", aero_model_name(w->model)},
+                   {"velocity",
+                    {json_number(w->velocity[0]), json_number(w->velocity[1]), json_number(w->velocity[2])}},
+                   {"lift", json_number(w->lift)},
+                   {"drag", json_number(w->drag)},
+                   {"air_density", json_number(w->air_density)}};
+  if (const PinPath& p = scene.pin_path; p.moves()) {
+    if (p.keyframes.empty())
+      out["pin_path"] = {
+          {"velocity", {json_number(p.velocity[0]), json_number(p.velocity[1]), json_number(p.velocity[2])}}};
+    else
+      out["pin_path"] = {{"keyframes", p.keyframes.size()}};
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -27,83 +99,17 @@ ojson context_json(const Context& context, const Suite& suite) {
 }
 
 ojson suite_json(const Suite& s) {
-  ojson nets = ojson::array();
-  for (const NetSpec& n : s.nets) {
-    nets.push_back({{"name", n.name}, {"width", n.width}, {"height", n.height}, {"nodes", n.node_count()}});
-    // Only pins beyond the corners (which the suite file, by its sha256, holds): a corner-pinned net writes what it
-    // wrote before edges and listed nodes existed, so its results compare with older ones.
-    if (pins_beyond_corners(n)) {
-      ojson edges = ojson::array(), nodes = ojson::array();
-      for (const PinnedEdge e : {kEdgeMinX, kEdgeMaxX, kEdgeMinZ, kEdgeMaxZ})
-        if (n.pinned_edges & e) edges.push_back(pinned_edge_name(e));
-      for (const GridNode& p : n.pinned_nodes) nodes.push_back({p.x, p.z});
-      nets.back()["pinned"] = {{"corners", n.pinned_corners}, {"edges", std::move(edges)}, {"nodes", std::move(nodes)}};
-    }
-  }
   ojson methods = ojson::array();
   for (const Method m : s.methods) methods.push_back(method_name(m));
   ojson compression = ojson::array();
   for (const double c : s.compression) compression.push_back(json_number(c));
-  const FeedbackSettings& f = s.feedback;
-  ojson out = {
-      {"name", s.name},
-      {"description", s.description},
-      {"path", s.path.string()},
-      {"sha256", s.sha256},
-      {"steps", s.steps},
-      {"warmup_steps", s.warmup_steps},
-      {"repetitions", s.repetitions},
-      {"interleave_steps", s.interleave_steps},
-      {"interleave_across_nets", s.interleave_across_nets},
-      {"dt", json_number(s.world.dt)},
-      {"gravity", json_number(s.world.gravity)},
-      {"solver",
-       {{"piterations", s.solver.piterations},
-        {"viterations", s.solver.viterations},
-        {"diterations", s.solver.diterations},
-        {"damping", json_number(s.solver.damping)},
-        {"stiffness", json_number(s.solver.linear_stiffness)}}},
-      {"tcsb",
-       {{"blend_steps", s.tcsb.blend_steps},
-        {"placement", placement_name(s.tcsb.placement)},
-        {"restore_order", s.tcsb.restore_order},
-        {"restore_order_min_nodes", s.tcsb.restore_order_min_nodes}}},
-      {"feedback",
-       {{"policy", policy_name(f.policy)},
-        {"threshold", json_number(f.threshold)},
-        {"max_ops_per_step", f.max_ops_per_step},
-        {"evaluation_interval", f.evaluation_interval},
-        {"global_motion_scale", json_number(f.global_motion_scale)},
-        {"illumination", f.illumination},
-        {"light_direction",
-         {json_number(f.light_direction[0]), json_number(f.light_direction[1]), json_number(f.light_direction[2])}},
-        {"parallel", f.parallel},
-        {"threads", f.threads},
-        {"max_step_ms", json_number(f.max_step_ms)}}},
-      // What was actually run (a caller may have narrowed the file's methods, e.g. the default reproduction).
-      {"nets", std::move(nets)},
-      {"methods", std::move(methods)},
-      {"compression", std::move(compression)},
-  };
-  // Only when set: a suite that does not charge popping writes what it wrote before the setting existed, so its
-  // results still compare with older baselines (the gate refuses runs whose suite blocks differ).
-  if (!s.tcsb.rebuild_dbvt) out["tcsb"]["rebuild_dbvt"] = false;
-  if (s.tcsb.interfaces == Interfaces::kHanging) out["tcsb"]["interfaces"] = "hanging";
-  if (s.tcsb.masses == Masses::kCut) out["tcsb"]["masses"] = "cut";
-  if (s.tcsb.exact_order) out["tcsb"]["exact_order"] = true;
-  if (!s.tcsb.arrivals_collide) out["tcsb"]["arrivals_collide"] = false;
-  if (s.tcsb.start_level > 0) out["tcsb"]["start_level"] = s.tcsb.start_level;
-  if (f.popping_charge > 0) out["feedback"]["popping_charge"] = json_number(f.popping_charge);
-  if (f.interface_charge > 0) out["feedback"]["interface_charge"] = json_number(f.interface_charge);
-  if (f.interface_tension > 0) out["feedback"]["interface_tension"] = json_number(f.interface_tension);
-  if (f.pin_level_pull > 0) out["feedback"]["pin_level_pull"] = json_number(f.pin_level_pull);
-  if (f.contact_saliency > 0) out["feedback"]["contact_saliency"] = json_number(f.contact_saliency);
-  if (f.view) {
-    out["feedback"]["view"] = true;
-    out["feedback"]["view_motion_scale"] = json_number(f.view_motion_scale);
-    out["feedback"]["view_detail_px"] = json_number(f.view_detail_px);
-    out["feedback"]["view_static_share"] = json_number(f.view_static_share);
-  }
+  ojson out = {{"name", s.name}, {"description", s.description}, {"path", s.path.string()}, {"sha256", s.sha256}};
+  write_suite_settings(out, s, true);
+  // What was actually run (a caller may have narrowed the file's methods, e.g. the default reproduction).
+  out["nets"] = nets_json(s.nets);
+  out["methods"] = std::move(methods);
+  out["compression"] = std::move(compression);
+  write_suite_settings(out, s, false);
   // Only under the compliant material, so a result of Bullet's model reads as it always did.
   if (s.solver.compliant_model()) {
     const CompliantMaterial& m = s.solver.compliant;
@@ -115,37 +121,8 @@ ojson suite_json(const Suite& s) {
     // Only when more than one, so a result of one pass a small step reads as it did before the field.
     if (m.passes != 1) out["material"]["passes"] = m.passes;
   }
-  // Only in a scene with colliders, a camera, wind or moving pins, like the penetrations of its repetitions.
-  if (s.scene.has_colliders() || s.scene.camera || s.scene.wind || s.scene.pin_path.moves()) {
-    ojson colliders = ojson::array();
-    for (const Collider& c : s.scene.colliders) colliders.push_back(collider_name(c));
-    out["scene"] = {{"colliders", std::move(colliders)},
-                    {"margin", json_number(s.scene.margin)},
-                    {"friction", json_number(s.scene.friction)},
-                    {"sdf_voxel", json_number(s.scene.sdf_voxel)}};
-    // Only when not Bullet's default, so results written before the setting read as before.
-    if (!s.scene.rigid_contact) out["scene"]["collisions"] = ojson::array();
-    if (const std::optional<Camera>& c = s.scene.camera)
-      out["scene"]["camera"] = {
-          {"fov_deg", json_number(c->fov_deg)}, {"image", {c->width_px, c->height_px}}, {"keyframes", c->path.size()}};
-    // Only when on, so results written before the setting read as before.
-    if (s.scene.camera && s.scene.camera->occlusion_cell_px > 0)
-      out["scene"]["camera"]["occlusion_cell_px"] = s.scene.camera->occlusion_cell_px;
-    if (const std::optional<Wind>& w = s.scene.wind)
-      out["scene"]["wind"] = {{"model", aero_model_name(w->model)},
-                              {"velocity",
-                               {json_number(w->velocity[0]), json_number(w->velocity[1]), json_number(w->velocity[2])}},
-                              {"lift", json_number(w->lift)},
-                              {"drag", json_number(w->drag)},
-                              {"air_density", json_number(w->air_density)}};
-    if (const PinPath& p = s.scene.pin_path; p.moves()) {
-      if (p.keyframes.empty())
-        out["scene"]["pin_path"] = {
-            {"velocity", {json_number(p.velocity[0]), json_number(p.velocity[1]), json_number(p.velocity[2])}}};
-      else
-        out["scene"]["pin_path"] = {{"keyframes", p.keyframes.size()}};
-    }
-  }
+  if (s.scene.has_colliders() || s.scene.camera || s.scene.wind || s.scene.pin_path.moves())
+    out["scene"] = scene_json(s.scene);
   // Optional: only a suite with axes has it, so the block of a suite without stays as it always was.
   if (!s.axes.empty()) {
     ojson axes = ojson::object();

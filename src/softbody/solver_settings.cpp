@@ -18,8 +18,8 @@ namespace {
 }  // namespace
 
 void check_solver_settings(const SolverSettings& s) {
-  // The suite reader's ranges (suite_axes.cpp), for a library user who fills the struct in code: a kLST of 0 divides
-  // every link constant by zero, a damping of 1 or more stops or reverses every node.
+  // The suite reader's ranges (suite/suite_settings_table.cpp), for a library user who fills the struct in code: a kLST
+  // of 0 divides every link constant by zero, a damping of 1 or more stops or reverses every node.
   if (s.piterations < 1 || s.piterations > 1000) refuse("piterations", "in [1, 1000]", s.piterations);
   if (s.viterations < 0 || s.viterations > 1000) refuse("viterations", "in [0, 1000]", s.viterations);
   if (s.diterations < 0 || s.diterations > 1000) refuse("diterations", "in [0, 1000]", s.diterations);

@@ -1,11 +1,11 @@
 // Suite parsing and validation: every key, type and range is checked before anything runs, so a bad suite fails in
 // milliseconds with one line naming the file and the field instead of hours into a run. This file reads the suite's
-// shape, its nets and settings; the material, fidelity and scene blocks have files of their own.
+// shape, its nets and methods, and checks settings against each other; the scalar settings are read through their
+// table (suite_settings_table.h), and the material, fidelity and scene blocks have files of their own.
 #include "suite/suite.h"
 
 #include <algorithm>
 #include <array>
-#include <climits>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -22,6 +22,7 @@
 #include "suite/suite_axes.h"
 #include "suite/suite_fields.h"
 #include "suite/suite_memory.h"
+#include "suite/suite_settings_table.h"
 
 namespace tcsb {
 namespace {
@@ -104,54 +105,20 @@ NetSpec parse_net(const Reader& r, const json& j, const std::string& path) {
   return net;
 }
 
-void parse_settings(const Reader& r, const Object& root, Suite& s) {
-  const Object solver(r, root.need("solver"), "solver",
-                      {"piterations", "viterations", "diterations", "damping", "stiffness"});
-  // The settings an axis can vary are read by suite_axes.cpp, so an axis value is checked like the setting itself.
-  read_axis_setting(r, solver, "piterations", s, true);
-  for (const char* key : {"viterations", "diterations", "damping", "stiffness"}) read_axis_setting(r, solver, key, s);
+/// The root's keys: the structured blocks around the table's root settings and sections (suite_settings_table.h).
+std::vector<std::string_view> root_keys() {
+  std::vector<std::string_view> keys = {"name", "description", "nets", "methods", "compression"};
+  for (const std::string_view key : suite_setting_keys("")) keys.push_back(key);
+  keys.insert(keys.end(), {"solver", "tcsb", "feedback", "fidelity", "axes", "scene", "material"});
+  return keys;
+}
 
-  if (const json* j = root.find("tcsb")) {
-    const Object tc(r, *j, "tcsb",
-                    {"blend_steps", "start_level", "placement", "interfaces", "masses", "restore_order",
-                     "restore_order_min_nodes", "exact_order", "rebuild_dbvt", "arrivals_collide"});
-    for (const char* key : {"blend_steps", "start_level", "placement", "interfaces", "restore_order",
-                            "restore_order_min_nodes", "exact_order", "rebuild_dbvt", "arrivals_collide"})
-      read_axis_setting(r, tc, key, s);
-    // Not an axis: the mass model decides where the tree's blocks rest, and every case of a net shares its tree.
-    if (const json* m = tc.find("masses")) {
-      s.tcsb.masses = r.choice<Masses>(*m, tc.at("masses"), {{"blocks", Masses::kBlocks}, {"cut", Masses::kCut}});
-      if (s.tcsb.masses == Masses::kCut)
-        for (NetSpec& net : s.nets) net.lod_rest = RestPlacement::kVertex;
-    }
-  }
-
-  if (const json* j = root.find("feedback")) {
-    const Object fb(r, *j, "feedback",
-                    {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale",
-                     "illumination", "light_direction", "parallel", "threads", "max_step_ms", "popping_charge",
-                     "interface_charge", "interface_tension", "pin_level_pull", "contact_saliency", "view",
-                     "view_motion_scale", "view_detail_px", "view_static_share"});
-    FeedbackSettings& f = s.feedback;
-    for (const char* key :
-         {"policy", "threshold", "max_ops_per_step", "evaluation_interval", "global_motion_scale", "illumination"})
-      read_axis_setting(r, fb, key, s);
-    if (const json* light = fb.find("light_direction")) {
-      f.light_direction = r.numbers<3>(*light, fb.at("light_direction"), kSceneCoordinate);
-      if (f.light_direction == std::array<double, 3>{}) r.fail(fb.at("light_direction"), "must not be the zero vector");
-    }
-    fb.read("parallel", f.parallel);
-    fb.read("threads", f.threads, 1, 64);
-    fb.read("max_step_ms", f.max_step_ms, kNonNegative);
-    read_axis_setting(r, fb, "popping_charge", s);
-    read_axis_setting(r, fb, "interface_charge", s);
-    read_axis_setting(r, fb, "interface_tension", s);
-    read_axis_setting(r, fb, "pin_level_pull", s);
-    fb.read("contact_saliency", f.contact_saliency, kUnit);
-    read_axis_setting(r, fb, "view", s);
-    read_axis_setting(r, fb, "view_motion_scale", s);
-    read_axis_setting(r, fb, "view_detail_px", s);
-    read_axis_setting(r, fb, "view_static_share", s);
+/// The table's sections: solver is required, tcsb and feedback optional.
+void parse_sections(const Reader& r, const Object& root, Suite& s) {
+  for (const char* section : {"solver", "tcsb", "feedback"}) {
+    const json* j = root.find(section, std::string_view(section) == "solver");
+    if (!j) continue;
+    read_suite_settings(r, Object(r, *j, section, suite_setting_keys(section)), section, s);
   }
 }
 
@@ -198,37 +165,12 @@ void check_memory(const Suite& suite, const Reader& r) {
          "net \"" + net.name + "\" (" + size + ") with all methods' bodies alive" + budget);
 }
 
-}  // namespace
-
-const char* method_name(Method method) {
-  switch (method) {
-    case Method::kPlain: return "plain";
-    case Method::kBulletPatch: return "bullet_patch";
-    case Method::kTcsb: return "tcsb";
-    case Method::kPlainEqual: return "plain_equal";
-    case Method::kStock: return "stock";
-  }
-  return "unknown";
+bool suite_runs_method(const Suite& s, Method m) {
+  return std::find(s.methods.begin(), s.methods.end(), m) != s.methods.end();
 }
 
-Suite parse_suite_text(const std::string& text, const std::string& file, const SuiteAdjustment& adjust) {
-  const Reader r(file);
-  const json doc = parse_json_text<json>(text, file);
-  if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
-  const Object root(
-      r, doc, "",
-      {"name",    "description", "nets",         "methods",     "compression",      "dt",
-       "gravity", "steps",       "warmup_steps", "repetitions", "interleave_steps", "interleave_across_nets",
-       "seed",    "solver",      "tcsb",         "feedback",    "fidelity",         "axes",
-       "scene",   "material"});
-  Suite s;
-  s.path = file;
-  s.sha256 = sha256_hex(text);
-  s.source = text;
-  s.name = r.string(root.need("name"), "name");
-  if (s.name.empty()) r.fail("name", "must not be empty");
-  if (const json* d = root.find("description")) s.description = r.string(*d, "description");
-
+/// The suite's "nets", each parsed and named once; the array itself, which the material block reads again.
+const json& parse_nets(const Reader& r, const Object& root, Suite& s) {
   const json& nets = r.array(root.need("nets"), "nets");
   std::map<std::string, std::size_t> net_names;  // not a scan per net: a file may list 10^5 of them
   for (std::size_t i = 0; i < nets.size(); ++i) {
@@ -237,7 +179,11 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
       r.fail(index_path("nets", i) + ".name",
              "duplicate net name \"" + s.nets[i].name + "\" (also nets[" + std::to_string(it->second) + "])");
   }
+  return nets;
+}
 
+/// The suite's "methods" and the "compression" targets they run at.
+void parse_methods(const Reader& r, const Object& root, Suite& s) {
   const json& methods = r.array(root.need("methods"), "methods");
   for (std::size_t i = 0; i < methods.size(); ++i) {
     const Method m = r.choice<Method>(methods[i], index_path("methods", i),
@@ -251,8 +197,8 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
     }
     s.methods.push_back(m);
   }
-  const bool has_tcsb = std::find(s.methods.begin(), s.methods.end(), Method::kTcsb) != s.methods.end();
-  const bool has_equal = std::find(s.methods.begin(), s.methods.end(), Method::kPlainEqual) != s.methods.end();
+  const bool has_tcsb = suite_runs_method(s, Method::kTcsb);
+  const bool has_equal = suite_runs_method(s, Method::kPlainEqual);
   if (const json* compression = root.find("compression", has_tcsb || has_equal)) {
     if (!has_tcsb && !has_equal)
       r.fail("compression", "only allowed when methods contains \"tcsb\" or \"plain_equal\"");
@@ -272,22 +218,10 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
     r.fail(index_path("methods", static_cast<std::size_t>(at)),
            "plain_equal needs a compression target below 1 (it runs one case per such target)");
   }
+}
 
-  read_axis_setting(r, root, "dt", s, true);
-  read_axis_setting(r, root, "gravity", s);
-  read_axis_setting(r, root, "steps", s, true);
-  read_axis_setting(r, root, "warmup_steps", s, true);
-  root.read("repetitions", s.repetitions, 1, kMaxRepetitions, true);
-  root.read("interleave_steps", s.interleave_steps, 0, INT_MAX);
-  root.read("interleave_across_nets", s.interleave_across_nets);
-  if (s.interleave_across_nets && s.interleave_steps == 0)
-    r.fail("interleave_across_nets", "needs interleave_steps above 0 (the cases take turns only side by side)");
-  read_axis_setting(r, root, "seed", s, true);
-  parse_material(r, root, nets, s);
-  parse_settings(r, root, s);
-  parse_fidelity(r, root, s);
-  if (const json* scene = root.find("scene")) s.scene = parse_scene(r, *scene);
-  if (const json* axes = root.find("axes")) parse_axes(r, *axes, s);
+/// Settings that do something only together with another: one without its partner is a mistake.
+void check_settings_together(const Reader& r, const Suite& s) {
   // The tension only weighs the interface charge, and the pull acts through the tension: without what it needs (set,
   // or varied by an axis) each would do nothing.
   const auto set_or_varied = [&](double value, const std::string& path) {
@@ -310,7 +244,10 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
     }
   if ((s.feedback.view || view_in_an_axis) && !s.scene.camera)
     r.fail("feedback.view", "the view terms see through the scene's camera: set scene.camera");
+}
 
+/// What each method can build, and what the wind needs, from the nets' link kinds.
+void check_link_kinds(const Reader& r, const Suite& s) {
   // CreatePatch makes structural links (and, with gendiags, one diagonal per cell), never our shear/bend sets; the
   // TreeCut soft body's balanced-cut adjacency is the 4-neighbourhood, so it is structural-only too (the paper's
   // net: L ~ 2N).
@@ -334,12 +271,71 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
                "needs nets of structural links only (their cells become the faces the wind pushes); net \"" +
                    s.nets[k].name + "\" (nets[" + std::to_string(k) + "]) has " +
                    (s.nets[k].shear_links ? "shear" : "bend") + " links");
+}
+
+/// What the fidelity pass needs of the suite.
+void check_fidelity(const Reader& r, const Suite& s) {
+  const bool has_tcsb = suite_runs_method(s, Method::kTcsb);
   // The fidelity pass compares TC-SB (and the ablations at TC-SB's targets) with the reference: without TC-SB there
   // is nothing to measure, and silently measuring nothing would look like a pass.
   if (s.fidelity.enabled && !has_tcsb) r.fail("fidelity.enabled", "requires methods to contain \"tcsb\"");
   // The fidelity pass runs once per net with the suite's settings, after the timed cases; per configuration it is
   // not built (yet), and running it with the base settings beside cases of other settings would mislead.
   if (s.fidelity.enabled && !s.axes.empty()) r.fail("fidelity.enabled", "cannot be combined with axes");
+}
+
+/// The calibration fidelity.calibration names, read and checked against the suite.
+void read_calibration(const Reader& r, const std::string& file, Suite& s) {
+  if (s.fidelity.calibration_path.empty()) return;
+  if (!suite_runs_method(s, Method::kTcsb)) r.fail("fidelity.calibration", "requires methods to contain \"tcsb\"");
+  // Relative to the suite file, so a suite and its calibration travel together (and never outside its tree).
+  const std::filesystem::path path = calibration_file_path(file, s.fidelity.calibration_path);
+  Calibration c = parse_calibration_file(path);
+  if (const std::string why = calibration_mismatch(c, s); !why.empty())
+    r.fail("fidelity.calibration", path.string() + " does not fit this suite: " + why);
+  s.calibration = std::move(c);
+}
+
+}  // namespace
+
+const char* method_name(Method method) {
+  switch (method) {
+    case Method::kPlain: return "plain";
+    case Method::kBulletPatch: return "bullet_patch";
+    case Method::kTcsb: return "tcsb";
+    case Method::kPlainEqual: return "plain_equal";
+    case Method::kStock: return "stock";
+  }
+  return "unknown";
+}
+
+Suite parse_suite_text(const std::string& text, const std::string& file, const SuiteAdjustment& adjust) {
+  const Reader r(file);
+  const json doc = parse_json_text<json>(text, file);
+  if (!doc.is_object()) r.fail("", "the suite must be a JSON object, got " + describe(doc));
+  const std::vector<std::string_view> keys = root_keys();
+  const Object root(r, doc, "", keys);
+  Suite s;
+  s.path = file;
+  s.sha256 = sha256_hex(text);
+  s.source = text;
+  s.name = r.string(root.need("name"), "name");
+  if (s.name.empty()) r.fail("name", "must not be empty");
+  if (const json* d = root.find("description")) s.description = r.string(*d, "description");
+
+  const json& nets = parse_nets(r, root, s);
+  parse_methods(r, root, s);
+  read_suite_settings(r, root, "", s);
+  if (s.interleave_across_nets && s.interleave_steps == 0)
+    r.fail("interleave_across_nets", "needs interleave_steps above 0 (the cases take turns only side by side)");
+  parse_material(r, root, nets, s);
+  parse_sections(r, root, s);
+  parse_fidelity(r, root, s);
+  if (const json* scene = root.find("scene")) s.scene = parse_scene(r, *scene);
+  if (const json* axes = root.find("axes")) parse_axes(r, *axes, s);
+  check_settings_together(r, s);
+  check_link_kinds(r, s);
+  check_fidelity(r, s);
   if (adjust) adjust(s);  // before the memory check: it must see the suite that will run
   // Counted before anything expands them (the memory check does): 10^8 cases would exhaust memory on the way.
   if (const std::uint64_t cases = case_count(s); cases > kMaxCases)
@@ -348,15 +344,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
                " net(s) x their methods and compression targets = " + std::to_string(cases) + " cases, more than the " +
                std::to_string(kMaxCases) + " a suite may have");
   check_material(r, s);  // (before the calibration is read: the compliant material refuses one)
-  if (!s.fidelity.calibration_path.empty()) {
-    if (!has_tcsb) r.fail("fidelity.calibration", "requires methods to contain \"tcsb\"");
-    // Relative to the suite file, so a suite and its calibration travel together (and never outside its tree).
-    const std::filesystem::path path = calibration_file_path(file, s.fidelity.calibration_path);
-    Calibration c = parse_calibration_file(path);
-    if (const std::string why = calibration_mismatch(c, s); !why.empty())
-      r.fail("fidelity.calibration", path.string() + " does not fit this suite: " + why);
-    s.calibration = std::move(c);
-  }
+  read_calibration(r, file, s);
   check_memory(s, r);
   return s;
 }

@@ -2,8 +2,9 @@
 // product of the values is the suite's configurations, and every case runs once per configuration. Only scalar
 // settings of how one case simulates can be axes (the solver, TC-SB, feedback and world settings, seed, steps); what
 // shapes the cases themselves (nets, methods, compression), how they are measured (repetitions) or what the machine
-// gives them (feedback.parallel, threads, max_step_ms) stays one value per suite. An axis value is read by the very
-// function that reads the setting, so it is checked exactly like it.
+// gives them (feedback.parallel, threads, max_step_ms) stays one value per suite. Which settings may be axes is their
+// row's word in suite/suite_settings_table.h, and an axis value is read by that row, so it is checked exactly like
+// the setting itself.
 #pragma once
 
 #include <cstddef>
@@ -21,12 +22,6 @@ inline constexpr std::size_t kMaxConfigurations = 1000;
 
 /// The settings that can be axes, by path, in the order their values appear in configuration labels.
 std::vector<std::string> axis_setting_paths();
-
-/// Reads the axis-able setting `key` of `object` (a section of the suite, or its root) into `suite`, with that
-/// setting's own checks; a missing key leaves the default unless `required`. parse_suite reads these settings only
-/// through here, so an axis value and the setting itself can never be checked differently.
-void read_axis_setting(const suite_fields::Reader& r, const suite_fields::Object& object, const char* key, Suite& suite,
-                       bool required = false);
 
 /// Reads the suite's "axes" object into suite.axes and expands suite.configurations. Throws InputError naming the
 /// file and the field ("axes.solver.piterations[1]: must be an integer in [1, 1000], got 0") for an unknown path, a

@@ -1,6 +1,6 @@
 // Suite fields: the vocabulary a suite's JSON is read in — the typed reader of every input (base/json_fields.h), the
-// ranges the suite's fields share, and an object reader that refuses unknown keys. The suite's schema itself is in
-// suite.cpp.
+// ranges the suite's fields share, and an object reader that refuses unknown keys. The suite's keys themselves are in
+// suite.cpp, the block readers and suite_settings_table.cpp.
 #pragma once
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include <initializer_list>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -54,6 +55,8 @@ using Reader = JsonFields<json>;
 class Object {
  public:
   Object(const Reader& r, const json& j, std::string path, std::initializer_list<std::string_view> allowed)
+      : Object(r, j, std::move(path), std::span<const std::string_view>(allowed.begin(), allowed.size())) {}
+  Object(const Reader& r, const json& j, std::string path, std::span<const std::string_view> allowed)
       : r_(r), j_(j), path_(std::move(path)) {
     if (!j.is_object()) r.fail(path_, "must be an object, got " + describe(j));
     for (const auto& item : j.items()) {

@@ -10,6 +10,7 @@
 
 #include "render_run.h"
 #include "report/json_report.h"
+#include "suite/suite_settings_table.h"
 #include "synthetic_run.h"
 
 namespace tcsb {
@@ -96,6 +97,27 @@ TEST(ResultSchema, AScenesSettingsConform) {
   ojson broken = doc;
   broken["suite"]["scene"]["wind"]["model"] = "V_Sail";
   EXPECT_FALSE(problems(broken).empty());
+}
+
+TEST(ResultSchema, EverySettingWrittenOnlyWhenItMattersConforms) {
+  // Each such setting away from its default (and the view on): the block then holds every optional setting.
+  RunResult r = run_with_cases();
+  r.suite.tcsb.rebuild_dbvt = false;
+  r.suite.tcsb.interfaces = Interfaces::kHanging;
+  r.suite.tcsb.masses = Masses::kCut;
+  r.suite.tcsb.exact_order = true;
+  r.suite.tcsb.arrivals_collide = false;
+  r.suite.tcsb.start_level = 2;
+  FeedbackSettings& f = r.suite.feedback;
+  f.popping_charge = f.interface_charge = f.interface_tension = f.pin_level_pull = f.contact_saliency = 0.5;
+  f.view = true;
+  const ojson doc = testing::native_json_of(r);
+  for (const SuiteSetting& row : suite_settings()) {
+    if (row.written == Written::kNever) continue;
+    const ojson& section = row.section().empty() ? doc["suite"] : doc["suite"][std::string(row.section())];
+    EXPECT_TRUE(section.contains(std::string(row.key()))) << row.path;
+  }
+  EXPECT_EQ(problems(doc), Lines{});
 }
 
 TEST(ResultSchema, TheCompliantMaterialConformsWithAndWithoutPasses) {

@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 
+#include "small_suite_json.h"
 #include "suite/case_plan.h"
 #include "suite/suite_memory.h"
 
@@ -16,16 +17,8 @@ namespace {
 
 using json = nlohmann::json;
 
-/// One 9x9 net, plain and TC-SB at 1.0 and 0.5: three cases per configuration.
-json base_suite() {
-  return json::parse(R"({
-    "name": "axes", "nets": [{"name": "n9", "width": 9, "height": 9}, {"name": "n11", "width": 11, "height": 11}],
-    "methods": ["plain", "tcsb"], "compression": [1.0, 0.5], "dt": 0.02, "steps": 20, "warmup_steps": 5,
-    "repetitions": 2, "seed": 7, "solver": {"piterations": 2}})");
-}
-
 Suite with_axes(const json& axes) {
-  json j = base_suite();
+  json j = testing::small_suite_json();
   j["axes"] = axes;
   return parse_suite_text(j.dump(), "axes.json");
 }
@@ -65,7 +58,7 @@ TEST(SuiteAxes, LabelsSpellValuesShortly) {
 }
 
 TEST(SuiteAxes, TheInterfacesAreASettingAndAnAxis) {
-  json j = base_suite();
+  json j = testing::small_suite_json();
   j["tcsb"] = {{"blend_steps", 4}, {"interfaces", "hanging"}};
   EXPECT_EQ(parse_suite_text(j.dump(), "axes.json").tcsb.interfaces, Interfaces::kHanging);
   const Suite s = with_axes({{"tcsb.interfaces", {"links", "hanging"}}});
@@ -90,7 +83,7 @@ TEST(SuiteAxes, AConfigurationIsTheBaseSuiteWithItsValuesApplied) {
   EXPECT_EQ(s.seed, 7u);
   EXPECT_EQ(s.steps, 20);
   // The same suite with those settings and no axes is the configuration's suite.
-  json j = base_suite();
+  json j = testing::small_suite_json();
   j["solver"]["piterations"] = 8;
   j["seed"] = 11;
   j["steps"] = 30;
@@ -102,7 +95,7 @@ TEST(SuiteAxes, AConfigurationIsTheBaseSuiteWithItsValuesApplied) {
 }
 
 TEST(SuiteAxes, WithoutAxesTheSuiteIsItsOneConfiguration) {
-  const Suite s = parse_suite_text(base_suite().dump(), "axes.json");
+  const Suite s = parse_suite_text(testing::small_suite_json().dump(), "axes.json");
   EXPECT_EQ(configuration_count(s), 1u);
   EXPECT_TRUE(s.configurations.empty());
   EXPECT_EQ(configuration_suite(s, 0).solver.piterations, 2);
@@ -174,7 +167,7 @@ TEST(SuiteAxes, TooManyConfigurationsAreRefused) {
 }
 
 TEST(SuiteAxes, TheFidelityPassIsNotCombinedWithAxes) {
-  json j = base_suite();
+  json j = testing::small_suite_json();
   j["fidelity"] = {{"enabled", true}};
   j["axes"] = {{"solver.piterations", {2, 4}}};
   try {
@@ -188,7 +181,7 @@ TEST(SuiteAxes, TheFidelityPassIsNotCombinedWithAxes) {
 TEST(SuiteAxes, EverySettingThatCanBeAnAxisIsReadThroughTheAxisTable) {
   // Each axis-able path is a real setting whose reader accepts a valid value.
   const std::vector<std::string> paths = axis_setting_paths();
-  EXPECT_EQ(paths.size(), 33u);
+  EXPECT_EQ(paths.size(), 34u);
   for (const std::string& path : paths) {
     json value;
     if (path == "tcsb.placement")
@@ -202,7 +195,7 @@ TEST(SuiteAxes, EverySettingThatCanBeAnAxisIsReadThroughTheAxisTable) {
              path == "feedback.view")  // on, the view terms need a camera
       value = false;
     else if (path == "solver.damping" || path == "solver.stiffness" || path == "dt" ||
-             path == "feedback.view_static_share")
+             path == "feedback.view_static_share" || path == "feedback.contact_saliency")
       value = 0.5;
     else
       value = 3;
