@@ -13,6 +13,7 @@
 
 #include "analysis/statistics.h"
 #include "bench_bodies.h"
+#include "softbody/op_sample.h"
 
 // scripts/profile/op-instructions.sh runs this benchmark under callgrind: the loop below zeroes the counters when it
 // starts and dumps them when it ends, so each dump covers the measured operations and not the fixture's setup (which

@@ -12,6 +12,7 @@
 #include "fidelity/surface_morph.h"
 #include "net/grid_resample.h"
 #include "softbody/bullet_setup.h"
+#include "softbody/op_sample.h"
 #include "softbody/plain_softbody.h"
 #include "softbody/tc_softbody.h"
 #include "softbody/vector_conversion.h"

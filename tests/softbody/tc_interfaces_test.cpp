@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_world.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "softbody/tc_softbody_solver.h"
 #include "test_bodies.h"
 
@@ -36,7 +36,7 @@ TreeId coarsen_one_block(TcSoftBody& tc) {
 /// Links of `id` to nodes of another level, and how many of them Bullet's link solver solves (m_c0 > 0).
 std::pair<int, int> cross_level_links(const TcSoftBody& tc, TreeId id) {
   int links = 0, solved = 0;
-  for (const std::int32_t li : tc.incidence(id)) {
+  for (const std::int32_t li : tc.impl().incidence(id)) {
     const CutLink& m = tc.cut_links()[static_cast<std::size_t>(li)];
     if (tc.tree().node(m.other(id)).level == tc.tree().node(id).level) continue;
     ++links;

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_world.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "test_bodies.h"
 
 namespace tcsb {
@@ -95,7 +95,7 @@ TEST(TcVertexInterfaces, AnEdgeACoarseCellSharesWithFinerClothTakesTheFinerStiff
   }
   const auto stiffness = [&](int ax, int ay, int bx, int by) {
     const TreeId a = tree.at(1, ax, ay), b = tree.at(1, bx, by);
-    for (const std::int32_t li : tc.incidence(a))
+    for (const std::int32_t li : tc.impl().incidence(a))
       if (tc.cut_links()[static_cast<std::size_t>(li)].other(a) == b) return tc.m_links[li].m_material->m_kLST;
     ADD_FAILURE() << "no link between the blocks";
     return btScalar(0);
