@@ -25,7 +25,6 @@
 namespace tcsb {
 
 class CutListener;
-class OpSink;
 
 /// Where a tree node stands with respect to the cut.
 enum class CutState : std::uint8_t {
@@ -56,35 +55,6 @@ struct CutLink {
   bool joins_committed() const { return role == LinkRole::kSteady || role == LinkRole::kFadeIn; }
   /// The endpoint that is not `end` (one of the two).
   TreeId other(TreeId end) const { return a == end ? b : a; }
-};
-
-/// Which form an interface constraint takes: kMidpoint, the one described at InterfaceConstraint, on a tree whose
-/// blocks rest at their centroids. On a tree whose blocks rest on their first leaf (RestPlacement::kVertex) a block's
-/// node is its cell's corner, and the interface is the vertex kind an adaptive mesh has: of the two fine nodes, the
-/// one in line with the coarse node (`kept`) stays joined to it by its handle as an ordinary link, and the other one
-/// hangs. On the block's +x and +z sides it lies on the coarse cell's edge, and is held to the midpoint of that edge's
-/// ends, the kept fine node and the node at the block's diagonal corner (kVertexFar); on its -x and -z sides its link
-/// to the coarse side meets the block's side between the coarse node and the node at the block's corner along that
-/// side, and is held at its rest distance to their midpoint (kVertexNear). The corner's node (`corner_leaf`'s) is found
-/// at each step; where none rests there, a far constraint is skipped and a near one holds the hanging node to the
-/// coarse node.
-enum class InterfaceKind : std::uint8_t { kMidpoint, kVertexFar, kVertexNear };
-
-/// With TcSettings::interfaces = kHanging, what replaces a fan: where the block of `coarse` meets the two finer
-/// nodes `fine` across one of its sides (children of the block beside it), one distance constraint between the
-/// coarse node and the fine nodes' midpoint, weights 1/2 each, at the rest distance between them. The fan's two
-/// links stay in Bullet's link array as the constraint's handles — the operations fade, relabel and remove them as
-/// they do every link, so the constraint follows the cut in O(degree) — with m_c0 = 0, which Bullet's link solver
-/// skips (btSoftBody::PSolve_Links solves only m_c0 > 0); their blend weight is the constraint's.
-struct InterfaceConstraint {
-  TreeId coarse = kNoTreeNode;
-  std::array<TreeId, 2> fine{kNoTreeNode, kNoTreeNode};
-  std::array<std::int32_t, 2> links{-1, -1};  ///< the handles: links coarse-fine[0] and coarse-fine[1]
-  btScalar rest = 0;  ///< rest distance from the coarse node to the fine nodes' midpoint (vertex kinds: InterfaceKind)
-  btScalar stiffness = 1;  ///< kLST: the mean of the two levels' (interface_stiffness); vertex kinds the finer's
-  InterfaceKind kind = InterfaceKind::kMidpoint;
-  std::int8_t kept = -1;             ///< vertex kinds: which handle stays an ordinary link (the other fine node hangs)
-  TreeId corner_leaf = kNoTreeNode;  ///< vertex kinds: the leaf at the block's corner the constraint reaches
 };
 
 /// Who settles the arrays' order (TcSoftBody::settle_order) after advance_blends() with TcSettings::exact_order.
@@ -155,7 +125,6 @@ class TcSoftBody : public btSoftBody {
   std::span<const TreeId> tree_ids() const;
   /// Per Bullet link: endpoints and role (same stability as the arrays above).
   std::span<const CutLink> cut_links() const;
-  LinkRole link_role(int link) const;
   /// Mass the node carries now (half of its block's while an operation blends it), kg. Pinned nodes included.
   double simulated_mass(TreeId id) const;
   int node_count() const { return m_nodes.size(); }
@@ -164,10 +133,6 @@ class TcSoftBody : public btSoftBody {
   int committed_count() const;
   /// Operations currently blending: the paper's I.
   int interpolations() const;
-  /// The interface constraints (hanging interfaces only; empty with the paper's fans).
-  std::span<const InterfaceConstraint> interface_constraints() const;
-  /// Times an append found Bullet's link array full and it had to grow (expected: never).
-  int link_reallocations() const;
 
   // ---- operations --------------------------------------------------------------------------------------------
   /// Whether refine(id) may begin: id active, not a leaf and not anchored, its neighbours active and none coarser.
@@ -235,11 +200,7 @@ class TcSoftBody : public btSoftBody {
   /// O(N + leaves) per rebuild (each committed block marks its leaves, then each node's corners are read);
   /// Bullet's own normal update is O(N + F) every step.
   void refresh_faces();
-  /// Times refresh_faces() rebuilt them.
-  int face_rebuilds() const;
 
-  /// Receives every operation's timing (may be null).
-  void set_op_sink(OpSink* sink);
   /// Told of every change to the cut right after it is made, and of every reordering of Bullet's arrays (may be
   /// null; cut_listener.h).
   void set_cut_listener(CutListener* listener);
@@ -259,21 +220,6 @@ class TcSoftBody : public btSoftBody {
   /// once it has begun its boundary's operations, before it hands the cut to a worker, so Bullet's next step sweeps
   /// every link in a plain body's order.
   void settle_order();
-  /// Nodes and links moved by operations since the arrays were last in order (appended, or moved into a hole).
-  int displaced() const;
-  /// Times restore_order() has run (by advance_blends() or a direct call).
-  int order_restorations() const;
-  /// Builds the node DBVT afresh, as a plain body's is built (bullet_setup.h, insert_node_leaves: every node's leaf
-  /// inserted from the root, in the same fixed shuffled order; each box is the one Bullet's own update would give
-  /// the node now: its position and the margin, grown by the update margin and stretched along its velocity),
-  /// after freeing the old tree and giving the freed memory back to malloc's free lists in one piece, so the new tree
-  /// lies in one compact region. The tree takes no part in the physics (collisions are off), so positions, velocities
-  /// and every invariant are unchanged. O(N log N); advance_blends() calls it only after the body has shrunk by the
-  /// factor TcSettings::kDbvtRebuildShrink since the last build, so it costs amortised O(log N) per node removed and
-  /// nothing at a fixed compression.
-  void rebuild_node_dbvt();
-  /// Times rebuild_node_dbvt() has run.
-  int dbvt_rebuilds() const;
 
   // ---- invariants --------------------------------------------------------------------------------------------
   /// Checks every invariant, one check each (docs/design.md, "Invariants: validate()"): the world around the body;
@@ -285,20 +231,11 @@ class TcSoftBody : public btSoftBody {
   /// debug runs.
   Validation validate() const;
 
-  /// Local deformation at a simulated node as child placement uses it: local_affine_fit(id), or the
-  /// identity-in-plane [[1,0],[0,0],[0,1]] under rigid placement. O(degree).
-  Eigen::Matrix<double, 3, 2> deformation(TreeId id) const;
   /// The least-squares affine map (3x2) from rest offsets in the net's plane (x, z) to current offsets, fitted over
   /// the node's linked neighbours, whatever the placement setting; the identity-in-plane when the neighbours do not
   /// span the plane. Reconstructing every grid node from the cut uses it for every body, so the measuring instrument
   /// is the same whether children are placed rigidly or not. O(degree).
   Eigen::Matrix<double, 3, 2> local_affine_fit(TreeId id) const;
-
-  /// Whether links above level 0 use their level's calibrated stiffness (TcSettings::level_stiffness).
-  bool calibrated() const;
-  /// The material a link between tree nodes a and b uses: the solver's (Bullet's m_materials[0]) when uncalibrated
-  /// or both are leaves, else the one of the coarser endpoint's level. O(1).
-  Material* link_material(TreeId a, TreeId b) const;
 
   /// Linear momentum of the simulated nodes (pinned nodes excluded), kg m/s.
   Eigen::Vector3d linear_momentum() const;

@@ -30,14 +30,9 @@ std::span<const CutState> TcSoftBody::states() const { return impl_->states(); }
 std::span<const std::int32_t> TcSoftBody::bullet_indices() const { return impl_->bullet_indices(); }
 std::span<const TreeId> TcSoftBody::tree_ids() const { return impl_->tree_ids(); }
 std::span<const CutLink> TcSoftBody::cut_links() const { return impl_->cut_links(); }
-LinkRole TcSoftBody::link_role(int link) const { return impl_->link_role(link); }
 double TcSoftBody::simulated_mass(TreeId id) const { return impl_->simulated_mass(id); }
 int TcSoftBody::committed_count() const { return impl_->committed_count(); }
 int TcSoftBody::interpolations() const { return impl_->interpolations(); }
-std::span<const InterfaceConstraint> TcSoftBody::interface_constraints() const {
-  return impl_->interface_constraints();
-}
-int TcSoftBody::link_reallocations() const { return impl_->link_reallocations(); }
 OpCheck TcSoftBody::can_refine(TreeId id) const { return impl_->can_refine(id); }
 OpCheck TcSoftBody::can_coarsen(TreeId parent) const { return impl_->can_coarsen(parent); }
 bool TcSoftBody::anchored(TreeId id) const { return impl_->anchored(id); }
@@ -53,20 +48,11 @@ btVector3 TcSoftBody::pin_position(TreeId id) const { return impl_->pin_position
 void TcSoftBody::enable_faces() { impl_->enable_faces(); }
 bool TcSoftBody::faces_enabled() const { return impl_->faces_enabled(); }
 void TcSoftBody::refresh_faces() { impl_->refresh_faces(); }
-int TcSoftBody::face_rebuilds() const { return impl_->face_rebuilds(); }
-void TcSoftBody::set_op_sink(OpSink* sink) { impl_->set_op_sink(sink); }
 void TcSoftBody::set_cut_listener(CutListener* listener) { impl_->set_cut_listener(listener); }
 void TcSoftBody::restore_order() { impl_->restore_order(); }
 void TcSoftBody::settle_order() { impl_->settle_order(); }
-int TcSoftBody::displaced() const { return impl_->displaced(); }
-int TcSoftBody::order_restorations() const { return impl_->order_restorations(); }
-void TcSoftBody::rebuild_node_dbvt() { impl_->rebuild_node_dbvt(); }
-int TcSoftBody::dbvt_rebuilds() const { return impl_->dbvt_rebuilds(); }
 Validation TcSoftBody::validate() const { return impl_->validate(); }
-Eigen::Matrix<double, 3, 2> TcSoftBody::deformation(TreeId id) const { return impl_->deformation(id); }
 Eigen::Matrix<double, 3, 2> TcSoftBody::local_affine_fit(TreeId id) const { return impl_->local_affine_fit(id); }
-bool TcSoftBody::calibrated() const { return impl_->calibrated(); }
-TcSoftBody::Material* TcSoftBody::link_material(TreeId a, TreeId b) const { return impl_->link_material(a, b); }
 Eigen::Vector3d TcSoftBody::linear_momentum() const { return impl_->linear_momentum(); }
 double TcSoftBody::total_mass() const { return impl_->total_mass(); }
 

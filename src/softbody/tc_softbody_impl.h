@@ -48,6 +48,35 @@
 
 namespace tcsb {
 
+/// Which form an interface constraint takes: kMidpoint, the one described at InterfaceConstraint, on a tree whose
+/// blocks rest at their centroids. On a tree whose blocks rest on their first leaf (RestPlacement::kVertex) a block's
+/// node is its cell's corner, and the interface is the vertex kind an adaptive mesh has: of the two fine nodes, the
+/// one in line with the coarse node (`kept`) stays joined to it by its handle as an ordinary link, and the other one
+/// hangs. On the block's +x and +z sides it lies on the coarse cell's edge, and is held to the midpoint of that edge's
+/// ends, the kept fine node and the node at the block's diagonal corner (kVertexFar); on its -x and -z sides its link
+/// to the coarse side meets the block's side between the coarse node and the node at the block's corner along that
+/// side, and is held at its rest distance to their midpoint (kVertexNear). The corner's node (`corner_leaf`'s) is found
+/// at each step; where none rests there, a far constraint is skipped and a near one holds the hanging node to the
+/// coarse node.
+enum class InterfaceKind : std::uint8_t { kMidpoint, kVertexFar, kVertexNear };
+
+/// With TcSettings::interfaces = kHanging, what replaces a fan: where the block of `coarse` meets the two finer
+/// nodes `fine` across one of its sides (children of the block beside it), one distance constraint between the
+/// coarse node and the fine nodes' midpoint, weights 1/2 each, at the rest distance between them. The fan's two
+/// links stay in Bullet's link array as the constraint's handles — the operations fade, relabel and remove them as
+/// they do every link, so the constraint follows the cut in O(degree) — with m_c0 = 0, which Bullet's link solver
+/// skips (btSoftBody::PSolve_Links solves only m_c0 > 0); their blend weight is the constraint's.
+struct InterfaceConstraint {
+  TreeId coarse = kNoTreeNode;
+  std::array<TreeId, 2> fine{kNoTreeNode, kNoTreeNode};
+  std::array<std::int32_t, 2> links{-1, -1};  ///< the handles: links coarse-fine[0] and coarse-fine[1]
+  btScalar rest = 0;  ///< rest distance from the coarse node to the fine nodes' midpoint (vertex kinds: InterfaceKind)
+  btScalar stiffness = 1;  ///< kLST: the mean of the two levels' (interface_stiffness); vertex kinds the finer's
+  InterfaceKind kind = InterfaceKind::kMidpoint;
+  std::int8_t kept = -1;             ///< vertex kinds: which handle stays an ordinary link (the other fine node hangs)
+  TreeId corner_leaf = kNoTreeNode;  ///< vertex kinds: the leaf at the block's corner the constraint reaches
+};
+
 class TcSoftBody::Impl {
  public:
   using Node = btSoftBody::Node;
@@ -83,7 +112,9 @@ class TcSoftBody::Impl {
   int link_count() const { return body_.m_links.size(); }
   int committed_count() const { return committed_count_; }
   int interpolations() const { return static_cast<int>(inflight_.size()); }
+  /// The interface constraints (hanging interfaces only; empty with the paper's fans).
   std::span<const InterfaceConstraint> interface_constraints() const { return interfaces_; }
+  /// Times an append found Bullet's link array full and it had to grow (expected: never).
   int link_reallocations() const { return link_reallocations_; }
 
   OpCheck can_refine(TreeId id) const;
@@ -101,24 +132,42 @@ class TcSoftBody::Impl {
   void enable_faces();
   bool faces_enabled() const { return faces_enabled_; }
   void refresh_faces();
+  /// Times refresh_faces() rebuilt them.
   int face_rebuilds() const { return face_rebuilds_; }
 
+  /// Receives every operation's timing (may be null).
   void set_op_sink(OpSink* sink) { sink_ = sink; }
   void set_cut_listener(CutListener* listener) { listener_ = listener; }
 
   void restore_order();
   void settle_order();
+  /// Nodes and links moved by operations since the arrays were last in order (appended, or moved into a hole).
   int displaced() const { return displaced_; }
+  /// Times restore_order() has run (by advance_blends() or a direct call).
   int order_restorations() const { return order_restorations_; }
+  /// Builds the node DBVT afresh, as a plain body's is built (bullet_setup.h, insert_node_leaves: every node's leaf
+  /// inserted from the root, in the same fixed shuffled order; each box is the one Bullet's own update would give
+  /// the node now: its position and the margin, grown by the update margin and stretched along its velocity),
+  /// after freeing the old tree and giving the freed memory back to malloc's free lists in one piece, so the new tree
+  /// lies in one compact region. The tree takes no part in the physics (collisions are off), so positions, velocities
+  /// and every invariant are unchanged. O(N log N); advance_blends() calls it only after the body has shrunk by the
+  /// factor TcSettings::kDbvtRebuildShrink since the last build, so it costs amortised O(log N) per node removed and
+  /// nothing at a fixed compression.
   void rebuild_node_dbvt();
+  /// Times rebuild_node_dbvt() has run.
   int dbvt_rebuilds() const { return dbvt_rebuilds_; }
 
   Validation validate() const;
 
+  /// Local deformation at a simulated node as child placement uses it: local_affine_fit(id), or the
+  /// identity-in-plane [[1,0],[0,0],[0,1]] under rigid placement. O(degree).
   Eigen::Matrix<double, 3, 2> deformation(TreeId id) const;
   Eigen::Matrix<double, 3, 2> local_affine_fit(TreeId id) const;
 
+  /// Whether links above level 0 use their level's calibrated stiffness (TcSettings::level_stiffness).
   bool calibrated() const { return !level_materials_.empty(); }
+  /// The material a link between tree nodes a and b uses: the solver's (Bullet's m_materials[0]) when uncalibrated
+  /// or both are leaves, else the one of the coarser endpoint's level. O(1).
   Material* link_material(TreeId a, TreeId b) const;
 
   Eigen::Vector3d linear_momentum() const;

@@ -32,8 +32,8 @@ std::unique_ptr<TcSoftBody> half_coarse(SceneWorld& world, bool left, const TcSe
 TEST(TcVertexInterfaces, OnACoarseBlocksFarSideTheFineNodeBesideTheLineHangsOnTheCoarseEdge) {
   SceneWorld world({});
   const auto tc = half_coarse(world, true);  // blocks over leaves 0..7, fine from leaf 8: their +x sides
-  ASSERT_FALSE(tc->interface_constraints().empty());
-  for (const InterfaceConstraint& c : tc->interface_constraints()) {
+  ASSERT_FALSE(tc->impl().interface_constraints().empty());
+  for (const InterfaceConstraint& c : tc->impl().interface_constraints()) {
     EXPECT_EQ(c.kind, InterfaceKind::kVertexFar);
     ASSERT_GE(c.kept, 0);
     const TreeId in_line = c.fine[static_cast<std::size_t>(c.kept)], hanging = c.fine[c.kept == 0 ? 1 : 0];
@@ -54,7 +54,7 @@ TEST(TcVertexInterfaces, OnACoarseBlocksNearSideTheHangingLinkMeetsTheSideAtItsM
   const auto tc = half_coarse(world, false, calibrated);  // fine leaves 0..7, blocks from leaf 8: their -x sides
   const LodTree& tree = tc->net().lod();
   int near = 0;
-  for (const InterfaceConstraint& c : tc->interface_constraints()) {
+  for (const InterfaceConstraint& c : tc->impl().interface_constraints()) {
     if (c.kind != InterfaceKind::kVertexNear) continue;  // (the top row's +z sides face the border's blocks)
     ++near;
     const LodNode& block = tree.node(c.coarse);
