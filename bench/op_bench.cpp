@@ -13,6 +13,8 @@
 
 #include "analysis/statistics.h"
 #include "bench_bodies.h"
+#include "softbody/op_sample.h"
+#include "softbody/tc_softbody_impl.h"
 
 // scripts/profile/op-instructions.sh runs this benchmark under callgrind: the loop below zeroes the counters when it
 // starts and dumps them when it ends, so each dump covers the measured operations and not the fixture's setup (which
@@ -107,7 +109,7 @@ void run_op(benchmark::State& state, Timed timed, const char* name) {
   };
   OpSample timed_sample[kOpKindCount];
   KindSink sink(timed_sample);
-  body.set_op_sink(&sink);
+  body.impl().set_op_sink(&sink);
 
   // One round trip on a random block; the timed part's seconds, or nullopt when no block qualifies.
   const auto random_round_trip = [&]() -> std::optional<double> {
@@ -140,7 +142,7 @@ void run_op(benchmark::State& state, Timed timed, const char* name) {
   }
 
   TCSB_CALLGRIND_DUMP_STATS();
-  body.set_op_sink(nullptr);
+  body.impl().set_op_sink(nullptr);
   if (body.interpolations() != 0) state.SkipWithError("an operation was left in flight");
   state.SetComplexityN(nodes);
   state.counters["N"] = static_cast<double>(nodes);

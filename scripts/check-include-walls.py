@@ -10,7 +10,10 @@ Rules, from src/modules.txt:
   - a library module's header, installed under include/tcsb/MODULE/, names a module's header relative to itself
     ("../net/net.h"): a user's include path holds no "net/" of ours, and may hold one of its own;
   - the table itself: every arrow points to a module on a line above, and a library module's only to library ones;
-  - every folder of src/ and of tests/ is a module of the table (CMake builds the tests of its modules only).
+  - every folder of src/ and of tests/ is a module of the table (CMake builds the tests of its modules only);
+  - the public headers (include/tcsb/*.h, what a user reads) reach, directly or through each other, only the
+    library headers of the API (API_HEADERS below); any other header of a library module is an implementation
+    header (dbvt_local.h, incidence_list.h, op_sample.h, tc_softbody_impl.h, ...), which a user must not need.
 
 Usage: python3 scripts/check-include-walls.py [--root DIR]
        python3 scripts/check-include-walls.py --self-test
@@ -29,6 +32,17 @@ TABLE = pathlib.Path("src/modules.txt")
 PARTS = ("library", "harness", "program")
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 SOURCES = ("*.h", "*.cpp", "*.h.in")
+# The library headers the public headers may reach (docs/library.md lists them): the net and its tree, the body with
+# its settings and solver, the listener, the controller and driver with their settings, the camera. Every other
+# header of a library module is an implementation header: installed, because the harness shares the module, but
+# never reached from include/tcsb/*.h.
+API_HEADERS = {
+    "net/net.h", "net/lod_tree.h", "net/net_spec.h",
+    "softbody/tc_softbody.h", "softbody/tc_settings.h", "softbody/solver_settings.h", "softbody/material.h",
+    "softbody/tc_softbody_solver.h", "softbody/cut_listener.h", "softbody/op_kind.h",
+    "feedback/controller.h", "feedback/feedback_settings.h", "feedback/presets.h", "feedback/tree_cut_driver.h",
+    "view/camera.h", "view/keyframe_path.h", "view/screen_projection.h",
+}
 
 
 class TableError(Exception):
@@ -133,9 +147,53 @@ def violations(root):
     return found, checked
 
 
+def quoted_includes(path):
+    """(line number, included name) of every #include "..." of a file."""
+    for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+        match = INCLUDE.match(line)
+        if match:
+            yield number, match.group(1)
+
+
+def implementation_reached(root):
+    """Every implementation header a public header reaches, as "FILE:LINE: why". A public header names another one
+    as "tcsb/X.h" and a library header as "MODULE/X.h" (installed beside it); a library header names another as
+    "../MODULE/X.h"."""
+    found = []
+    public = root / "include" / "tcsb"
+    for start in sorted(public.glob("*.h")) if public.is_dir() else []:
+        seen = set()
+        stack = [(start, None)]
+        while stack:
+            path, module = stack.pop()
+            for number, name in quoted_includes(path):
+                parts = pathlib.PurePosixPath(name).parts
+                if parts and parts[0] == "..":
+                    parts = parts[1:]
+                if len(parts) != 2:
+                    continue
+                if module is None and parts[0] == "tcsb":
+                    target, key = public / parts[1], None
+                else:
+                    key = "/".join(parts)
+                    target = root / "src" / key
+                    if key not in API_HEADERS:
+                        where = path.relative_to(root).as_posix()
+                        found.append(f'{where}:{number}: "{name}" is an implementation header, reached from '
+                                     f"{start.relative_to(root).as_posix()}: the public headers reach only the API's "
+                                     f"(API_HEADERS in {pathlib.Path(__file__).name}; docs/library.md)")
+                        continue
+                if target in seen or not target.is_file():
+                    continue
+                seen.add(target)
+                stack.append((target, key))
+    return sorted(set(found))
+
+
 def check(root):
     try:
         found, checked = violations(root)
+        found += implementation_reached(root)
     except TableError as e:
         print(f"check-include-walls: {e}", file=sys.stderr)
         return 2
@@ -185,6 +243,10 @@ def self_test(repo):
     run({"src/newmodule/a.cpp": "int a;\n"}, 1, "src/newmodule/")
     run({"tests/nomodule/a_test.cpp": "int a;\n"}, 1, "tests/nomodule/")
     run({"src/feedback/installed.h": '#include "softbody/tc_softbody.h"\n'}, 1, '"../softbody/tc_softbody.h"')
+    run({"include/tcsb/body.h": '#include "softbody/dbvt_local.h"\n'}, 1, "include/tcsb/body.h:1")
+    run({"include/tcsb/tcsb.h": '#include "tcsb/body.h"\n', "include/tcsb/body.h": '#include "softbody/tc_softbody.h"\n',
+         "src/softbody/tc_softbody.h": '#pragma once\n#include "../softbody/incidence_list.h"\n'},
+        1, "src/softbody/tc_softbody.h:2")
     if ok:
         print("check-include-walls self-test: ok")
     return 0 if ok else 1

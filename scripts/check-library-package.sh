@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The library as a game adopts it (docs/library.md): configures the source tree library-only (TCSB_BUILD_HARNESS=OFF,
 # which must find nothing of the harness's dependencies), builds and installs it into a scratch prefix, checks that
-# the package holds the library alone and refuses a client asking for another minor version, then builds the
-# examples against it as a C++17 project (the package's targets must raise it to C++20) and runs the client's
+# the package holds the library alone and refuses a client asking for another minor version, compiles each public
+# header (include/tcsb/*.h) alone as the first include of a file of its own, then builds the examples against it as a C++17 project (the package's targets must raise it to C++20) and runs the client's
 # scenario (client_tcsb: a cloth on a sphere anchored to a moving body, two bodies in one world, one removed and
 # destroyed mid-run, budget and camera changed mid-run), which exits non-zero when an invariant, the anchor or the
 # budget fails.
@@ -32,6 +32,25 @@ fi
 cmake --build "$scratch/lib" > "$scratch/build.log" || { cat "$scratch/build.log" >&2; exit 1; }
 cmake --install "$scratch/lib" --prefix "$scratch/prefix" > "$scratch/install.log"
 [ ! -e "$scratch/prefix/bin" ] || { echo "check-library-package: the library-only install has executables" >&2; exit 1; }
+
+# Each public header compiles alone, with nothing but the package's own include paths: a user may include any one
+# of them first (docs/library.md). (What they may include is checked by scripts/check-include-walls.py.)
+mkdir -p "$scratch/alone"
+headers=$(cd "$scratch/prefix/include/tcsb" && ls ./*.h | sed 's|^\./||')
+{
+  printf 'cmake_minimum_required(VERSION 3.25)\nproject(alone LANGUAGES CXX)\nfind_package(tcsb REQUIRED)\n'
+  for header in $headers; do
+    printf '#include <tcsb/%s>\n' "$header" > "$scratch/alone/${header%.h}.cpp"
+    printf 'add_library(alone_%s OBJECT %s.cpp)\ntarget_link_libraries(alone_%s PRIVATE tcsb::tcsb)\n' \
+      "${header%.h}" "${header%.h}" "${header%.h}"
+  done
+} > "$scratch/alone/CMakeLists.txt"
+cmake -S "$scratch/alone" -B "$scratch/alone/build" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" \
+  "${client_flags[@]}" > "$scratch/alone-configure.log"
+cmake --build "$scratch/alone/build" -- -k 0 > "$scratch/alone-build.log" 2>&1 ||
+  { grep -E "error|FAILED" "$scratch/alone-build.log" >&2
+    echo "check-library-package: a public header does not compile alone" >&2
+    exit 1; }
 
 # A client written for another minor version (0.1: tcsb::SoftBodyWorld, the one-body driver) must not find it.
 mkdir -p "$scratch/old-client"

@@ -26,8 +26,8 @@ declare -A minimum=([prefetch_footprint]=15 [prefetch_link_removals]=5)
 
 counts=$("$objdump" -d --no-show-raw-insn -C "$object" | awk '
   /^[0-9a-f]+ <.*>:$/ { fn = $0; next }
-  $2 ~ /^prefetch/ && fn ~ /TcSoftBody::prefetch_footprint\(/ { n["prefetch_footprint"]++ }
-  $2 ~ /^prefetch/ && fn ~ /TcSoftBody::prefetch_link_removals\(/ { n["prefetch_link_removals"]++ }
+  $2 ~ /^prefetch/ && fn ~ /TcSoftBody::Impl::prefetch_footprint\(/ { n["prefetch_footprint"]++ }
+  $2 ~ /^prefetch/ && fn ~ /TcSoftBody::Impl::prefetch_link_removals\(/ { n["prefetch_link_removals"]++ }
   END { for (f in n) print f, n[f] }')
 
 status=0
@@ -35,10 +35,10 @@ for fn in "${!minimum[@]}"; do
   found=$(awk -v f="$fn" '$1 == f { print $2 }' <<<"$counts")
   found=${found:-0}
   if [ "$found" -lt "${minimum[$fn]}" ]; then
-    echo "check-prefetch-emitted: TcSoftBody::$fn has $found prefetch instructions, expected at least ${minimum[$fn]}: the compiler dropped some (use asm volatile prefetches where a loop only prefetches)" >&2
+    echo "check-prefetch-emitted: TcSoftBody::Impl::$fn has $found prefetch instructions, expected at least ${minimum[$fn]}: the compiler dropped some (use asm volatile prefetches where a loop only prefetches)" >&2
     status=1
   else
-    echo "TcSoftBody::$fn: $found prefetch instructions (at least ${minimum[$fn]})"
+    echo "TcSoftBody::Impl::$fn: $found prefetch instructions (at least ${minimum[$fn]})"
   fi
 done
 exit $status

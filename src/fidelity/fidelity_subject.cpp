@@ -12,8 +12,9 @@
 #include "fidelity/surface_morph.h"
 #include "net/grid_resample.h"
 #include "softbody/bullet_setup.h"
+#include "softbody/op_sample.h"
 #include "softbody/plain_softbody.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "softbody/vector_conversion.h"
 
 namespace tcsb {
@@ -58,9 +59,9 @@ class TreeCutSubject final : public FidelitySubject {
       : world_(world), body_(std::move(body)), attachment_(world.attach(*body_)), controller_(std::move(controller)),
         budget_(budget) {
     if (morph) morph_.emplace();
-    body_->set_op_sink(&ops_);
+    body_->impl().set_op_sink(&ops_);
   }
-  ~TreeCutSubject() override { body_->set_op_sink(nullptr); }
+  ~TreeCutSubject() override { body_->impl().set_op_sink(nullptr); }
   void boundary(int step) override {
     const std::int64_t before = ops_.count;
     body_->advance_blends(OrderSettling::kByCaller);

@@ -7,6 +7,7 @@
 #include "fidelity/fidelity_subject.h"
 #include "fidelity/reconstruction.h"
 #include "softbody/divergence.h"
+#include "softbody/tc_softbody_impl.h"
 
 namespace tcsb {
 
@@ -25,7 +26,8 @@ FigureFrame capture(int step, const CaseBody& plain, const TcSoftBody& tc, const
   f.tcsb_links.reserve(static_cast<std::size_t>(tc.m_links.size()));
   for (int i = 0; i < tc.m_links.size(); ++i) {
     const btSoftBody::Link& l = tc.m_links[i];
-    f.tcsb_links.push_back({static_cast<int>(l.m_n[0] - first), static_cast<int>(l.m_n[1] - first), tc.link_role(i)});
+    f.tcsb_links.push_back(
+        {static_cast<int>(l.m_n[0] - first), static_cast<int>(l.m_n[1] - first), tc.impl().link_role(i)});
   }
   f.interpolations = tc.interpolations();
   return f;

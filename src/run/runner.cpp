@@ -12,6 +12,7 @@
 #include "run/case_summary.h"
 #include "run/out_of_memory.h"
 #include "softbody/divergence.h"
+#include "softbody/tc_softbody_impl.h"
 #include "suite/suite_axes.h"
 
 namespace tcsb {
@@ -93,7 +94,7 @@ class RepetitionRun {
     const StepClock::time_point built0 = StepClock::now();
     body_ = make_case_body(suite, key, world_, net_, seed);
     rep_.build_ms = ms_between(built0, StepClock::now());
-    if (TcSoftBody* tc = body_->tc()) tc->set_op_sink(&recorder_);
+    if (TcSoftBody* tc = body_->tc()) tc->impl().set_op_sink(&recorder_);
     if (measure == Measure::kInstructions) body_->set_meter(&meter_.emplace());
     // Every series reserved to its final size: no reallocation inside the timed loop, and the recorder takes the
     // bytes suite_memory.cpp counts (doubling growth would leave up to twice that allocated).
@@ -104,7 +105,7 @@ class RepetitionRun {
     for (std::vector<std::int32_t>* v : {&series.nodes, &series.links, &series.interpolations}) v->reserve(timed_steps);
   }
   ~RepetitionRun() {
-    if (TcSoftBody* tc = body_->tc()) tc->set_op_sink(nullptr);
+    if (TcSoftBody* tc = body_->tc()) tc->impl().set_op_sink(nullptr);
     body_->set_meter(nullptr);
   }
   RepetitionRun(const RepetitionRun&) = delete;

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "../net/lod_tree.h"
-#include "../softbody/op_sample.h"
+#include "../softbody/op_kind.h"
 
 namespace tcsb {
 

@@ -3,22 +3,9 @@
 
 #include <cstdint>
 
+#include "../softbody/op_kind.h"
+
 namespace tcsb {
-
-/// The four TreeCut operations (paper §3.3–3.4).
-enum class OpKind : std::uint8_t { kRefine, kEndRefine, kCoarse, kEndCoarse };
-inline constexpr int kOpKindCount = 4;
-
-/// Name used in reports: "refine", "end-refine", "coarse", "end-coarse".
-inline const char* op_kind_name(OpKind kind) {
-  switch (kind) {
-    case OpKind::kRefine: return "refine";
-    case OpKind::kEndRefine: return "end-refine";
-    case OpKind::kCoarse: return "coarse";
-    case OpKind::kEndCoarse: return "end-coarse";
-  }
-  return "?";
-}
 
 /// The work one operation did, counted where it is done (tc_operations.cpp, tc_softbody.cpp), so that the counts
 /// are deterministic and a loop over anything sized by the net would show in them. Each counting site adds one per

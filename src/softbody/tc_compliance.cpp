@@ -9,11 +9,11 @@
 #include <limits>
 
 #include "softbody/compliant_solver.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 
 namespace tcsb {
 
-double TcSoftBody::segment_stiffness(int xa, int za, int xb, int zb, bool committed) const {
+double TcSoftBody::Impl::segment_stiffness(int xa, int za, int xb, int zb, bool committed) const {
   const int width = tree().level_width(0), height = tree().level_height(0);
   const bool along_x = za == zb;
   // In the segment's own frame: `u` along it, `v` across it.
@@ -45,7 +45,7 @@ double TcSoftBody::segment_stiffness(int xa, int za, int xb, int zb, bool commit
                  : grid_link_stiffness(solver_, area, u1 - u0, hz, hx);
 }
 
-double TcSoftBody::link_stiffness(int link) const {
+double TcSoftBody::Impl::link_stiffness(int link) const {
   const CutLink& meta = link_meta_[static_cast<std::size_t>(link)];
   const CornerShares& a = corner_shares_[static_cast<std::size_t>(meta.a)];
   const CornerShares& b = corner_shares_[static_cast<std::size_t>(meta.b)];
@@ -54,7 +54,7 @@ double TcSoftBody::link_stiffness(int link) const {
   return segment_stiffness(a.x, a.z, b.x, b.z, meta.joins_committed());
 }
 
-double TcSoftBody::interface_link_stiffness(const InterfaceConstraint& c, TreeId corner) const {
+double TcSoftBody::Impl::interface_link_stiffness(const InterfaceConstraint& c, TreeId corner) const {
   // The far kind holds a fine node that lies on the coarse cell's edge at the edge's midpoint: an interpolated point
   // of the coarse cloth, not cloth of its own (x_h = (x_a + x_b) / 2), so it is held without compliance.
   if (c.kind == InterfaceKind::kVertexFar) return std::numeric_limits<double>::infinity();
@@ -69,7 +69,7 @@ double TcSoftBody::interface_link_stiffness(const InterfaceConstraint& c, TreeId
   return solver_.compliant.stretch_stiffness;  // (a midpoint constraint, or one that falls back to a plain link)
 }
 
-btScalar TcSoftBody::compliant_constant(btScalar w, double k, double alpha) const {
+btScalar TcSoftBody::Impl::compliant_constant(btScalar w, double k, double alpha) const {
   double c0 = compliant_link_constant(w, k, solver_.substep_dt());
   if (alpha != 1.0) c0 /= alpha;
   return static_cast<btScalar>(c0);

@@ -5,7 +5,7 @@
 // its share with the block's own node, so the shares always sum to the net's mass.
 #include <stdexcept>
 
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "softbody/vector_conversion.h"
 
 namespace tcsb {
@@ -19,7 +19,7 @@ double toward_next(int at, int rest, int next) {
 }
 }  // namespace
 
-void TcSoftBody::build_corner_shares() {
+void TcSoftBody::Impl::build_corner_shares() {
   const LodTree& lod = tree();
   if (lod.placement() != RestPlacement::kVertex)
     throw std::invalid_argument(
@@ -48,14 +48,14 @@ void TcSoftBody::build_corner_shares() {
   }
 }
 
-TreeId TcSoftBody::holding(int x, int z, bool committed) const {
+TreeId TcSoftBody::Impl::holding(int x, int z, bool committed) const {
   const CutState arriving_or_leaving = committed ? CutState::kArriving : CutState::kLeaving;
   for (TreeId id = tree().at(0, x, z); id != kNoTreeNode; id = tree().node(id).parent)
     if (state(id) == CutState::kActive || state(id) == arriving_or_leaving) return id;
   return kNoTreeNode;  // (not reached: each cut covers every leaf)
 }
 
-double TcSoftBody::cut_mass(TreeId id, bool committed) const {
+double TcSoftBody::Impl::cut_mass(TreeId id, bool committed) const {
   const CutState s = state(id);
   if (s != CutState::kActive && s != (committed ? CutState::kArriving : CutState::kLeaving)) return 0;
   const CornerShares& c = corner_shares_[static_cast<std::size_t>(id)];
@@ -89,7 +89,7 @@ double TcSoftBody::cut_mass(TreeId id, bool committed) const {
   return mass;
 }
 
-const std::vector<TreeId>& TcSoftBody::ring_nodes(TreeId block) {
+const std::vector<TreeId>& TcSoftBody::Impl::ring_nodes(TreeId block) {
   std::vector<TreeId>& nodes = settle_scratch_;
   nodes.clear();
   const auto add = [&](TreeId id) {
@@ -120,7 +120,7 @@ const std::vector<TreeId>& TcSoftBody::ring_nodes(TreeId block) {
   return nodes;
 }
 
-void TcSoftBody::settle_ring(TreeId block) {
+void TcSoftBody::Impl::settle_ring(TreeId block) {
   if (!cut_masses() && !vertex_edges()) return;  // (the paper's tree and masses: nothing around the block changes)
   const std::vector<TreeId>& nodes = ring_nodes(block);
   if (cut_masses()) settle_cut_masses(nodes);
@@ -130,13 +130,13 @@ void TcSoftBody::settle_ring(TreeId block) {
   for (const TreeId id : nodes)
     for (const std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
       Material* m = edge_material(li);
-      if (m_links[li].m_material == m) continue;
-      m_links[li].m_material = m;
+      if (body_.m_links[li].m_material == m) continue;
+      body_.m_links[li].m_material = m;
       refresh_link_constant(li);
     }
 }
 
-void TcSoftBody::settle_cut_masses(const std::vector<TreeId>& nodes) {
+void TcSoftBody::Impl::settle_cut_masses(const std::vector<TreeId>& nodes) {
   // The mass that moves keeps its momentum: nodes that lose mass keep their velocity, and what they lose goes to the
   // nodes that gain, each in proportion to its gain (pinned nodes keep the pin's velocity whatever they gain).
   double gained = 0;
@@ -148,7 +148,7 @@ void TcSoftBody::settle_cut_masses(const std::vector<TreeId>& nodes) {
     target[i] = target_mass(id);
     const double change = target[i] - record(id).sim_mass;
     if (change < 0) {
-      momentum -= change * to_eigen(m_nodes[record(id).bullet].m_v);
+      momentum -= change * to_eigen(body_.m_nodes[record(id).bullet].m_v);
     } else if (change > 0 && !tree().node(id).pinned()) {
       gained += change;
     }
@@ -158,7 +158,7 @@ void TcSoftBody::settle_cut_masses(const std::vector<TreeId>& nodes) {
     const double before = record(id).sim_mass, change = target[i] - before;
     if (change == 0) continue;
     if (change > 0 && gained > 0 && !tree().node(id).pinned()) {
-      Node& n = m_nodes[record(id).bullet];
+      Node& n = body_.m_nodes[record(id).bullet];
       n.m_v = to_bullet((before * to_eigen(n.m_v) + (change / gained) * momentum) / target[i]);
     }
     set_simulated_mass(id, target[i]);

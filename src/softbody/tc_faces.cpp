@@ -10,7 +10,7 @@
 #include <string>
 
 #include "softbody/bullet_setup.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 
 namespace tcsb {
 
@@ -27,7 +27,7 @@ btScalar rest_turn(const btVector3& a, const btVector3& b, const btVector3& c) {
 
 }  // namespace
 
-void TcSoftBody::cut_faces(std::vector<std::array<TreeId, 3>>& out, std::vector<TreeId>& owner) const {
+void TcSoftBody::Impl::cut_faces(std::vector<std::array<TreeId, 3>>& out, std::vector<TreeId>& owner) const {
   out.clear();
   const LodTree& lod = tree();
   const int width = lod.level_width(0), height = lod.level_height(0);
@@ -82,31 +82,31 @@ void TcSoftBody::cut_faces(std::vector<std::array<TreeId, 3>>& out, std::vector<
   }
 }
 
-void TcSoftBody::enable_faces() {
+void TcSoftBody::Impl::enable_faces() {
   if (faces_enabled_) return;
   faces_enabled_ = true;
   // The most a cut can have: the finest one's two per cell.
   const LodTree& lod = tree();
-  m_faces.reserve(2 * (lod.level_width(0) - 1) * (lod.level_height(0) - 1));
+  body_.m_faces.reserve(2 * (lod.level_width(0) - 1) * (lod.level_height(0) - 1));
   faces_stale_ = true;
   refresh_faces();
 }
 
-void TcSoftBody::refresh_faces() {
+void TcSoftBody::Impl::refresh_faces() {
   if (!faces_enabled_ || !faces_stale_) return;
   faces_stale_ = false;
   ++face_rebuilds_;
   cut_faces(face_scratch_, owner_scratch_);
-  m_faces.resize(0);
-  Node* const base = &m_nodes[0];
-  for (const auto& f : face_scratch_) append_face(*this, bullet_index(f[0]), bullet_index(f[1]), bullet_index(f[2]));
+  body_.m_faces.resize(0);
+  Node* const base = &body_.m_nodes[0];
+  for (const auto& f : face_scratch_) append_face(body_, bullet_index(f[0]), bullet_index(f[1]), bullet_index(f[2]));
   // Areas at rest, as a plain body's are (Bullet computes them once, at rest, and never again): each face's the
   // doubled area Bullet's AreaOf gives, each node's the mean of its faces' (btSoftBody::updateArea), from the rest
   // points of the blocks, so a refine or coarse does not take the stretched shape of the moment for the cloth's.
-  const int n = m_nodes.size();
+  const int n = body_.m_nodes.size();
   area_scratch_.assign(2 * static_cast<std::size_t>(n), 0);
-  for (int i = 0; i < m_faces.size(); ++i) {
-    Face& face = m_faces[i];
+  for (int i = 0; i < body_.m_faces.size(); ++i) {
+    Face& face = body_.m_faces[i];
     const auto& ids = face_scratch_[static_cast<std::size_t>(i)];
     face.m_ra = btCross(record(ids[1]).rest_position() - record(ids[0]).rest_position(),
                         record(ids[2]).rest_position() - record(ids[0]).rest_position())
@@ -119,30 +119,32 @@ void TcSoftBody::refresh_faces() {
   }
   for (int i = 0; i < n; ++i) {
     const btScalar count = area_scratch_[static_cast<std::size_t>(n + i)];
-    m_nodes[i].m_area = count > 0 ? area_scratch_[static_cast<std::size_t>(i)] / count : btScalar(0);
+    body_.m_nodes[i].m_area = count > 0 ? area_scratch_[static_cast<std::size_t>(i)] / count : btScalar(0);
   }
-  updateNormals();  // what the step's aerodynamics reads; Bullet's integrateMotion would do it only after the step
+  body_
+      .updateNormals();  // what the step's aerodynamics reads; Bullet's integrateMotion would do it only after the step
 }
 
-void TcSoftBody::validate_faces(const std::function<void(const std::string&)>& fail) const {
+void TcSoftBody::Impl::validate_faces(const ProblemSink& fail) const {
   if (!faces_enabled_) {
-    if (m_faces.size() != 0) fail("faces present without enable_faces()");
+    if (body_.m_faces.size() != 0) fail("faces present without enable_faces()");
     return;
   }
   if (faces_stale_) return;  // rebuilt before the next step: checked then
   std::vector<std::array<TreeId, 3>> expected;
   std::vector<TreeId> owner;
   cut_faces(expected, owner);
-  if (static_cast<std::size_t>(m_faces.size()) != expected.size()) {
-    fail(std::to_string(m_faces.size()) + " faces where the committed cut has " + std::to_string(expected.size()));
+  if (static_cast<std::size_t>(body_.m_faces.size()) != expected.size()) {
+    fail(std::to_string(body_.m_faces.size()) + " faces where the committed cut has " +
+         std::to_string(expected.size()));
     return;
   }
   double area = 0;
-  for (int i = 0; i < m_faces.size(); ++i) {
-    const Face& face = m_faces[i];
+  for (int i = 0; i < body_.m_faces.size(); ++i) {
+    const Face& face = body_.m_faces[i];
     const auto& ids = expected[static_cast<std::size_t>(i)];
     for (int k = 0; k < 3; ++k)
-      if (face.m_n[k] != &m_nodes[bullet_index(ids[static_cast<std::size_t>(k)])])
+      if (face.m_n[k] != &body_.m_nodes[bullet_index(ids[static_cast<std::size_t>(k)])])
         fail("face " + std::to_string(i) + ": not over the committed cut's nodes");
     const btVector3 a = record(ids[0]).rest_position(), b = record(ids[1]).rest_position(),
                     c = record(ids[2]).rest_position();

@@ -11,11 +11,11 @@
 
 #include "softbody/compliant_solver.h"
 #include "softbody/fan_rule.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 
 namespace tcsb {
 
-void TcSoftBody::pair_into_interface(int link) {
+void TcSoftBody::Impl::pair_into_interface(int link) {
   const CutLink& added = link_meta_[static_cast<std::size_t>(link)];
   if (added.role == LinkRole::kTether) return;  // a tether joins a node to its own children: no interface
   const LodNode& a = tree().node(added.a);
@@ -42,15 +42,15 @@ void TcSoftBody::pair_into_interface(int link) {
     if (tree().placement() == RestPlacement::kVertex) make_vertex_interface(interfaces_.back());
     link_meta_[static_cast<std::size_t>(li)].interface = index;
     link_meta_[static_cast<std::size_t>(link)].interface = index;
-    m_links[li].m_material = edge_material(li);  // (a kept handle on a -x or -z side: the finer level's)
-    m_links[link].m_material = edge_material(link);
+    body_.m_links[li].m_material = edge_material(li);  // (a kept handle on a -x or -z side: the finer level's)
+    body_.m_links[link].m_material = edge_material(link);
     write_link_constant(li);
     write_link_constant(link);
     return;
   }
 }
 
-void TcSoftBody::make_vertex_interface(InterfaceConstraint& c) const {
+void TcSoftBody::Impl::make_vertex_interface(InterfaceConstraint& c) const {
   const LodNode& block = tree().node(c.coarse);
   const LodNode& f = tree().node(c.fine[0]);
   const btVector3 r = record(c.coarse).rest_position();
@@ -84,11 +84,11 @@ void TcSoftBody::make_vertex_interface(InterfaceConstraint& c) const {
   c.rest = (hanging - (other + record(c.corner_leaf).rest_position()) * btScalar(0.5)).length();
 }
 
-btScalar TcSoftBody::level_stiffness(int level) const {
-  return calibrated() ? level_materials_[static_cast<std::size_t>(level)]->m_kLST : m_materials[0]->m_kLST;
+btScalar TcSoftBody::Impl::level_stiffness(int level) const {
+  return calibrated() ? level_materials_[static_cast<std::size_t>(level)]->m_kLST : body_.m_materials[0]->m_kLST;
 }
 
-btSoftBody::Material* TcSoftBody::edge_material(int link) const {
+btSoftBody::Material* TcSoftBody::Impl::edge_material(int link) const {
   const CutLink& meta = link_meta_[static_cast<std::size_t>(link)];
   if (!vertex_edges() || meta.role == LinkRole::kTether) return link_material(meta.a, meta.b);
   // On a first-leaf tree a link along a row or column is the edge between two cells of the cut: the block its lower
@@ -105,7 +105,7 @@ btSoftBody::Material* TcSoftBody::edge_material(int link) const {
   return level_materials_[static_cast<std::size_t>(level)];
 }
 
-btScalar TcSoftBody::interface_stiffness(int fine_level) const {
+btScalar TcSoftBody::Impl::interface_stiffness(int fine_level) const {
   // The constraint spans cloth of both levels (from the coarse node to its block's edge, then into the finer
   // block), so it takes the mean of their calibrated stiffnesses. Measured on fixed cuts of the converged suite's
   // nets against the coarser level's stiffness alone, the finer's, their series combinations and fixed values
@@ -114,12 +114,12 @@ btScalar TcSoftBody::interface_stiffness(int fine_level) const {
   return (level_stiffness(fine_level) + level_stiffness(fine_level + 1)) / 2;
 }
 
-void TcSoftBody::dissolve_interface(int link) {
+void TcSoftBody::Impl::dissolve_interface(int link) {
   const auto index = static_cast<std::size_t>(link_meta_[static_cast<std::size_t>(link)].interface);
   const InterfaceConstraint gone = interfaces_[index];
   for (const std::int32_t handle : gone.links) link_meta_[static_cast<std::size_t>(handle)].interface = -1;
   const std::int32_t partner = gone.links[0] == link ? gone.links[1] : gone.links[0];
-  m_links[partner].m_material = edge_material(partner);
+  body_.m_links[partner].m_material = edge_material(partner);
   write_link_constant(partner);  // a plain link again, until its own removal (both go in the same operation)
   if (index + 1 != interfaces_.size()) {
     interfaces_[index] = interfaces_.back();
@@ -129,7 +129,7 @@ void TcSoftBody::dissolve_interface(int link) {
   interfaces_.pop_back();
 }
 
-void TcSoftBody::prepare_interfaces() {
+void TcSoftBody::Impl::prepare_interfaces() {
   prepared_interfaces_.resize(interfaces_.size());
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {
     const InterfaceConstraint& c = interfaces_[i];
@@ -137,9 +137,9 @@ void TcSoftBody::prepare_interfaces() {
     btScalar rest = c.rest;
     TreeId corner = kNoTreeNode;  // vertex kinds: the node resting at the corner the constraint reaches, if any
     if (c.kind == InterfaceKind::kMidpoint) {
-      p.coarse = &m_nodes[record(c.coarse).bullet];
-      p.fine[0] = &m_nodes[record(c.fine[0]).bullet];
-      p.fine[1] = &m_nodes[record(c.fine[1]).bullet];
+      p.coarse = &body_.m_nodes[record(c.coarse).bullet];
+      p.fine[0] = &body_.m_nodes[record(c.fine[0]).bullet];
+      p.fine[1] = &body_.m_nodes[record(c.fine[1]).bullet];
     } else {  // the hanging fine node to the midpoint of two nodes: near, the coarse one and its corner's; far, the
               // kept fine one and the diagonal corner's (make_vertex_interface)
       const TreeId hanging = c.fine[c.kept == 0 ? 1 : 0];
@@ -160,9 +160,9 @@ void TcSoftBody::prepare_interfaces() {
       } else {
         corner = at_corner;
       }
-      p.coarse = &m_nodes[record(hanging).bullet];
-      p.fine[0] = &m_nodes[record(first).bullet];
-      p.fine[1] = &m_nodes[record(at_corner).bullet];
+      p.coarse = &body_.m_nodes[record(hanging).bullet];
+      p.fine[0] = &body_.m_nodes[record(first).bullet];
+      p.fine[1] = &body_.m_nodes[record(at_corner).bullet];
     }
     // Position-based dynamics for C(x) = |(x_f0 + x_f1)/2 - x_c| - rest: gradients -n for the coarse node and n/2
     // for each fine one, so the generalised inverse mass is w_c + (w_f0 + w_f1)/4 (w_c + w_f when both are one
@@ -219,7 +219,7 @@ void project_interface_accumulating(Eigen::Vector3d& c, Eigen::Vector3d& f0, Eig
 
 }  // namespace
 
-void TcSoftBody::project_interfaces() {
+void TcSoftBody::Impl::project_interfaces() {
   for (const PreparedInterface& p : prepared_interfaces_) {
     if (p.c0 <= 0) continue;
     project_interface(p.coarse->m_x, p.fine[0]->m_x, p.fine[1]->m_x, p.coarse->m_im, p.fine[0]->m_im, p.fine[1]->m_im,
@@ -227,8 +227,8 @@ void TcSoftBody::project_interfaces() {
   }
 }
 
-void TcSoftBody::project_interfaces(SubstepPositions& x) {
-  const Node* base = &m_nodes[0];
+void TcSoftBody::Impl::project_interfaces(SubstepPositions& x) {
+  const Node* base = &body_.m_nodes[0];
   const bool accumulate = !x.constraint_lambda.empty();  // (more than one pass a small step: solve_constraints)
   for (std::size_t i = 0; i < prepared_interfaces_.size(); ++i) {
     const PreparedInterface& p = prepared_interfaces_[i];
@@ -245,58 +245,62 @@ void TcSoftBody::project_interfaces(SubstepPositions& x) {
   }
 }
 
-void TcSoftBody::solve_constraints() {
+void TcSoftBody::Impl::solve_constraints() {
   if (solver_.compliant_model()) {  // the compliant material's small steps, the interfaces in every one of them
     prepare_interfaces();
     substep_positions_.constraint_lambda.resize(solver_.compliant.passes > 1 ? prepared_interfaces_.size() : 0);
-    solve_in_substeps(*this, solver_, substep_positions_, [this](SubstepPositions& x) { project_interfaces(x); });
+    solve_in_substeps(body_, solver_, substep_positions_, [this](SubstepPositions& x) { project_interfaces(x); });
     return;
   }
   if (interfaces_.empty()) {
-    btSoftBody::solveConstraints();
+    body_.btSoftBody::solveConstraints();
     return;
   }
   // Bullet's btSoftBody::solveConstraints, step for step, with the interfaces projected after the configured position
   // solvers of every iteration; the interface handles (m_c0 = 0) take no part in the velocity solve. The cluster
   // steps stay although TC-SB has no clusters: they cost what they cost a plain body (two node-sized arrays
   // allocated and zeroed), so the comparison stays fair.
-  applyClusters(false);
-  for (int i = 0; i < m_links.size(); ++i) {
-    Link& l = m_links[i];
+  body_.applyClusters(false);
+  for (int i = 0; i < body_.m_links.size(); ++i) {
+    Link& l = body_.m_links[i];
     l.m_c3 = l.m_n[1]->m_q - l.m_n[0]->m_q;
     l.m_c2 = l.m_c0 > 0 ? 1 / (l.m_c3.length2() * l.m_c0) : btScalar(0);
   }
-  prepare_anchors(*this);
+  prepare_anchors(body_);
   prepare_interfaces();
-  if (m_cfg.viterations > 0) {
-    for (int iteration = 0; iteration < m_cfg.viterations; ++iteration)
-      for (int s = 0; s < m_cfg.m_vsequence.size(); ++s) getSolver(m_cfg.m_vsequence[s])(this, 1);
-    for (int i = 0; i < m_nodes.size(); ++i) m_nodes[i].m_x = m_nodes[i].m_q + m_nodes[i].m_v * m_sst.sdt;
+  if (body_.m_cfg.viterations > 0) {
+    for (int iteration = 0; iteration < body_.m_cfg.viterations; ++iteration)
+      for (int s = 0; s < body_.m_cfg.m_vsequence.size(); ++s) body_.getSolver(body_.m_cfg.m_vsequence[s])(&body_, 1);
+    for (int i = 0; i < body_.m_nodes.size(); ++i)
+      body_.m_nodes[i].m_x = body_.m_nodes[i].m_q + body_.m_nodes[i].m_v * body_.m_sst.sdt;
   }
-  if (m_cfg.piterations > 0) {
-    for (int iteration = 0; iteration < m_cfg.piterations; ++iteration) {
-      const btScalar ti = iteration / static_cast<btScalar>(m_cfg.piterations);
-      for (int s = 0; s < m_cfg.m_psequence.size(); ++s) getSolver(m_cfg.m_psequence[s])(this, 1, ti);
+  if (body_.m_cfg.piterations > 0) {
+    for (int iteration = 0; iteration < body_.m_cfg.piterations; ++iteration) {
+      const btScalar ti = iteration / static_cast<btScalar>(body_.m_cfg.piterations);
+      for (int s = 0; s < body_.m_cfg.m_psequence.size(); ++s)
+        body_.getSolver(body_.m_cfg.m_psequence[s])(&body_, 1, ti);
       project_interfaces();
     }
-    const btScalar vc = m_sst.isdt * (1 - m_cfg.kDP);
-    for (int i = 0; i < m_nodes.size(); ++i) {
-      Node& n = m_nodes[i];
+    const btScalar vc = body_.m_sst.isdt * (1 - body_.m_cfg.kDP);
+    for (int i = 0; i < body_.m_nodes.size(); ++i) {
+      Node& n = body_.m_nodes[i];
       n.m_v = (n.m_x - n.m_q) * vc;
       n.m_f = btVector3(0, 0, 0);
     }
   }
-  if (m_cfg.diterations > 0) {
-    const btScalar vcf = m_cfg.kVCF * m_sst.isdt;
-    for (int i = 0; i < m_nodes.size(); ++i) m_nodes[i].m_q = m_nodes[i].m_x;
-    for (int iteration = 0; iteration < m_cfg.diterations; ++iteration) {
-      for (int s = 0; s < m_cfg.m_dsequence.size(); ++s) getSolver(m_cfg.m_dsequence[s])(this, 1, 0);
+  if (body_.m_cfg.diterations > 0) {
+    const btScalar vcf = body_.m_cfg.kVCF * body_.m_sst.isdt;
+    for (int i = 0; i < body_.m_nodes.size(); ++i) body_.m_nodes[i].m_q = body_.m_nodes[i].m_x;
+    for (int iteration = 0; iteration < body_.m_cfg.diterations; ++iteration) {
+      for (int s = 0; s < body_.m_cfg.m_dsequence.size(); ++s)
+        body_.getSolver(body_.m_cfg.m_dsequence[s])(&body_, 1, 0);
       project_interfaces();
     }
-    for (int i = 0; i < m_nodes.size(); ++i) m_nodes[i].m_v += (m_nodes[i].m_x - m_nodes[i].m_q) * vcf;
+    for (int i = 0; i < body_.m_nodes.size(); ++i)
+      body_.m_nodes[i].m_v += (body_.m_nodes[i].m_x - body_.m_nodes[i].m_q) * vcf;
   }
-  dampClusters();
-  applyClusters(true);
+  body_.dampClusters();
+  body_.applyClusters(true);
 }
 
 }  // namespace tcsb

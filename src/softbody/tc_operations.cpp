@@ -8,7 +8,7 @@
 
 #include "net/cut_adjacency.h"
 #include "softbody/affine_fit.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "softbody/vector_conversion.h"
 
 namespace tcsb {
@@ -29,30 +29,30 @@ bool is_child(const LodNode& block, TreeId n) {
 
 // ---- admission -----------------------------------------------------------------------------------------------
 
-bool TcSoftBody::anchored(TreeId id) const {
-  if (m_anchors.size() == 0) return false;  // the usual case, without reading the node's record
+bool TcSoftBody::Impl::anchored(TreeId id) const {
+  if (body_.m_anchors.size() == 0) return false;  // the usual case, without reading the node's record
   const int index = bullet_index(id);
   if (index < 0) return false;
-  for (int a = 0; a < m_anchors.size(); ++a)
-    if (m_anchors[a].m_node == &m_nodes[index]) return true;
+  for (int a = 0; a < body_.m_anchors.size(); ++a)
+    if (body_.m_anchors[a].m_node == &body_.m_nodes[index]) return true;
   return false;
 }
 
-TreeId TcSoftBody::nearest_child(TreeId parent) const {
+TreeId TcSoftBody::Impl::nearest_child(TreeId parent) const {
   const LodNode& node = tree().node(parent);
-  const btVector3& x = m_nodes[record(parent).bullet].m_x;
+  const btVector3& x = body_.m_nodes[record(parent).bullet].m_x;
   TreeId best = node.children[0];
   btScalar best_d2 = SIMD_INFINITY;
   for (int i = 0; i < node.child_count; ++i) {
     const TreeId c = node.children[static_cast<std::size_t>(i)];
     if (record(c).bullet < 0) continue;
-    const btScalar d2 = (m_nodes[record(c).bullet].m_x - x).length2();
+    const btScalar d2 = (body_.m_nodes[record(c).bullet].m_x - x).length2();
     if (d2 < best_d2) best_d2 = d2, best = c;
   }
   return best;
 }
 
-OpCheck TcSoftBody::can_refine(TreeId id) const {
+OpCheck TcSoftBody::Impl::can_refine(TreeId id) const {
   OpCheck check;
   const LodNode& node = tree().node(id);
   if (state(id) != CutState::kActive || node.is_leaf() || anchored(id)) return check;
@@ -68,7 +68,7 @@ OpCheck TcSoftBody::can_refine(TreeId id) const {
   return check;
 }
 
-OpCheck TcSoftBody::can_coarsen(TreeId parent) const {
+OpCheck TcSoftBody::Impl::can_coarsen(TreeId parent) const {
   OpCheck check;
   const LodNode& node = tree().node(parent);
   if (state(parent) != CutState::kOff || node.is_leaf() || !node.simulable()) return check;
@@ -90,7 +90,7 @@ OpCheck TcSoftBody::can_coarsen(TreeId parent) const {
 
 // ---- placement -----------------------------------------------------------------------------------------------
 
-Eigen::Matrix<double, 3, 2> TcSoftBody::deformation(TreeId id) const {
+Eigen::Matrix<double, 3, 2> TcSoftBody::Impl::deformation(TreeId id) const {
   // The paper places children rigidly and names deformation-aware placement as future work (§7).
   if (settings_.placement == Placement::kRigid) {
     Eigen::Matrix<double, 3, 2> f;
@@ -100,10 +100,10 @@ Eigen::Matrix<double, 3, 2> TcSoftBody::deformation(TreeId id) const {
   return local_affine_fit(id);
 }
 
-Eigen::Matrix<double, 3, 2> TcSoftBody::local_affine_fit(TreeId id) const {
+Eigen::Matrix<double, 3, 2> TcSoftBody::Impl::local_affine_fit(TreeId id) const {
   // Least-squares affine map F (3x2) from rest offsets in the net's plane (x, z) to current offsets, fitted over
   // the node's neighbours: minimises sum |(x_n - x_p) - F (r_n - r_p)|^2.
-  const btVector3& xp = m_nodes[record(id).bullet].m_x;
+  const btVector3& xp = body_.m_nodes[record(id).bullet].m_x;
   const btVector3 rp = record(id).rest_position();
   Eigen::Matrix2d rr = Eigen::Matrix2d::Zero();
   Eigen::Matrix<double, 3, 2> xr = Eigen::Matrix<double, 3, 2>::Zero();
@@ -112,7 +112,7 @@ Eigen::Matrix<double, 3, 2> TcSoftBody::local_affine_fit(TreeId id) const {
     const TreeId n = meta.other(id);
     const NodeRecord& rn = record(n);
     const btVector3 dr = rn.rest_position() - rp;
-    const btVector3 dx = m_nodes[rn.bullet].m_x - xp;
+    const btVector3 dx = body_.m_nodes[rn.bullet].m_x - xp;
     const Eigen::Vector2d r(dr.x(), dr.z());
     rr += r * r.transpose();
     xr += to_eigen(dx) * r.transpose();
@@ -120,8 +120,8 @@ Eigen::Matrix<double, 3, 2> TcSoftBody::local_affine_fit(TreeId id) const {
   return solve_affine_fit(rr, xr);
 }
 
-btVector3 TcSoftBody::place_child(TreeId parent, TreeId child, const btVector3& parent_x,
-                                  const Eigen::Matrix<double, 3, 2>& deformation) const {
+btVector3 TcSoftBody::Impl::place_child(TreeId parent, TreeId child, const btVector3& parent_x,
+                                        const Eigen::Matrix<double, 3, 2>& deformation) const {
   if (tree().node(child).pinned()) return pin_position(child);  // where the pins are now (moved along their path)
   const btVector3 d = record(child).rest_position() - record(parent).rest_position();
   if (settings_.placement == Placement::kRigid) return parent_x + d;
@@ -130,7 +130,7 @@ btVector3 TcSoftBody::place_child(TreeId parent, TreeId child, const btVector3& 
 
 // ---- begin operations ----------------------------------------------------------------------------------------
 
-std::int32_t TcSoftBody::new_op(OpKind kind, TreeId parent) {
+std::int32_t TcSoftBody::Impl::new_op(OpKind kind, TreeId parent) {
   std::int32_t index;
   if (!free_ops_.empty()) {
     index = free_ops_.back();
@@ -148,13 +148,13 @@ std::int32_t TcSoftBody::new_op(OpKind kind, TreeId parent) {
   return index;
 }
 
-void TcSoftBody::begin_refine(TreeId p) {
+void TcSoftBody::Impl::begin_refine(TreeId p) {
   const std::int64_t t0 = op_clock();
   prefetch_footprint(p);
   work_ = {.interior = neighbourhood_inside_net(tree(), p)};
   const LodNode& pn = tree().node(p);
   const std::int32_t op = new_op(OpKind::kRefine, p);
-  const Node& parent_node = m_nodes[record(p).bullet];
+  const Node& parent_node = body_.m_nodes[record(p).bullet];
   const btVector3 xp = parent_node.m_x, vp = parent_node.m_v;
   ++work_.tree_records;  // p's LOD node, record and state
   ++work_.nodes;         // p's position and velocity
@@ -211,7 +211,7 @@ void TcSoftBody::begin_refine(TreeId p) {
   emit(OpKind::kRefine, p, t1 - t0, op_clock() - t1);
 }
 
-void TcSoftBody::begin_coarse(TreeId p) {
+void TcSoftBody::Impl::begin_coarse(TreeId p) {
   const std::int64_t t0 = op_clock();
   prefetch_footprint(p);
   work_ = {.interior = neighbourhood_inside_net(tree(), p)};
@@ -225,7 +225,7 @@ void TcSoftBody::begin_coarse(TreeId p) {
   double children_mass = 0;  // with block masses pn.mass, summed in the same order
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
-    const Node& n = m_nodes[record(c).bullet];
+    const Node& n = body_.m_nodes[record(c).bullet];
     const double m = record(c).sim_mass;
     children_mass += m;
     ++work_.tree_records;  // c's LOD node, record, state and incidence list
@@ -269,7 +269,7 @@ void TcSoftBody::begin_coarse(TreeId p) {
   emit(OpKind::kCoarse, p, t1 - t0, op_clock() - t1);
 }
 
-int TcSoftBody::coarsen_to_level(int level) {
+int TcSoftBody::Impl::coarsen_to_level(int level) {
   const LodTree& lod = tree();
   for (int l = 1; l <= level && l < lod.level_count(); ++l) {
     for (bool began = true; began;) {
@@ -291,7 +291,7 @@ int TcSoftBody::coarsen_to_level(int level) {
 
 // ---- blending and end operations -----------------------------------------------------------------------------
 
-void TcSoftBody::advance_blends(OrderSettling settling) {
+void TcSoftBody::Impl::advance_blends(OrderSettling settling) {
   // Backwards, so ending an operation (which moves the last in-flight entry into its slot) skips nothing.
   for (std::size_t i = inflight_.size(); i-- > 0;) {
     const std::int32_t index = inflight_[i];
@@ -311,20 +311,20 @@ void TcSoftBody::advance_blends(OrderSettling settling) {
     ramp(op.parent);
     for (int c = 0; c < pn.child_count; ++c) ramp(pn.children[static_cast<std::size_t>(c)]);
   }
-  const bool large = settings_.restore_order && m_nodes.size() >= settings_.restore_order_min_nodes;
-  if (large) dbvt_peak_nodes_ = std::max(dbvt_peak_nodes_, m_nodes.size());
+  const bool large = settings_.restore_order && body_.m_nodes.size() >= settings_.restore_order_min_nodes;
+  if (large) dbvt_peak_nodes_ = std::max(dbvt_peak_nodes_, body_.m_nodes.size());
   const bool rebuild =
-      large && settings_.rebuild_dbvt && dbvt_peak_nodes_ >= TcSettings::kDbvtRebuildShrink * m_nodes.size();
+      large && settings_.rebuild_dbvt && dbvt_peak_nodes_ >= TcSettings::kDbvtRebuildShrink * body_.m_nodes.size();
   // The rebuilt tree takes its leaves in the node array's order: that order must be the settled one.
   if (settings_.exact_order && (settling == OrderSettling::kNow || rebuild))
     settle_order();
   else if (!settings_.exact_order && large &&
-           displaced_ > TcSettings::kReorderFraction * static_cast<double>(m_nodes.size() + m_links.size()))
+           displaced_ > TcSettings::kReorderFraction * static_cast<double>(body_.m_nodes.size() + body_.m_links.size()))
     restore_order();
   if (rebuild) rebuild_node_dbvt();
 }
 
-void TcSoftBody::end_op(std::int32_t index) {
+void TcSoftBody::Impl::end_op(std::int32_t index) {
   const Op op = ops_[static_cast<std::size_t>(index)];
   if (op.kind == OpKind::kRefine)
     end_refine(op);
@@ -339,7 +339,7 @@ void TcSoftBody::end_op(std::int32_t index) {
   free_ops_.push_back(index);
 }
 
-void TcSoftBody::end_refine(const Op& op) {
+void TcSoftBody::Impl::end_refine(const Op& op) {
   const std::int64_t t0 = op_clock();
   const TreeId p = op.parent;
   const LodNode& pn = tree().node(p);
@@ -352,7 +352,7 @@ void TcSoftBody::end_refine(const Op& op) {
   const std::int64_t t1 = op_clock();
 
   // The parent's half of the mass and its momentum go to the children in proportion to their masses.
-  const Eigen::Vector3d vp = to_eigen(m_nodes[record(p).bullet].m_v);
+  const Eigen::Vector3d vp = to_eigen(body_.m_nodes[record(p).bullet].m_v);
   ++work_.nodes;  // p's velocity
   // (With masses that follow the cut, in proportion to the halves they carry; settle_ring() follows.)
   double children_half = 0;
@@ -364,7 +364,7 @@ void TcSoftBody::end_refine(const Op& op) {
     ++work_.tree_records;  // c's LOD node and record
     ++work_.nodes;         // c's velocity
     const double full = cut_masses() ? (1 + parent_share) * record(c).sim_mass : tree().node(c).mass;
-    Node& n = m_nodes[record(c).bullet];
+    Node& n = body_.m_nodes[record(c).bullet];
     const double received = parent_share * (cut_masses() ? record(c).sim_mass : full);
     if (!tree().node(c).pinned()) n.m_v = to_bullet((record(c).sim_mass * to_eigen(n.m_v) + received * vp) / full);
     settle_in_cut(c, full);
@@ -379,7 +379,7 @@ void TcSoftBody::end_refine(const Op& op) {
   emit(OpKind::kEndRefine, p, t2 - t1, (t1 - t0) + (t3 - t2));
 }
 
-void TcSoftBody::end_coarse(const Op& op) {
+void TcSoftBody::Impl::end_coarse(const Op& op) {
   const std::int64_t t0 = op_clock();
   const TreeId p = op.parent;
   const LodNode& pn = tree().node(p);
@@ -396,14 +396,14 @@ void TcSoftBody::end_coarse(const Op& op) {
   const std::int64_t t1 = op_clock();
 
   // The children's halves of the mass and their momentum go to the parent.
-  Node& parent_node = m_nodes[record(p).bullet];
+  Node& parent_node = body_.m_nodes[record(p).bullet];
   ++work_.nodes;  // p's velocity
   Eigen::Vector3d momentum = record(p).sim_mass * to_eigen(parent_node.m_v);
   double mass = record(p).sim_mass;
   for (int i = 0; i < pn.child_count; ++i) {
     const TreeId c = pn.children[static_cast<std::size_t>(i)];
     ++work_.nodes;  // c's velocity
-    momentum += record(c).sim_mass * to_eigen(m_nodes[record(c).bullet].m_v);
+    momentum += record(c).sim_mass * to_eigen(body_.m_nodes[record(c).bullet].m_v);
     mass += record(c).sim_mass;
   }
   if (!cut_masses()) mass = pn.mass;  // the same sum, kept exact
@@ -422,7 +422,7 @@ void TcSoftBody::end_coarse(const Op& op) {
   emit(OpKind::kEndCoarse, p, t2 - t1, (t1 - t0) + (t3 - t2));
 }
 
-void TcSoftBody::make_faded_in_links_steady(TreeId id) {
+void TcSoftBody::Impl::make_faded_in_links_steady(TreeId id) {
   for (std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
     CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
     ++work_.links;
@@ -433,28 +433,28 @@ void TcSoftBody::make_faded_in_links_steady(TreeId id) {
   }
 }
 
-void TcSoftBody::settle_in_cut(TreeId id, double mass) {
+void TcSoftBody::Impl::settle_in_cut(TreeId id, double mass) {
   set_simulated_mass(id, mass);
   state_[static_cast<std::size_t>(id)] = CutState::kActive;
   // Its collision shape joins, unless an application anchored it meanwhile (appendAnchor sets the same flag).
-  if (!settings_.arrivals_collide && !anchored(id)) m_nodes[record(id).bullet].m_battach = 0;
+  if (!settings_.arrivals_collide && !anchored(id)) body_.m_nodes[record(id).bullet].m_battach = 0;
   record(id).op = -1;
 }
 
-void TcSoftBody::retire_from_cut(TreeId id) {
+void TcSoftBody::Impl::retire_from_cut(TreeId id) {
   remove_node(id);
   record(id).sim_mass = 0;
   state_[static_cast<std::size_t>(id)] = CutState::kOff;
   record(id).op = -1;
 }
 
-std::int64_t TcSoftBody::op_clock() const { return sink_ != nullptr ? now_ns() : 0; }
+std::int64_t TcSoftBody::Impl::op_clock() const { return sink_ != nullptr ? now_ns() : 0; }
 
-void TcSoftBody::emit(OpKind kind, TreeId block, std::int64_t node_ns, std::int64_t link_ns) {
+void TcSoftBody::Impl::emit(OpKind kind, TreeId block, std::int64_t node_ns, std::int64_t link_ns) {
   if (listener_ != nullptr) listener_->cut_changed(kind, block);
   if (sink_ == nullptr) return;
-  sink_->record({kind, static_cast<std::int32_t>(node_ns), static_cast<std::int32_t>(link_ns), m_nodes.size(),
-                 m_links.size(), work_});
+  sink_->record({kind, static_cast<std::int32_t>(node_ns), static_cast<std::int32_t>(link_ns), body_.m_nodes.size(),
+                 body_.m_links.size(), work_});
 }
 
 }  // namespace tcsb

@@ -14,7 +14,7 @@
 #endif
 
 #include "softbody/bullet_setup.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 
 namespace tcsb {
 
@@ -54,9 +54,9 @@ void invert(const std::vector<std::int32_t>& order, std::vector<std::int32_t>& p
 
 }  // namespace
 
-void TcSoftBody::restore_order() {
+void TcSoftBody::Impl::restore_order() {
   const LodTree& lod = tree();
-  const int n = m_nodes.size();
+  const int n = body_.m_nodes.size();
   // Nodes by their blocks' spatial ranks, which are distinct: each simulated node marks its rank's slot, and a scan
   // of the slots reads them out in order. O(N + tree size), a write of the slots and a read, no comparison.
   rank_slots_.assign(lod.size(), -1);
@@ -68,18 +68,18 @@ void TcSoftBody::restore_order() {
   invert(order_, position_);
 
   // Links hold raw pointers into the node array: re-point them to where their nodes go, then move the nodes.
-  Node* const base = &m_nodes[0];
-  for (int li = 0; li < m_links.size(); ++li)
-    for (Node*& end : m_links[li].m_n) end = base + position_[static_cast<std::size_t>(end - base)];
+  Node* const base = &body_.m_nodes[0];
+  for (int li = 0; li < body_.m_links.size(); ++li)
+    for (Node*& end : body_.m_links[li].m_n) end = base + position_[static_cast<std::size_t>(end - base)];
   // So do Bullet's anchors (one that points at no simulated node stays as it is, for validate() to name).
-  for (int a = 0; a < m_anchors.size(); ++a) {
-    const std::ptrdiff_t i = m_anchors[a].m_node - base;
-    if (i >= 0 && i < n) m_anchors[a].m_node = base + position_[static_cast<std::size_t>(i)];
+  for (int a = 0; a < body_.m_anchors.size(); ++a) {
+    const std::ptrdiff_t i = body_.m_anchors[a].m_node - base;
+    if (i >= 0 && i < n) body_.m_anchors[a].m_node = base + position_[static_cast<std::size_t>(i)];
   }
-  permute_in_place(order_, m_nodes, tree_of_);
+  permute_in_place(order_, body_.m_nodes, tree_of_);
   faces_stale_ = true;  // faces hold Node* too: rebuilt before the next step
   for (int i = 0; i < n; ++i) {
-    m_nodes[i].m_leaf->data = &m_nodes[i];
+    body_.m_nodes[i].m_leaf->data = &body_.m_nodes[i];
     set_bullet_index(tree_of_[static_cast<std::size_t>(i)], i);
   }
 
@@ -100,7 +100,7 @@ void TcSoftBody::restore_order() {
     for (std::size_t k = 0; k < count; ++k) order_.push_back(later[k].second);
   }
   invert(order_, position_);
-  permute_in_place(order_, m_links, link_meta_);
+  permute_in_place(order_, body_.m_links, link_meta_);
   for (InterfaceConstraint& c : interfaces_)
     for (std::int32_t& handle : c.links) handle = position_[static_cast<std::size_t>(handle)];
   // Incidence lists name links by index: each entry follows its link.
@@ -110,13 +110,13 @@ void TcSoftBody::restore_order() {
   if (listener_ != nullptr) listener_->arrays_reordered();
 }
 
-void TcSoftBody::settle_order() {
+void TcSoftBody::Impl::settle_order() {
   if (settings_.exact_order && displaced_ > 0) restore_order();
 }
 
-void TcSoftBody::rebuild_node_dbvt() {
-  m_ndbvt.clear();
-  m_ndbvt.m_leaves = 0;  // Bullet's clear() frees every node but leaves the count as it was
+void TcSoftBody::Impl::rebuild_node_dbvt() {
+  body_.m_ndbvt.clear();
+  body_.m_ndbvt.m_leaves = 0;  // Bullet's clear() frees every node but leaves the count as it was
   dbvt_nodes_.release();
 #ifdef __GLIBC__
   // The freed tree nodes sit in malloc's fast bins, one by one, spread over the old tree's allocation: taken again
@@ -124,8 +124,8 @@ void TcSoftBody::rebuild_node_dbvt() {
   // from which the new nodes are then carved one after the other.
   malloc_trim(0);
 #endif
-  insert_node_leaves(*this, order_);  // as a plain body's tree, boxed as Bullet's update would box the moving nodes
-  dbvt_peak_nodes_ = m_nodes.size();
+  insert_node_leaves(body_, order_);  // as a plain body's tree, boxed as Bullet's update would box the moving nodes
+  dbvt_peak_nodes_ = body_.m_nodes.size();
   ++dbvt_rebuilds_;
 }
 

@@ -1,4 +1,4 @@
-// TcSoftBody::prefetch_footprint(): starts loading the cache lines an operation is about to touch.
+// TcSoftBody::Impl::prefetch_footprint(): starts loading the cache lines an operation is about to touch.
 //
 // Why: an operation executes a few thousand instructions whatever the size of the net, but it reads a few dozen
 // cache lines scattered over arrays sized by the net (the tree, the per-tree-node arrays, Bullet's nodes and links).
@@ -25,7 +25,7 @@
 //
 // Prefetching overlaps misses but cannot make them free: a core keeps only 10-16 in flight, so an operation's time
 // on a large net follows the number of distinct lines it touches. That is why the per-tree-node data an operation
-// needs sits in one 32-byte record (TcSoftBody::NodeRecord), the LOD node fits one line, link constants are computed
+// needs sits in one 32-byte record (Impl::NodeRecord), the LOD node fits one line, link constants are computed
 // from the records (no neighbour's Bullet node is touched, and of a link only its constant's line), and the
 // removals here ask for the removed links' lines, which the begin operation no longer loads. Lines from beyond a
 // 2 MiB simulated cache per call at 513^2 (scripts/profile/op-instructions.sh), before -> after those changes:
@@ -36,7 +36,7 @@
 // GCC treats __builtin_prefetch as free of effects and may delete a loop that only prefetches, without a warning.
 // The CTest test softbody.prefetch_instructions_emitted counts the instructions left in this file's object
 // (scripts/check-prefetch-emitted.sh); when adding prefetch calls here, raise its minimum to match.
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 
 namespace tcsb {
 
@@ -65,7 +65,7 @@ inline void prefetch_node(const btSoftBody::Node& n) {
 
 }  // namespace
 
-void TcSoftBody::prefetch_footprint(TreeId id) const {
+void TcSoftBody::Impl::prefetch_footprint(TreeId id) const {
   if constexpr (!TCSB_OP_PREFETCH) return;
   const LodNode& node = tree().node(id);  // waits for one line: the block's children come from it
   TreeId block[5] = {id, kNoTreeNode, kNoTreeNode, kNoTreeNode, kNoTreeNode};
@@ -85,17 +85,17 @@ void TcSoftBody::prefetch_footprint(TreeId id) const {
   // Wave 2: the block's simulated Bullet nodes, and their links (Bullet's and ours).
   for (int i = 0; i < count; ++i) {
     const NodeRecord& r = record(block[i]);
-    if (r.bullet >= 0) prefetch_node(m_nodes[r.bullet]);
+    if (r.bullet >= 0) prefetch_node(body_.m_nodes[r.bullet]);
     for (std::int32_t li : incidence_[static_cast<std::size_t>(block[i])]) {
       prefetch(&link_meta_[static_cast<std::size_t>(li)]);
-      prefetch(&m_links[li].m_c0);  // a begin operation rewrites only the link's constant
+      prefetch(&body_.m_links[li].m_c0);  // a begin operation rewrites only the link's constant
     }
   }
   // Wave 3: the block's DBVT leaves (a begin operation inserts the new leaves beside them), and the neighbours at
   // the other end of the links: their tree-side records.
   for (int i = 0; i < count; ++i) {
     const NodeRecord& r = record(block[i]);
-    if (r.bullet >= 0) prefetch(m_nodes[r.bullet].m_leaf);
+    if (r.bullet >= 0) prefetch(body_.m_nodes[r.bullet].m_leaf);
   }
   for (int i = 0; i < count; ++i)
     for (std::int32_t li : incidence_[static_cast<std::size_t>(block[i])]) {
@@ -108,17 +108,17 @@ void TcSoftBody::prefetch_footprint(TreeId id) const {
   // link constants take the neighbours' inverse masses from their records, so nothing else of their Bullet nodes).
   for (int i = 0; i < count; ++i) {
     const NodeRecord& r = record(block[i]);
-    if (r.bullet >= 0) prefetch(m_nodes[r.bullet].m_leaf->parent);
+    if (r.bullet >= 0) prefetch(body_.m_nodes[r.bullet].m_leaf->parent);
   }
   if (record(id).bullet < 0 || settings_.placement == Placement::kRigid) return;
   for (std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
     const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
     const int n = record(meta.other(id)).bullet;
-    if (n >= 0) prefetch(&m_nodes[n].m_x);
+    if (n >= 0) prefetch(&body_.m_nodes[n].m_x);
   }
 }
 
-void TcSoftBody::prefetch_link_removals(std::span<const TreeId> ids) const {
+void TcSoftBody::Impl::prefetch_link_removals(std::span<const TreeId> ids) const {
   if constexpr (!TCSB_OP_PREFETCH) return;
   int removed = 0;
   for (const TreeId id : ids) {
@@ -126,13 +126,13 @@ void TcSoftBody::prefetch_link_removals(std::span<const TreeId> ids) const {
       const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
       prefetch(&incidence_[static_cast<std::size_t>(meta.other(id))]);
       // The removal overwrites the whole link; the begin operation and the blend touched only its constant's line.
-      prefetch_object(&m_links[li]);
+      prefetch_object(&body_.m_links[li]);
       ++removed;
     }
   }
   // Each removal moves the array's last link into the hole and re-points it in its two endpoints' incidence lists.
   // The tail of the array is recent (hot); its endpoints are anywhere in the net.
-  const int links = m_links.size();
+  const int links = body_.m_links.size();
   for (int k = 1; k <= removed && k <= links; ++k) {
     const CutLink& moved = link_meta_[static_cast<std::size_t>(links - k)];
     prefetch(&incidence_[static_cast<std::size_t>(moved.a)]);

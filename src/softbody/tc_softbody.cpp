@@ -1,5 +1,5 @@
-// TcSoftBody: construction and the O(1)/O(degree) node and link primitives every operation is made of.
-#include "softbody/tc_softbody.h"
+// TcSoftBody::Impl: construction and the O(1)/O(degree) node and link primitives every operation is made of.
+#include "softbody/tc_softbody_impl.h"
 
 #include <algorithm>
 #include <cstring>
@@ -26,9 +26,9 @@ void touch_reserved(Array& array, const T& fill) {
 
 }  // namespace
 
-TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> net, const SolverSettings& solver,
+TcSoftBody::Impl::Impl(TcSoftBody& body, std::shared_ptr<const Net> net, const SolverSettings& solver,
                        const TcSettings& settings)
-    : btSoftBody(&world, 0, nullptr, nullptr), net_(std::move(net)), solver_(solver), settings_(settings) {
+    : body_(body), net_(std::move(net)), solver_(solver), settings_(settings) {
   if (settings_.blend_steps < 1) throw std::invalid_argument("TcSoftBody: blend_steps must be >= 1");
   if (settings_.start_level < 0) throw std::invalid_argument("TcSoftBody: start_level must be >= 0");
   for (const NetLink& l : net_->links())
@@ -53,26 +53,26 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
 
   // Bullet's node array is reserved once for every node of the tree, so no operation ever reallocates it and the
   // raw Node* held by links and DBVT leaves stay valid (docs/design.md, "The node array and raw pointers").
-  init_net_nodes(*this, *net_, static_cast<int>(tree_size));
-  apply_solver_settings(*this, solver);
+  init_net_nodes(body_, *net_, static_cast<int>(tree_size));
+  apply_solver_settings(body_, solver);
   // Made for a world with colliders: soft-rigid contacts on, as Bullet's own default has them, so a cloth dropped on
   // a collider never falls through it for want of a flag (the harness states its own: SceneWorld::attach).
-  if (world.m_broadphase != nullptr) m_cfg.collisions = fCollision::SDF_RS;
+  if (body_.m_worldInfo->m_broadphase != nullptr) body_.m_cfg.collisions = fCollision::SDF_RS;
   for (const double k : settings_.level_stiffness)
     if (!(k > 0 && k <= 1)) throw std::invalid_argument("TcSoftBody: level stiffness must lie in (0, 1]");
   if (!settings_.level_stiffness.empty()) {
-    level_materials_.push_back(m_materials[0]);  // level 0: the solver's, as the full-resolution reference's
+    level_materials_.push_back(body_.m_materials[0]);  // level 0: the solver's, as the full-resolution reference's
     for (int level = 1; level < lod.level_count(); ++level) {
       const std::size_t i = std::min(static_cast<std::size_t>(level - 1), settings_.level_stiffness.size() - 1);
-      Material* m = appendMaterial();  // a copy of m_materials[0] (flags included)
+      Material* m = body_.appendMaterial();  // a copy of m_materials[0] (flags included)
       m->m_kLST = static_cast<btScalar>(settings_.level_stiffness[i]);
       level_materials_.push_back(m);
     }
   }
   // Room for every link the body can hold at once: the finest cut's links plus what blending operations add. The
   // counter link_reallocations() proves in tests that this never runs out.
-  m_links.reserve(static_cast<int>(3 * net_->links().size() + 64));
-  append_net_links(*this, *net_);  // the same recipe as the plain baseline: identical body, link for link
+  body_.m_links.reserve(static_cast<int>(3 * net_->links().size() + 64));
+  append_net_links(body_, *net_);  // the same recipe as the plain baseline: identical body, link for link
 
   state_.assign(tree_size, CutState::kOff);
   bullet_.assign(tree_size, -1);
@@ -87,15 +87,15 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
   for (std::size_t leaf = 0; leaf < leaves; ++leaf) {
     state_[leaf] = CutState::kActive;
     set_bullet_index(static_cast<TreeId>(leaf), static_cast<std::int32_t>(leaf));
-    record_[leaf].inv_mass = m_nodes[static_cast<int>(leaf)].m_im;
+    record_[leaf].inv_mass = body_.m_nodes[static_cast<int>(leaf)].m_im;
     tree_of_[leaf] = static_cast<TreeId>(leaf);
     record_[leaf].sim_mass = lod.nodes()[leaf].mass;
     total_mass_ += lod.nodes()[leaf].mass;
   }
-  link_meta_.reserve(static_cast<std::size_t>(m_links.capacity()));
+  link_meta_.reserve(static_cast<std::size_t>(body_.m_links.capacity()));
   // Each interface constraint holds two links: room for as many as the link array can pair up.
   if (settings_.interfaces == Interfaces::kHanging) {
-    interfaces_.reserve(static_cast<std::size_t>(m_links.capacity() / 2));
+    interfaces_.reserve(static_cast<std::size_t>(body_.m_links.capacity() / 2));
     prepared_interfaces_.reserve(interfaces_.capacity());
   }
   for (const NetLink& l : net_->links()) {
@@ -106,12 +106,12 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
   }
   committed_count_ = static_cast<int>(leaves);
   if (solver_.compliant_model())
-    for (int li = 0; li < m_links.size(); ++li) write_link_constant(li);
+    for (int li = 0; li < body_.m_links.size(); ++li) write_link_constant(li);
 
   // Reserved is not yet mapped: the kernel maps a page on its first write. Write the room once now rather than
   // inside operations (a minor fault costs microseconds, more than an operation).
-  touch_reserved(m_nodes, zeroed<Node>());
-  touch_reserved(m_links, zeroed<Link>());
+  touch_reserved(body_.m_nodes, zeroed<Node>());
+  touch_reserved(body_.m_links, zeroed<Link>());
   touch_reserved(tree_of_, kNoTreeNode);
   touch_reserved(link_meta_, CutLink{});
 
@@ -124,41 +124,37 @@ TcSoftBody::TcSoftBody(btSoftBodyWorldInfo& world, std::shared_ptr<const Net> ne
   }
 }
 
-TcSoftBody::~TcSoftBody() {
-  if (lifetime_ != nullptr) lifetime_->body_destroyed(*this);
-}
+void TcSoftBody::Impl::simulate_step(btScalar dt) { step_body(body_, dt); }
 
-void TcSoftBody::simulate_step(btScalar dt) { step_body(*this, dt); }
-
-void TcSoftBody::move_pins(const btVector3& offset, btScalar dt) {
-  for (int i = 0; i < m_nodes.size(); ++i) {
-    Node& n = m_nodes[i];
+void TcSoftBody::Impl::move_pins(const btVector3& offset, btScalar dt) {
+  for (int i = 0; i < body_.m_nodes.size(); ++i) {
+    Node& n = body_.m_nodes[i];
     if (n.m_im != 0) continue;  // only pinned nodes have zero inverse mass (inverse_mass())
     n.m_v = pin_velocity(record(tree_of_[static_cast<std::size_t>(i)]).rest_position(), offset, n.m_x, dt);
   }
   pin_offset_ = offset;
 }
 
-int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, TreeId beside) {
+int TcSoftBody::Impl::add_node(TreeId id, const btVector3& x, const btVector3& v, TreeId beside) {
   const bool pinned = tree().node(id).pinned();
   // What appendNode does, but with the DBVT leaf placed beside the related node's leaf in O(1) instead of a
   // descent from the root. Capacity was reserved for the whole tree, so the array never reallocates.
   // Zeroed in place (Bullet's ZeroInitialize) rather than built on the stack and copied: 256 bytes written once.
-  Node& added = m_nodes.expandNonInitializing();
-  const int index = m_nodes.size() - 1;
+  Node& added = body_.m_nodes.expandNonInitializing();
+  const int index = body_.m_nodes.size() - 1;
   std::memset(static_cast<void*>(&added), 0, sizeof(Node));
   added.m_x = x;
   added.m_q = x;
   added.m_v = pinned ? btVector3(0, 0, 0) : v;
   NodeRecord& r = record(id);
   r.inv_mass = added.m_im = inverse_mass(id, r.sim_mass);
-  added.m_material = m_materials[0];
+  added.m_material = body_.m_materials[0];
   // Every added node arrives in an operation (TcSettings::arrivals_collide); settle_in_cut() lets it collide.
   added.m_battach = settings_.arrivals_collide ? 0 : 1;
-  btDbvtNode* beside_leaf = m_nodes[record(beside).bullet].m_leaf;
-  added.m_leaf =
-      insert_leaf_beside(m_ndbvt, dbvt_nodes_, beside_leaf, btDbvtVolume::FromCR(x, getCollisionShape()->getMargin()),
-                         &added, &work_.dbvt_ancestors);
+  btDbvtNode* beside_leaf = body_.m_nodes[record(beside).bullet].m_leaf;
+  added.m_leaf = insert_leaf_beside(body_.m_ndbvt, dbvt_nodes_, beside_leaf,
+                                    btDbvtVolume::FromCR(x, body_.getCollisionShape()->getMargin()), &added,
+                                    &work_.dbvt_ancestors);
   tree_of_.push_back(id);
   set_bullet_index(id, index);
   faces_stale_ = true;
@@ -169,27 +165,27 @@ int TcSoftBody::add_node(TreeId id, const btVector3& x, const btVector3& v, Tree
   return index;
 }
 
-void TcSoftBody::remove_node(TreeId id) {
+void TcSoftBody::Impl::remove_node(TreeId id) {
   const int k = record(id).bullet;
   if (incidence_[static_cast<std::size_t>(id)].size() != 0)
     throw std::logic_error("TcSoftBody::remove_node: node still has links");
-  remove_leaf_lazily(m_ndbvt, dbvt_nodes_, m_nodes[k].m_leaf);
+  remove_leaf_lazily(body_.m_ndbvt, dbvt_nodes_, body_.m_nodes[k].m_leaf);
   ++work_.nodes;
   ++work_.tree_records;
   ++work_.dbvt_leaves;
-  const int last = m_nodes.size() - 1;
+  const int last = body_.m_nodes.size() - 1;
   if (k != last) {
     ++work_.relocation_nodes;  // the last node, copied into the hole: its leaf, Bullet index and tree entry
     ++displaced_;
     // Swap-with-last: the moved node's leaf and incident links are re-pointed, O(degree).
-    Node* from = &m_nodes[last];
-    m_nodes[k] = m_nodes[last];
-    Node* to = &m_nodes[k];
+    Node* from = &body_.m_nodes[last];
+    body_.m_nodes[k] = body_.m_nodes[last];
+    Node* to = &body_.m_nodes[k];
     to->m_leaf->data = to;
     const TreeId moved = tree_of_[static_cast<std::size_t>(last)];
     for (std::int32_t li : incidence_[static_cast<std::size_t>(moved)]) {
       ++work_.relocation_links;
-      Link& l = m_links[li];
+      Link& l = body_.m_links[li];
       if (l.m_n[0] == from) l.m_n[0] = to;
       if (l.m_n[1] == from) l.m_n[1] = to;
     }
@@ -197,49 +193,49 @@ void TcSoftBody::remove_node(TreeId id) {
     set_bullet_index(moved, k);
     follow_anchors(from, to);
   }
-  m_nodes.pop_back();
+  body_.m_nodes.pop_back();
   tree_of_.pop_back();
   set_bullet_index(id, -1);
   faces_stale_ = true;
 }
 
-void TcSoftBody::follow_anchors(const Node* from, Node* to) {
-  for (int a = 0; a < m_anchors.size(); ++a)
-    if (m_anchors[a].m_node == from) m_anchors[a].m_node = to;
+void TcSoftBody::Impl::follow_anchors(const Node* from, Node* to) {
+  for (int a = 0; a < body_.m_anchors.size(); ++a)
+    if (body_.m_anchors[a].m_node == from) body_.m_anchors[a].m_node = to;
 }
 
-void TcSoftBody::hand_over_anchors(TreeId from, TreeId to) {
-  if (m_anchors.size() == 0) return;
+void TcSoftBody::Impl::hand_over_anchors(TreeId from, TreeId to) {
+  if (body_.m_anchors.size() == 0) return;
   const int f = record(from).bullet, t = record(to).bullet;
   if (f < 0 || t < 0) return;
   bool moved = false;
-  for (int a = 0; a < m_anchors.size(); ++a) {
-    if (m_anchors[a].m_node != &m_nodes[f]) continue;
-    m_anchors[a].m_node = &m_nodes[t];
+  for (int a = 0; a < body_.m_anchors.size(); ++a) {
+    if (body_.m_anchors[a].m_node != &body_.m_nodes[f]) continue;
+    body_.m_anchors[a].m_node = &body_.m_nodes[t];
     moved = true;
   }
-  if (moved) m_nodes[t].m_battach = 1;  // as appendAnchor marks the node it anchors
+  if (moved) body_.m_nodes[t].m_battach = 1;  // as appendAnchor marks the node it anchors
 }
 
-void TcSoftBody::set_bullet_index(TreeId id, std::int32_t index) {
+void TcSoftBody::Impl::set_bullet_index(TreeId id, std::int32_t index) {
   bullet_[static_cast<std::size_t>(id)] = record(id).bullet = index;
 }
 
-btScalar TcSoftBody::rest_length(TreeId a, TreeId b) const {
+btScalar TcSoftBody::Impl::rest_length(TreeId a, TreeId b) const {
   // The same float expression Bullet's resetLinkRestLengths evaluates at rest, so finest-level links match it bit
   // for bit.
   return (record(a).rest_position() - record(b).rest_position()).length();
 }
 
-int TcSoftBody::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
-  if (m_links.size() == m_links.capacity()) ++link_reallocations_;
-  Link& l = m_links.expandNonInitializing();  // zeroed in place, as add_node does
-  const int index = m_links.size() - 1;
+int TcSoftBody::Impl::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
+  if (body_.m_links.size() == body_.m_links.capacity()) ++link_reallocations_;
+  Link& l = body_.m_links.expandNonInitializing();  // zeroed in place, as add_node does
+  const int index = body_.m_links.size() - 1;
   std::memset(static_cast<void*>(&l), 0, sizeof(Link));
   // Uncalibrated, every link uses the body's one material without reading the tree (bit for bit as before).
-  l.m_material = calibrated() ? link_material(a, b) : m_materials[0];
-  l.m_n[0] = &m_nodes[record(a).bullet];
-  l.m_n[1] = &m_nodes[record(b).bullet];
+  l.m_material = calibrated() ? link_material(a, b) : body_.m_materials[0];
+  l.m_n[0] = &body_.m_nodes[record(a).bullet];
+  l.m_n[1] = &body_.m_nodes[record(b).bullet];
   l.m_rl = rest_length(a, b);
   l.m_c1 = l.m_rl * l.m_rl;
   link_meta_.push_back({a, b, role, op});
@@ -254,19 +250,19 @@ int TcSoftBody::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t op) {
   return index;
 }
 
-void TcSoftBody::remove_link(int link) {
+void TcSoftBody::Impl::remove_link(int link) {
   if (link_meta_[static_cast<std::size_t>(link)].interface >= 0) dissolve_interface(link);
   const CutLink meta = link_meta_[static_cast<std::size_t>(link)];
   incidence_[static_cast<std::size_t>(meta.a)].remove(link);
   incidence_[static_cast<std::size_t>(meta.b)].remove(link);
   ++work_.links;
   work_.tree_records += 2;
-  const int last = m_links.size() - 1;
+  const int last = body_.m_links.size() - 1;
   if (link != last) {
     ++work_.relocation_links;  // the last link, copied into the hole; its endpoints' incidence entries re-pointed
     ++displaced_;
     // Swap-with-last: Bullet keeps no pointer to links, only our incidence lists name the moved one.
-    m_links[link] = m_links[last];
+    body_.m_links[link] = body_.m_links[last];
     link_meta_[static_cast<std::size_t>(link)] = link_meta_[static_cast<std::size_t>(last)];
     const CutLink& moved = link_meta_[static_cast<std::size_t>(link)];
     incidence_[static_cast<std::size_t>(moved.a)].replace(last, link);
@@ -275,46 +271,46 @@ void TcSoftBody::remove_link(int link) {
       for (std::int32_t& handle : interfaces_[static_cast<std::size_t>(moved.interface)].links)
         if (handle == last) handle = link;
   }
-  m_links.pop_back();
+  body_.m_links.pop_back();
   link_meta_.pop_back();
 }
 
-void TcSoftBody::set_simulated_mass(TreeId id, double mass) {
+void TcSoftBody::Impl::set_simulated_mass(TreeId id, double mass) {
   ++work_.nodes;
   ++work_.tree_records;
   NodeRecord& r = record(id);
   r.sim_mass = mass;
-  r.inv_mass = m_nodes[r.bullet].m_im = inverse_mass(id, mass);
+  r.inv_mass = body_.m_nodes[r.bullet].m_im = inverse_mass(id, mass);
 }
 
-btScalar TcSoftBody::inverse_mass(TreeId id, double mass) const {
+btScalar TcSoftBody::Impl::inverse_mass(TreeId id, double mass) const {
   return tree().node(id).pinned() ? btScalar(0) : static_cast<btScalar>(1.0 / mass);
 }
 
-btSoftBody::Material* TcSoftBody::link_material(TreeId a, TreeId b) const {
-  if (!calibrated()) return m_materials[0];
+btSoftBody::Material* TcSoftBody::Impl::link_material(TreeId a, TreeId b) const {
+  if (!calibrated()) return body_.m_materials[0];
   const int level = std::max(tree().node(a).level, tree().node(b).level);
   return level_materials_[static_cast<std::size_t>(level)];
 }
 
-double TcSoftBody::op_progress(const Op& op) const {
+double TcSoftBody::Impl::op_progress(const Op& op) const {
   return static_cast<double>(op.step + 1) / (settings_.blend_steps + 1);
 }
 
-double TcSoftBody::blend_alpha(const CutLink& meta) const {
+double TcSoftBody::Impl::blend_alpha(const CutLink& meta) const {
   if (meta.role != LinkRole::kFadeIn && meta.role != LinkRole::kFadeOut) return 1.0;
   const double arriving = op_progress(ops_[static_cast<std::size_t>(meta.op)]);
   return meta.role == LinkRole::kFadeIn ? arriving : 1.0 - arriving;
 }
 
-void TcSoftBody::refresh_link_constant(int link) {
+void TcSoftBody::Impl::refresh_link_constant(int link) {
   ++work_.links;
   work_.tree_records += 2;  // both endpoints' records (inverse masses)
   write_link_constant(link);
 }
 
-void TcSoftBody::write_link_constant(int link) {
-  Link& l = m_links[link];
+void TcSoftBody::Impl::write_link_constant(int link) {
+  Link& l = body_.m_links[link];
   const CutLink& meta = link_meta_[static_cast<std::size_t>(link)];
   // Bullet's updateLinkConstants expression, (m_n[0]->m_im + m_n[1]->m_im) / m_material->m_kLST, read from where it
   // costs fewest cache lines: the inverse masses from the records (equal to Bullet's; not the endpoints' Bullet
@@ -332,36 +328,30 @@ void TcSoftBody::write_link_constant(int link) {
         compliant_constant(record(meta.a).inv_mass + record(meta.b).inv_mass, link_stiffness(link), blend_alpha(meta));
     return;
   }
-  const btScalar stiffness = calibrated() ? l.m_material->m_kLST : m_materials[0]->m_kLST;
+  const btScalar stiffness = calibrated() ? l.m_material->m_kLST : body_.m_materials[0]->m_kLST;
   l.m_c0 = (record(meta.a).inv_mass + record(meta.b).inv_mass) / stiffness;
   const double alpha = blend_alpha(meta);
   if (alpha != 1.0) l.m_c0 = static_cast<btScalar>(l.m_c0 / alpha);
 }
 
-void TcSoftBody::refresh_incident_constants(TreeId id) {
+void TcSoftBody::Impl::refresh_incident_constants(TreeId id) {
   for (std::int32_t li : incidence_[static_cast<std::size_t>(id)]) refresh_link_constant(li);
 }
 
-Eigen::Vector3d TcSoftBody::linear_momentum() const {
+Eigen::Vector3d TcSoftBody::Impl::linear_momentum() const {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
-  for (int i = 0; i < m_nodes.size(); ++i) {
+  for (int i = 0; i < body_.m_nodes.size(); ++i) {
     const TreeId id = tree_of_[static_cast<std::size_t>(i)];
     if (tree().node(id).pinned()) continue;
-    p += record(id).sim_mass * to_eigen(m_nodes[i].m_v);
+    p += record(id).sim_mass * to_eigen(body_.m_nodes[i].m_v);
   }
   return p;
 }
 
-double TcSoftBody::total_mass() const {
+double TcSoftBody::Impl::total_mass() const {
   double sum = 0;
   for (TreeId id : tree_of_) sum += record(id).sim_mass;
   return sum;
-}
-
-std::string Validation::summary() const {
-  if (problems.empty()) return "ok";
-  std::string s = std::to_string(problems.size()) + " problem(s): " + problems.front();
-  return s;
 }
 
 }  // namespace tcsb

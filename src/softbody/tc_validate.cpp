@@ -9,7 +9,7 @@
 #include "net/cut_adjacency.h"
 #include "softbody/dbvt_local.h"
 #include "softbody/fan_rule.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "softbody/tc_softbody_solver.h"
 
 namespace tcsb {
@@ -18,22 +18,37 @@ namespace {
 bool finite(const btVector3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
 }  // namespace
 
-Validation TcSoftBody::validate() const {
+Validation TcSoftBody::Impl::validate() const {
   Validation out;
-  const auto fail = [&](const std::string& what) {
+  const ProblemSink fail = [&](const std::string& what) {
     if (out.problems.size() < 50) out.problems.push_back(what);
   };
-  const LodTree& lod = tree();
-  const std::size_t tree_size = lod.size();
-  const double extent = net_->extent();
+  // In this order: a broken setup explains much of what follows, and an anchor that lost its node is named as such
+  // before the node it left behind is reported.
+  validate_world_setup(fail);
+  validate_anchors(fail);
+  validate_node_mapping(fail);
+  validate_masses(fail);
+  validate_link_constants(fail);
+  validate_interfaces(fail);
+  validate_no_unpaired_fans(fail);
+  validate_faces(fail);
+  validate_incidence(fail);
+  validate_cut_partition(fail);
+  validate_committed_links(fail);
+  validate_operations(fail);
+  return out;
+}
 
-  if (m_bUpdateRtCst) fail("m_bUpdateRtCst is set: the next step would reset every rest length");
+void TcSoftBody::Impl::validate_world_setup(const ProblemSink& fail) const {
+  if (body_.m_bUpdateRtCst) fail("m_bUpdateRtCst is set: the next step would reset every rest length");
   // Bullet's default solver calls btSoftBody::solveConstraints, which skips the interface constraints' handles
   // (m_c0 = 0) and projects nothing in their place: the levels would come apart. A world hands its solver to every
   // body it adds (btSoftRigidDynamicsWorld::addSoftBody, setSoftBodySolver); a body stepped solo has none.
   // The compliant material likewise: Bullet's default solver would take one step of Bullet's iterations with the
   // compliant constants, another cloth.
-  if (getSoftBodySolver() != nullptr && dynamic_cast<const TcSoftBodySolver*>(getSoftBodySolver()) == nullptr) {
+  if (body_.getSoftBodySolver() != nullptr &&
+      dynamic_cast<const TcSoftBodySolver*>(body_.getSoftBodySolver()) == nullptr) {
     if (settings_.interfaces == Interfaces::kHanging)
       fail("hanging interfaces in a world whose soft-body solver is not a tcsb::TcSoftBodySolver: build the world "
            "with one (tc_softbody_solver.h)");
@@ -41,51 +56,56 @@ Validation TcSoftBody::validate() const {
       fail("the compliant material in a world whose soft-body solver is not a tcsb::TcSoftBodySolver: build the "
            "world with one (tc_softbody_solver.h)");
   }
-  if (m_nodes.capacity() < static_cast<int>(tree_size)) fail("node capacity below the tree size");
+  if (body_.m_nodes.capacity() < static_cast<int>(tree().size())) fail("node capacity below the tree size");
   // In a collision world (the world gave the body a broadphase proxy) the body's world info must be that world's:
   // Bullet's step updates the body's box in m_worldInfo->m_broadphase, and an info of the body's own has none.
-  if (getBroadphaseHandle() != nullptr && (m_worldInfo == nullptr || m_worldInfo->m_broadphase == nullptr))
+  if (body_.getBroadphaseHandle() != nullptr &&
+      (body_.m_worldInfo == nullptr || body_.m_worldInfo->m_broadphase == nullptr))
     fail("in a collision world but built with a btSoftBodyWorldInfo that has no broadphase (not the world's "
          "getWorldInfo()): the world's next step would crash in btSoftBody::updateBounds");
+}
+
+void TcSoftBody::Impl::validate_anchors(const ProblemSink& fail) const {
   // Anchors (appendAnchor: a node attached to a rigid body) hold a Node*, which the body re-points whenever it moves
-  // the node (follow_anchors, restore_order, hand_over_anchors). Checked first, so that an anchor that lost its node
-  // is named as such before the node it left behind is reported.
-  for (int a = 0; a < m_anchors.size(); ++a) {
+  // the node (follow_anchors, restore_order, hand_over_anchors).
+  for (int a = 0; a < body_.m_anchors.size(); ++a) {
     const std::string name = "anchor " + std::to_string(a);
-    const std::ptrdiff_t i = m_nodes.size() > 0 ? m_anchors[a].m_node - &m_nodes[0] : -1;
-    if (i < 0 || i >= m_nodes.size()) {
+    const std::ptrdiff_t i = body_.m_nodes.size() > 0 ? body_.m_anchors[a].m_node - &body_.m_nodes[0] : -1;
+    if (i < 0 || i >= body_.m_nodes.size()) {
       fail(name + ": points at no simulated node (its Node* is past the live nodes or not this body's): the cloth is "
                   "no longer attached to its rigid body");
       continue;
     }
     const TreeId id = tree_of_[static_cast<std::size_t>(i)];
-    if (m_anchors[a].m_body == nullptr) fail(name + ": has no rigid body");
-    const Node& node = m_nodes[static_cast<int>(i)];
+    if (body_.m_anchors[a].m_body == nullptr) fail(name + ": has no rigid body");
+    const Node& node = body_.m_nodes[static_cast<int>(i)];
     if (node.m_battach == 0)
       fail(name + ": its node (Bullet " + std::to_string(i) + ", tree " + std::to_string(id) +
            ") is not marked attached (m_battach, which appendAnchor sets): a stale Node* that landed on another node, "
            "or an anchor appended without appendAnchor");
-    if (node.m_im == 0 && m_anchors[a].m_body != nullptr && m_anchors[a].m_body->getInvMass() == 0)
+    if (node.m_im == 0 && body_.m_anchors[a].m_body != nullptr && body_.m_anchors[a].m_body->getInvMass() == 0)
       fail(name + ": holds a pinned node (tree " + std::to_string(id) +
            ") to a static body: Bullet's anchor solve divides by their zero inverse masses");
   }
+}
 
-  // Nodes: mapping both ways, DBVT leaves, masses, pins, finiteness.
-  if (static_cast<int>(tree_of_.size()) != m_nodes.size()) fail("tree_of_ size differs from Bullet's node count");
-  if (const char* dbvt = check_dbvt(m_ndbvt); *dbvt != 0) fail(std::string("node DBVT: ") + dbvt);
-  if (m_ndbvt.m_leaves != m_nodes.size())
-    fail("DBVT has " + std::to_string(m_ndbvt.m_leaves) + " leaves for " + std::to_string(m_nodes.size()) + " nodes");
-  double mass = 0;
-  for (int i = 0; i < m_nodes.size() && i < static_cast<int>(tree_of_.size()); ++i) {
+void TcSoftBody::Impl::validate_node_mapping(const ProblemSink& fail) const {
+  // Every Bullet node simulates one tree node of the cut and maps back to it, with its own DBVT leaf.
+  const std::size_t tree_size = tree().size();
+  if (static_cast<int>(tree_of_.size()) != body_.m_nodes.size()) fail("tree_of_ size differs from Bullet's node count");
+  if (const char* dbvt = check_dbvt(body_.m_ndbvt); *dbvt != 0) fail(std::string("node DBVT: ") + dbvt);
+  if (body_.m_ndbvt.m_leaves != body_.m_nodes.size())
+    fail("DBVT has " + std::to_string(body_.m_ndbvt.m_leaves) + " leaves for " + std::to_string(body_.m_nodes.size()) +
+         " nodes");
+  for (int i = 0; i < body_.m_nodes.size() && i < static_cast<int>(tree_of_.size()); ++i) {
     const TreeId id = tree_of_[static_cast<std::size_t>(i)];
-    const Node& n = m_nodes[i];
-    const std::string name = "node " + std::to_string(i) + " (tree " + std::to_string(id) + ")";
+    const Node& n = body_.m_nodes[i];
+    const std::string name = simulated_node_name(i);
     if (id < 0 || static_cast<std::size_t>(id) >= tree_size) {
       fail(name + ": tree id out of range");
       continue;
     }
-    const NodeRecord& r = record(id);
-    if (r.bullet != i) fail(name + ": Bullet index does not map back");
+    if (record(id).bullet != i) fail(name + ": Bullet index does not map back");
     if (state(id) == CutState::kOff) fail(name + ": simulated but off the cut");
     if (n.m_leaf == nullptr || n.m_leaf->data != &n) fail(name + ": DBVT leaf missing or pointing elsewhere");
     // Out of contact exactly while it arrives, and only under the paper's rule (TcSettings::arrivals_collide).
@@ -95,17 +115,35 @@ Validation TcSoftBody::validate() const {
                                       "arriving node of the paper's rule"
                                     : ": arriving under the paper's rule but taking part in collisions"));
     if (!finite(n.m_x) || !finite(n.m_v)) fail(name + ": NaN or Inf position/velocity");
+  }
+  for (std::size_t id = 0; id < tree_size; ++id) {
+    if ((bullet_[id] >= 0) != (state_[id] != CutState::kOff))
+      fail("tree " + std::to_string(id) + ": state and simulation disagree");
+    if (bullet_[id] != record_[id].bullet) fail("tree " + std::to_string(id) + ": the two Bullet indices disagree");
+  }
+}
+
+void TcSoftBody::Impl::validate_masses(const ProblemSink& fail) const {
+  // Each simulated node carries what its block (or the cut) gives it, Bullet's inverse mass is its inverse, pinned
+  // nodes sit on their pins, and the total is the net's.
+  const LodTree& lod = tree();
+  double mass = 0;
+  for (int i = 0; i < body_.m_nodes.size() && i < static_cast<int>(tree_of_.size()); ++i) {
+    const TreeId id = tree_of_[static_cast<std::size_t>(i)];
+    if (id < 0 || static_cast<std::size_t>(id) >= lod.size()) continue;  // validate_node_mapping names it
+    const Node& n = body_.m_nodes[i];
+    const std::string name = simulated_node_name(i);
     const LodNode& t = lod.node(id);
-    const double m = r.sim_mass;
+    const double m = record(id).sim_mass;
     mass += m;
     if (t.pinned()) {
       if (n.m_im != 0) fail(name + ": pinned but has finite mass");
-      if ((n.m_x - pin_position(id)).length() > 1e-6 * extent)
+      if ((n.m_x - pin_position(id)).length() > 1e-6 * net_->extent())
         fail(name + ": pinned node moved off its pin (rest + pin offset)");
     } else if (!(m > 0) || std::abs(n.m_im * m - 1.0) > 1e-5) {
       fail(name + ": inverse mass does not match its carried mass");
     }
-    if (r.inv_mass != n.m_im) fail(name + ": the record's inverse mass differs from Bullet's");
+    if (record(id).inv_mass != n.m_im) fail(name + ": the record's inverse mass differs from Bullet's");
     if (cut_masses()) {
       if (std::abs(m - target_mass(id)) > 1e-9 * t.mass) fail(name + ": carried mass is not what the cut gives it");
     } else {
@@ -115,21 +153,19 @@ Validation TcSoftBody::validate() const {
   }
   if (std::abs(mass - total_mass_) > 1e-6 * total_mass_)
     fail("total mass " + std::to_string(mass) + " differs from " + std::to_string(total_mass_));
-  for (std::size_t id = 0; id < tree_size; ++id) {
-    if ((bullet_[id] >= 0) != (state_[id] != CutState::kOff))
-      fail("tree " + std::to_string(id) + ": state and simulation disagree");
-    if (bullet_[id] != record_[id].bullet) fail("tree " + std::to_string(id) + ": the two Bullet indices disagree");
-  }
+}
 
-  // Links: pointers, metadata, constants, and incidence lists equal to the link set.
-  if (static_cast<int>(link_meta_.size()) != m_links.size()) fail("link_meta_ size differs from Bullet's link count");
-  std::size_t incidence_total = 0;
-  for (std::size_t id = 0; id < tree_size; ++id) incidence_total += static_cast<std::size_t>(incidence_[id].size());
-  if (incidence_total != 2 * static_cast<std::size_t>(m_links.size()))
-    fail("incidence lists hold " + std::to_string(incidence_total) + " entries for " + std::to_string(m_links.size()) +
-         " links");
-  for (int li = 0; li < m_links.size() && li < static_cast<int>(link_meta_.size()); ++li) {
-    const Link& l = m_links[li];
+std::string TcSoftBody::Impl::simulated_node_name(int index) const {
+  return "node " + std::to_string(index) + " (tree " + std::to_string(tree_of_[static_cast<std::size_t>(index)]) + ")";
+}
+
+void TcSoftBody::Impl::validate_link_constants(const ProblemSink& fail) const {
+  // Every Bullet link joins the nodes its CutLink names, at their rest distance, with its level's material and the
+  // constant its endpoints' masses and its blend weight give.
+  if (static_cast<int>(link_meta_.size()) != body_.m_links.size())
+    fail("link_meta_ size differs from Bullet's link count");
+  for (int li = 0; li < body_.m_links.size() && li < static_cast<int>(link_meta_.size()); ++li) {
+    const Link& l = body_.m_links[li];
     const CutLink& meta = link_meta_[static_cast<std::size_t>(li)];
     const std::string name = "link " + std::to_string(li);
     const int ba = record(meta.a).bullet, bb = record(meta.b).bullet;
@@ -137,15 +173,16 @@ Validation TcSoftBody::validate() const {
       fail(name + ": endpoint not simulated");
       continue;
     }
-    if (l.m_n[0] != &m_nodes[ba] || l.m_n[1] != &m_nodes[bb]) fail(name + ": node pointers disagree with metadata");
+    if (l.m_n[0] != &body_.m_nodes[ba] || l.m_n[1] != &body_.m_nodes[bb])
+      fail(name + ": node pointers disagree with metadata");
     if (!incidence_[static_cast<std::size_t>(meta.a)].contains(li) ||
         !incidence_[static_cast<std::size_t>(meta.b)].contains(li))
       fail(name + ": missing from an endpoint's incidence list");
     if (l.m_rl != rest_length(meta.a, meta.b) || l.m_c1 != l.m_rl * l.m_rl) fail(name + ": rest length changed");
     const bool blended = meta.role == LinkRole::kFadeIn || meta.role == LinkRole::kFadeOut;
     if ((meta.role == LinkRole::kSteady) != (meta.op < 0)) fail(name + ": steady links own no operation");
-    if (l.m_material != edge_material(static_cast<int>(li))) fail(name + ": not the material of its level");
-    if (meta.interface >= 0 && !kept_handle(static_cast<int>(li))) {
+    if (l.m_material != edge_material(li)) fail(name + ": not the material of its level");
+    if (meta.interface >= 0 && !kept_handle(li)) {
       if (l.m_c0 != 0) fail(name + ": a handle of an interface constraint, but Bullet's link solver would solve it");
       continue;
     }
@@ -158,16 +195,27 @@ Validation TcSoftBody::validate() const {
     }
     if (std::abs(l.m_c0 - c0) > 1e-5f * std::abs(c0)) fail(name + ": m_c0 does not match masses and blend");
   }
-  validate_interfaces(fail);
-  validate_faces(fail);
+}
+
+void TcSoftBody::Impl::validate_incidence(const ProblemSink& fail) const {
+  // The incidence lists hold each link twice, once at each endpoint, and nothing else.
+  const std::size_t tree_size = tree().size();
+  std::size_t incidence_total = 0;
+  for (std::size_t id = 0; id < tree_size; ++id) incidence_total += static_cast<std::size_t>(incidence_[id].size());
+  if (incidence_total != 2 * static_cast<std::size_t>(body_.m_links.size()))
+    fail("incidence lists hold " + std::to_string(incidence_total) + " entries for " +
+         std::to_string(body_.m_links.size()) + " links");
   for (std::size_t id = 0; id < tree_size; ++id)
     for (std::int32_t li : incidence_[id])
       if (li < 0 || li >= static_cast<std::int32_t>(link_meta_.size()) ||
           (link_meta_[static_cast<std::size_t>(li)].a != static_cast<TreeId>(id) &&
            link_meta_[static_cast<std::size_t>(li)].b != static_cast<TreeId>(id)))
         fail("tree " + std::to_string(id) + ": incidence entry names a link not touching it");
+}
 
-  // Cuts: the committed cut (active + arriving) and the old cut (active + leaving) each cover every leaf once.
+void TcSoftBody::Impl::validate_cut_partition(const ProblemSink& fail) const {
+  // The committed cut (active + arriving) and the old cut (active + leaving) each cover every leaf once.
+  const LodTree& lod = tree();
   for (std::size_t leaf = 0; leaf < lod.leaf_count(); ++leaf) {
     int in_new = 0, in_old = 0;
     for (TreeId id = static_cast<TreeId>(leaf); id != kNoTreeNode; id = lod.node(id).parent) {
@@ -179,9 +227,13 @@ Validation TcSoftBody::validate() const {
       fail("leaf " + std::to_string(leaf) + " covered " + std::to_string(in_new) + "x by the cut and " +
            std::to_string(in_old) + "x by the old cut");
   }
-  // Balance and the steady link set: every committed node is linked to exactly its committed neighbours.
+}
+
+void TcSoftBody::Impl::validate_committed_links(const ProblemSink& fail) const {
+  // The committed cut is balanced, and every committed node is linked to exactly its committed neighbours.
+  const LodTree& lod = tree();
   int committed_nodes = 0;
-  for (std::size_t id = 0; id < tree_size; ++id) {
+  for (std::size_t id = 0; id < lod.size(); ++id) {
     const TreeId t = static_cast<TreeId>(id);
     if (!committed(t)) continue;
     ++committed_nodes;
@@ -202,8 +254,10 @@ Validation TcSoftBody::validate() const {
     if (!balanced) fail("tree " + std::to_string(t) + ": the committed cut is not balanced around it");
   }
   if (committed_nodes != committed_count_) fail("committed node count is stale");
+}
 
-  // Operations in flight: each owns its subjects.
+void TcSoftBody::Impl::validate_operations(const ProblemSink& fail) const {
+  // Each operation in flight owns its subjects and is inside its blend; no operation grew the link array.
   for (std::size_t slot = 0; slot < inflight_.size(); ++slot) {
     const Op& op = ops_[static_cast<std::size_t>(inflight_[slot])];
     if (op.slot != static_cast<std::int32_t>(slot)) fail("operation slot stale");
@@ -211,10 +265,9 @@ Validation TcSoftBody::validate() const {
     if (op.step < 0 || op.step >= settings_.blend_steps) fail("operation step out of range");
   }
   if (link_reallocations_ != 0) fail("the link array was reallocated during an operation");
-  return out;
 }
 
-void TcSoftBody::validate_interfaces(const std::function<void(const std::string&)>& fail) const {
+void TcSoftBody::Impl::validate_interfaces(const ProblemSink& fail) const {
   const LodTree& lod = tree();
   if (settings_.interfaces == Interfaces::kLinks && !interfaces_.empty()) fail("interface constraints with fans");
   // Each constraint: its two handles name it, join its coarse node to its two fine nodes (siblings one level finer),
@@ -266,9 +319,13 @@ void TcSoftBody::validate_interfaces(const std::function<void(const std::string&
   std::sort(sides.begin(), sides.end());
   if (std::adjacent_find(sides.begin(), sides.end()) != sides.end())
     fail("two interface constraints for one side of a coarse block");
+}
+
+void TcSoftBody::Impl::validate_no_unpaired_fans(const ProblemSink& fail) const {
   if (settings_.interfaces != Interfaces::kHanging) return;
-  // No fan left: no two unpaired links from one coarse node to two siblings one level finer, in one role and
-  // operation (tethers aside).
+  // No two unpaired links from one coarse node to two siblings one level finer, in one role and operation (tethers
+  // aside): with hanging interfaces every fan is one constraint.
+  const LodTree& lod = tree();
   for (std::size_t li = 0; li < link_meta_.size(); ++li) {
     const CutLink& m = link_meta_[li];
     if (m.interface >= 0 || m.role == LinkRole::kTether) continue;

@@ -17,6 +17,7 @@
 #include "fixed_field.h"
 #include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
+#include "softbody/tc_softbody_impl.h"
 
 #include "../softbody/test_bodies.h"
 
@@ -89,7 +90,7 @@ Trace run_swinging(const FeedbackSettings& settings, int steps, int pause_every 
     body.advance_blends(settling);
     controller.before_step(body);
     body.settle_order();  // as the runner's loops do (a no-op after OrderSettling::kNow and the controller's own)
-    t.most_displaced_at_step = std::max(t.most_displaced_at_step, body.displaced());
+    t.most_displaced_at_step = std::max(t.most_displaced_at_step, body.impl().displaced());
     body.simulate_step(kDt);
     controller.after_step(body);
     t.n.push_back(body.node_count());
@@ -102,7 +103,7 @@ Trace run_swinging(const FeedbackSettings& settings, int steps, int pause_every 
   EXPECT_TRUE(controller.converged());
   EXPECT_TRUE(body.validate().ok()) << body.validate().summary();
   for (int k = 0; k < body.node_count(); ++k) t.final_positions.push_back(body.m_nodes[k].m_x);
-  t.restorations = body.order_restorations();
+  t.restorations = body.impl().order_restorations();
   return t;
 }
 

@@ -17,7 +17,7 @@
 #include "paper/op_work_claims.h"
 #include "scene/scene_world.h"
 #include "softbody/op_work_bounds.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "suite/suite.h"
 
 namespace tcsb {
@@ -50,7 +50,7 @@ OpWorkTally drive(const NetSpec& spec, const Suite& suite) {
   SceneWorld world(suite.world);
   TcSoftBody body(world.info(), net, suite.solver, suite.tcsb);
   TallySink sink;
-  body.set_op_sink(&sink);
+  body.impl().set_op_sink(&sink);
   RandomPolicy policy(1);
   const int n = static_cast<int>(net->node_count());
   const int per_step = std::clamp(n / 32, 8, 1024);
@@ -59,7 +59,7 @@ OpWorkTally drive(const NetSpec& spec, const Suite& suite) {
     policy.apply(body, (s / 20) % 2 == 0 ? 0 : n, per_step);
   }
   for (int s = 0; s <= body.settings().blend_steps; ++s) body.advance_blends();  // end what is blending
-  body.set_op_sink(nullptr);
+  body.impl().set_op_sink(nullptr);
   // validate() is O(N log N): seconds on the largest nets, where the property tests have checked the same code.
   if (spec.width <= 257) {  // braces: EXPECT_* expands to an if/else of its own
     EXPECT_TRUE(body.validate().ok()) << spec.name << ": " << body.validate().summary();

@@ -15,7 +15,7 @@
 #include "scene/scene_world.h"
 #include "softbody/compliant_solver.h"
 #include "softbody/plain_softbody.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "test_bodies.h"
 
 namespace tcsb {
@@ -157,7 +157,7 @@ TEST(CompliantMaterial, PassesThatKeepLambdaHoldThroughBlendsAndInterfaces) {
       tc.advance_blends();
       ASSERT_TRUE(tc.validate().ok()) << "step " << s << ": " << tc.validate().summary();
     }
-    EXPECT_FALSE(tc.interface_constraints().empty());
+    EXPECT_FALSE(tc.impl().interface_constraints().empty());
     std::vector<btVector3> end;
     for (int i = 0; i < tc.node_count(); ++i) {
       ASSERT_TRUE(std::isfinite(tc.m_nodes[i].m_x.length2())) << "node " << i;

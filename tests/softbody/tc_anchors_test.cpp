@@ -10,7 +10,7 @@
 
 #include "feedback/random_policy.h"
 #include "scene/scene_world.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "test_bodies.h"
 
 namespace tcsb {
@@ -55,7 +55,7 @@ TEST_P(AnchorsFollow, TheirNodesThroughRemovalsAndReorderings) {
   EXPECT_TRUE(moved);  // the last node did move
   EXPECT_LT(tc.node_count(), 17 * 17);
   if (GetParam() != 0) {
-    EXPECT_GT(tc.order_restorations(), 0);
+    EXPECT_GT(tc.impl().order_restorations(), 0);
   }
 }
 

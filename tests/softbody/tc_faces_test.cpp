@@ -10,7 +10,7 @@
 #include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/plain_softbody.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "test_bodies.h"
 
 namespace tcsb {
@@ -95,7 +95,7 @@ TEST(TcFaces, FollowTheCutThroughRandomOperations) {
       const Validation v = tc.validate();
       ASSERT_TRUE(v.ok()) << "width " << width << ", step " << s << ": " << v.summary();
     }
-    EXPECT_GT(tc.face_rebuilds(), 10);
+    EXPECT_GT(tc.impl().face_rebuilds(), 10);
     EXPECT_LT(tc.m_faces.size(), 2 * (width - 1) * (width - 1));  // some blocks coarse
     for (int i = 0; i < tc.m_nodes.size(); ++i) ASSERT_TRUE(std::isfinite(tc.m_nodes[i].m_x.x()));
   }

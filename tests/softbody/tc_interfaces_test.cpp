@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_world.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "softbody/tc_softbody_solver.h"
 #include "test_bodies.h"
 
@@ -36,7 +36,7 @@ TreeId coarsen_one_block(TcSoftBody& tc) {
 /// Links of `id` to nodes of another level, and how many of them Bullet's link solver solves (m_c0 > 0).
 std::pair<int, int> cross_level_links(const TcSoftBody& tc, TreeId id) {
   int links = 0, solved = 0;
-  for (const std::int32_t li : tc.incidence(id)) {
+  for (const std::int32_t li : tc.impl().incidence(id)) {
     const CutLink& m = tc.cut_links()[static_cast<std::size_t>(li)];
     if (tc.tree().node(m.other(id)).level == tc.tree().node(id).level) continue;
     ++links;
@@ -53,12 +53,12 @@ TEST(TcInterfaces, EachFanBecomesOneConstraintAndTheFansAreLeftToTheSolverWithou
   const TreeId p = coarsen_one_block(fans);
   ASSERT_EQ(coarsen_one_block(hung), p);
 
-  EXPECT_TRUE(fans.interface_constraints().empty());
+  EXPECT_TRUE(fans.impl().interface_constraints().empty());
   EXPECT_EQ(cross_level_links(fans, p), std::make_pair(8, 8));  // a fan of two links on each of four sides
 
-  ASSERT_EQ(hung.interface_constraints().size(), 4u);
+  ASSERT_EQ(hung.impl().interface_constraints().size(), 4u);
   EXPECT_EQ(cross_level_links(hung, p), std::make_pair(8, 0));  // the same links, now handles Bullet skips
-  for (const InterfaceConstraint& c : hung.interface_constraints()) {
+  for (const InterfaceConstraint& c : hung.impl().interface_constraints()) {
     EXPECT_EQ(c.coarse, p);
     EXPECT_EQ(net->lod().node(c.fine[0]).parent, net->lod().node(c.fine[1]).parent);
     // The leaves' midpoint lies one and a half leaf spacings from the block's centre, straight across its side.
@@ -70,7 +70,7 @@ TEST(TcInterfaces, EachFanBecomesOneConstraintAndTheFansAreLeftToTheSolverWithou
   // Refining the block back leaves no constraint and the plain body's links, all solved by Bullet.
   hung.begin_refine(p);
   for (int s = 0; s < hung.settings().blend_steps; ++s) hung.advance_blends();
-  EXPECT_TRUE(hung.interface_constraints().empty());
+  EXPECT_TRUE(hung.impl().interface_constraints().empty());
   EXPECT_EQ(hung.link_count(), 2 * 17 * 16);
   for (int li = 0; li < hung.link_count(); ++li) EXPECT_GT(hung.m_links[li].m_c0, 0) << "link " << li;
   EXPECT_TRUE(hung.validate().ok()) << hung.validate().summary();
@@ -82,7 +82,7 @@ TEST(TcInterfaces, ValidateCatchesABrokenConstraint) {
   TcSoftBody tc(world.info(), net, testing::test_solver(), hanging());
   coarsen_one_block(tc);
   ASSERT_TRUE(tc.validate().ok()) << tc.validate().summary();
-  const int handle = tc.interface_constraints()[0].links[0];
+  const int handle = tc.impl().interface_constraints()[0].links[0];
   tc.m_links[handle].m_c0 = 1;  // Bullet's link solver would now pull the fan again
   const Validation broken = tc.validate();
   ASSERT_FALSE(broken.ok());
@@ -126,7 +126,7 @@ TEST(TcInterfaces, TheProjectionConservesLinearMomentum) {
 /// How far the coarse node of `tc`'s first interface constraint lies from its rest distance to the fine midpoint,
 /// as a fraction of that distance.
 double interface_strain(const TcSoftBody& tc) {
-  const InterfaceConstraint& c = tc.interface_constraints()[0];
+  const InterfaceConstraint& c = tc.impl().interface_constraints()[0];
   const btVector3 mid =
       (tc.m_nodes[tc.bullet_index(c.fine[0])].m_x + tc.m_nodes[tc.bullet_index(c.fine[1])].m_x) * btScalar(0.5);
   return std::abs((mid - tc.m_nodes[tc.bullet_index(c.coarse)].m_x).length() - c.rest) / c.rest;
@@ -156,8 +156,8 @@ TEST(TcInterfaces, BothSteppingPathsProjectTheConstraints) {
     solo.step(kDt);
     with_world.step(kDt);
   }
-  ASSERT_EQ(a.interface_constraints().size(), 4u);
-  ASSERT_EQ(b.interface_constraints().size(), 4u);
+  ASSERT_EQ(a.impl().interface_constraints().size(), 4u);
+  ASSERT_EQ(b.impl().interface_constraints().size(), 4u);
   EXPECT_LT(interface_strain(a), 0.1);
   EXPECT_LT(interface_strain(b), 0.1);
   EXPECT_TRUE(a.validate().ok()) << a.validate().summary();

@@ -5,7 +5,7 @@
 
 #include "feedback/random_policy.h"
 #include "scene/scene_world.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "test_bodies.h"
 
 namespace tcsb {
@@ -34,7 +34,7 @@ TEST(TcLevelStiffness, UncalibratedUsesTheOneMaterial) {
   const auto net = testing::square_net(17);
   SceneWorld world({});
   TcSoftBody tc(world.info(), net, testing::test_solver(), {});
-  EXPECT_FALSE(tc.calibrated());
+  EXPECT_FALSE(tc.impl().calibrated());
   run_random(tc, 5, 40);
   EXPECT_EQ(tc.m_materials.size(), 1);
   for (int i = 0; i < tc.link_count(); ++i) EXPECT_EQ(tc.m_links[i].m_material, tc.m_materials[0]);
@@ -46,7 +46,7 @@ TEST(TcLevelStiffness, EveryLinkUsesItsCoarserEndpointsLevelAndFadesFromIt) {
   TcSettings settings;
   settings.level_stiffness = {0.5, 0.25};  // level 1, then level 2 and beyond
   TcSoftBody tc(world.info(), net, testing::test_solver(), settings);
-  ASSERT_TRUE(tc.calibrated());
+  ASSERT_TRUE(tc.impl().calibrated());
   RandomPolicy policy(11);
   int checked_blends = 0, coarse_links = 0;
   for (int s = 0; s < 120; ++s) {

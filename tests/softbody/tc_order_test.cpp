@@ -11,7 +11,7 @@
 #include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
 #include "softbody/plain_softbody.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "test_bodies.h"
 
 namespace tcsb {
@@ -67,15 +67,15 @@ TEST(TcSoftBodyOrder, RestoringKeepsEveryNodeEveryLinkAndEveryInvariant) {
   RandomPolicy policy(7);
   operate(tc, policy, 400, 60);
   ASSERT_GT(tc.interpolations(), 0) << "the test wants operations in flight while the order is restored";
-  ASSERT_GT(tc.displaced(), 0);
+  ASSERT_GT(tc.impl().displaced(), 0);
   const auto nodes = nodes_by_tree_id(tc);
   const auto links = link_set(tc);
   const int interpolations = tc.interpolations();
 
   tc.restore_order();
 
-  EXPECT_EQ(tc.order_restorations(), 1);
-  EXPECT_EQ(tc.displaced(), 0);
+  EXPECT_EQ(tc.impl().order_restorations(), 1);
+  EXPECT_EQ(tc.impl().displaced(), 0);
   EXPECT_EQ(nodes_by_tree_id(tc), nodes);
   EXPECT_EQ(link_set(tc), links);
   EXPECT_EQ(tc.interpolations(), interpolations);
@@ -165,11 +165,11 @@ TEST(TcSoftBodyOrder, OperationsRestoreTheOrderOncePastTheFraction) {
     // advance_blends() restores once the displaced elements pass the fraction, so right after it they never do;
     // the operations begun since may add at most their own.
     const double limit = TcSettings::kReorderFraction * (on.node_count() + on.link_count());
-    ASSERT_LE(on.displaced(), limit + 32 * 40) << "step " << s;
+    ASSERT_LE(on.impl().displaced(), limit + 32 * 40) << "step " << s;
   }
-  EXPECT_GT(on.order_restorations(), 1);
-  EXPECT_EQ(off.order_restorations(), 0);
-  EXPECT_GT(off.displaced(), TcSettings::kReorderFraction * (off.node_count() + off.link_count()));
+  EXPECT_GT(on.impl().order_restorations(), 1);
+  EXPECT_EQ(off.impl().order_restorations(), 0);
+  EXPECT_GT(off.impl().displaced(), TcSettings::kReorderFraction * (off.node_count() + off.link_count()));
   EXPECT_TRUE(on.validate().ok()) << on.validate().summary();
 }
 
@@ -185,9 +185,9 @@ TEST(TcSoftBodyOrder, BodiesBelowTheMinimumNodeCountAreLeftInTheOperationsOrder)
   RandomPolicy policy_below(3), policy_above(3);
   operate(below, policy_below, 800, 40);
   operate(above, policy_above, 800, 40);
-  EXPECT_EQ(below.order_restorations(), 0);
-  EXPECT_GT(below.displaced(), TcSettings::kReorderFraction * (below.node_count() + below.link_count()));
-  EXPECT_GT(above.order_restorations(), 0);
+  EXPECT_EQ(below.impl().order_restorations(), 0);
+  EXPECT_GT(below.impl().displaced(), TcSettings::kReorderFraction * (below.node_count() + below.link_count()));
+  EXPECT_GT(above.impl().order_restorations(), 0);
   EXPECT_TRUE(below.validate().ok()) << below.validate().summary();
 }
 
@@ -218,7 +218,7 @@ TEST(TcSoftBodyOrder, WithExactOrderEveryStepSweepsTheArraysInAPlainBodysOrder) 
   for (int s = 0; s < 200; ++s) {
     const int target = 300 + (s / 40) * 150;
     exact.advance_blends();
-    ASSERT_EQ(exact.displaced(), 0) << "step " << s;
+    ASSERT_EQ(exact.impl().displaced(), 0) << "step " << s;
     ASSERT_TRUE(in_plain_order(exact)) << "step " << s;
     policy_exact.apply(exact, target, 32);
     exact.settle_order();  // as a controller does once it has begun the boundary's operations
@@ -227,8 +227,8 @@ TEST(TcSoftBodyOrder, WithExactOrderEveryStepSweepsTheArraysInAPlainBodysOrder) 
     operate(amortised, policy_amortised, target, 1);
     if (!in_plain_order(amortised)) ++out_of_order;
   }
-  EXPECT_GT(exact.order_restorations(), 50);
-  EXPECT_EQ(amortised.order_restorations(), 0);
+  EXPECT_GT(exact.impl().order_restorations(), 50);
+  EXPECT_EQ(amortised.impl().order_restorations(), 0);
   EXPECT_GT(out_of_order, 150);  // the default leaves a body this small in the operations' order
   EXPECT_TRUE(exact.validate().ok()) << exact.validate().summary();
 }
@@ -244,8 +244,8 @@ TEST(TcSoftBodyDbvt, ABodyThatShrankGetsAFreshTreeAndMovesExactlyAsWithout) {
   operate(on, policy_on, 300, 60);
   operate(off, policy_off, 300, 60);
   // From 1 089 nodes to about 300: a tree built again each time the body is down by the factor since the last.
-  EXPECT_GE(on.dbvt_rebuilds(), 3);
-  EXPECT_EQ(off.dbvt_rebuilds(), 0);
+  EXPECT_GE(on.impl().dbvt_rebuilds(), 3);
+  EXPECT_EQ(off.impl().dbvt_rebuilds(), 0);
   EXPECT_TRUE(on.validate().ok()) << on.validate().summary();
   // The tree takes no part in the physics: every node and link the same, bit for bit.
   EXPECT_EQ(nodes_by_tree_id(on), nodes_by_tree_id(off));
@@ -253,9 +253,9 @@ TEST(TcSoftBodyDbvt, ABodyThatShrankGetsAFreshTreeAndMovesExactlyAsWithout) {
   EXPECT_EQ(on.m_ndbvt.m_leaves, on.node_count());
 
   // At a fixed compression the body does not shrink, and no tree is built again.
-  const int rebuilds = on.dbvt_rebuilds();
+  const int rebuilds = on.impl().dbvt_rebuilds();
   operate(on, policy_on, 300, 100);
-  EXPECT_EQ(on.dbvt_rebuilds(), rebuilds);
+  EXPECT_EQ(on.impl().dbvt_rebuilds(), rebuilds);
   EXPECT_TRUE(on.validate().ok()) << on.validate().summary();
 }
 
@@ -269,9 +269,9 @@ TEST(TcSoftBodyDbvt, TheStepAfterARebuildReinsertsNoMoreThanAnyOther) {
   operate(body, policy, body.node_count(), 10);  // falling, on the finest cut
   int checked = 0;
   for (int s = 0; s < 60; ++s) {
-    const int rebuilds = body.dbvt_rebuilds();
+    const int rebuilds = body.impl().dbvt_rebuilds();
     body.advance_blends();
-    if (body.dbvt_rebuilds() == rebuilds) {
+    if (body.impl().dbvt_rebuilds() == rebuilds) {
       policy.apply(body, 300, 32);
       body.simulate_step(kDt);
       continue;
@@ -284,7 +284,7 @@ TEST(TcSoftBodyDbvt, TheStepAfterARebuildReinsertsNoMoreThanAnyOther) {
       const btDbvtNode* leaf = body.m_nodes[i].m_leaf;
       reinserted += std::memcmp(&boxes.at(leaf), &leaf->volume, sizeof(btDbvtAabbMm)) != 0;
     }
-    EXPECT_LT(reinserted, body.node_count() / 20) << "rebuild " << body.dbvt_rebuilds() << ", step " << s;
+    EXPECT_LT(reinserted, body.node_count() / 20) << "rebuild " << body.impl().dbvt_rebuilds() << ", step " << s;
     ++checked;
   }
   EXPECT_GE(checked, 3);
@@ -297,7 +297,7 @@ TEST(TcSoftBodyDbvt, ARebuiltTreeIsThePlainBodysTree) {
   const auto net = testing::square_net(17);
   SceneWorld world({});
   TcSoftBody tc(world.info(), net, testing::test_solver(), always_ordered());
-  tc.rebuild_node_dbvt();
+  tc.impl().rebuild_node_dbvt();
   auto plain = make_plain_softbody(world.info(), *net, testing::test_solver());
   const auto shape = [](const btDbvtNode* root) {
     std::vector<int> depths;
@@ -315,7 +315,7 @@ TEST(TcSoftBodyDbvt, ARebuiltTreeIsThePlainBodysTree) {
     return depths;
   };
   EXPECT_EQ(shape(tc.m_ndbvt.m_root), shape(plain->m_ndbvt.m_root));
-  EXPECT_EQ(tc.dbvt_rebuilds(), 1);
+  EXPECT_EQ(tc.impl().dbvt_rebuilds(), 1);
   EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
 }
 

@@ -1,4 +1,4 @@
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 
 #include <gtest/gtest.h>
 
@@ -343,11 +343,11 @@ std::size_t random_operations_keep_every_invariant(Interfaces interfaces, long t
     const Validation v = tc.validate();
     EXPECT_TRUE(v.ok()) << "after step " << step << ": " << v.summary();
     if (!v.ok()) return most_interfaces;
-    most_interfaces = std::max(most_interfaces, tc.interface_constraints().size());
+    most_interfaces = std::max(most_interfaces, tc.impl().interface_constraints().size());
   }
   EXPECT_GE(operations, total);
-  EXPECT_GT(tc.order_restorations(), 0);
-  EXPECT_EQ(tc.link_reallocations(), 0);
+  EXPECT_GT(tc.impl().order_restorations(), 0);
+  EXPECT_EQ(tc.impl().link_reallocations(), 0);
   EXPECT_EQ(&tc.m_nodes[0], nodes);
   EXPECT_EQ(&tc.m_links[0], links);
   EXPECT_EQ(tc.tree_ids().data(), tree_ids);

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_world.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "test_bodies.h"
 
 namespace tcsb {
@@ -20,7 +20,7 @@ TEST(TcStartLevel, ABodyStartsAtTheWholeCutOfItsLevelInOrderAndValid) {
     EXPECT_EQ(body.committed_count(), side * side) << level;
     EXPECT_EQ(body.node_count(), side * side) << level;
     EXPECT_EQ(body.interpolations(), 0) << level;
-    EXPECT_EQ(body.displaced(), 0) << level;  // its arrays in a plain body's order from the start
+    EXPECT_EQ(body.impl().displaced(), 0) << level;  // its arrays in a plain body's order from the start
     for (int i = 0; i < body.node_count(); ++i)
       ASSERT_EQ(body.tree().node(body.tree_id(i)).level, level) << "node " << i;
     const Validation v = body.validate();

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_world.h"
-#include "softbody/tc_softbody.h"
+#include "softbody/tc_softbody_impl.h"
 #include "test_bodies.h"
 
 namespace tcsb {
@@ -32,8 +32,8 @@ std::unique_ptr<TcSoftBody> half_coarse(SceneWorld& world, bool left, const TcSe
 TEST(TcVertexInterfaces, OnACoarseBlocksFarSideTheFineNodeBesideTheLineHangsOnTheCoarseEdge) {
   SceneWorld world({});
   const auto tc = half_coarse(world, true);  // blocks over leaves 0..7, fine from leaf 8: their +x sides
-  ASSERT_FALSE(tc->interface_constraints().empty());
-  for (const InterfaceConstraint& c : tc->interface_constraints()) {
+  ASSERT_FALSE(tc->impl().interface_constraints().empty());
+  for (const InterfaceConstraint& c : tc->impl().interface_constraints()) {
     EXPECT_EQ(c.kind, InterfaceKind::kVertexFar);
     ASSERT_GE(c.kept, 0);
     const TreeId in_line = c.fine[static_cast<std::size_t>(c.kept)], hanging = c.fine[c.kept == 0 ? 1 : 0];
@@ -54,7 +54,7 @@ TEST(TcVertexInterfaces, OnACoarseBlocksNearSideTheHangingLinkMeetsTheSideAtItsM
   const auto tc = half_coarse(world, false, calibrated);  // fine leaves 0..7, blocks from leaf 8: their -x sides
   const LodTree& tree = tc->net().lod();
   int near = 0;
-  for (const InterfaceConstraint& c : tc->interface_constraints()) {
+  for (const InterfaceConstraint& c : tc->impl().interface_constraints()) {
     if (c.kind != InterfaceKind::kVertexNear) continue;  // (the top row's +z sides face the border's blocks)
     ++near;
     const LodNode& block = tree.node(c.coarse);
@@ -95,7 +95,7 @@ TEST(TcVertexInterfaces, AnEdgeACoarseCellSharesWithFinerClothTakesTheFinerStiff
   }
   const auto stiffness = [&](int ax, int ay, int bx, int by) {
     const TreeId a = tree.at(1, ax, ay), b = tree.at(1, bx, by);
-    for (const std::int32_t li : tc.incidence(a))
+    for (const std::int32_t li : tc.impl().incidence(a))
       if (tc.cut_links()[static_cast<std::size_t>(li)].other(a) == b) return tc.m_links[li].m_material->m_kLST;
     ADD_FAILURE() << "no link between the blocks";
     return btScalar(0);
