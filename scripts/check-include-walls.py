@@ -33,7 +33,8 @@ PARTS = ("library", "harness", "program")
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
 SOURCES = ("*.h", "*.cpp", "*.h.in")
 # The library headers the public headers may reach (docs/library.md lists them): the net and its tree, the body with
-# its settings and solver, the listener, the controller and driver with their settings, the camera. Every other
+# its settings and solver, the listener, the controller and driver with their settings and the world budget, the
+# camera. Every other
 # header of a library module is an implementation header: installed, because the harness shares the module, but
 # never reached from include/tcsb/*.h.
 API_HEADERS = {
@@ -41,6 +42,7 @@ API_HEADERS = {
     "softbody/tc_softbody.h", "softbody/tc_settings.h", "softbody/solver_settings.h", "softbody/material.h",
     "softbody/tc_softbody_solver.h", "softbody/cut_listener.h", "softbody/op_kind.h",
     "feedback/controller.h", "feedback/feedback_settings.h", "feedback/presets.h", "feedback/tree_cut_driver.h",
+    "feedback/world_budget.h",
     "view/camera.h", "view/keyframe_path.h", "view/screen_projection.h",
 }
 
