@@ -1,14 +1,10 @@
 #include "case/case_body.h"
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 #include "case/step_clock.h"
-#include "softbody/bullet_setup.h"
-#include "softbody/plain_softbody.h"
-#include "suite/fidelity_plan.h"
 
 namespace tcsb {
 
@@ -65,102 +61,96 @@ void injected_step_work([[maybe_unused]] StepClock::time_point t0, [[maybe_unuse
 #endif
 }
 
-/// Stock Bullet: the plain baseline or CreatePatch.
+/// A plain Bullet body: the baseline, stock Bullet, CreatePatch or a uniform grid.
 class StockBody final : public CaseBody {
  public:
-  StockBody(SceneWorld& world, std::unique_ptr<btSoftBody> body)
-      : world_(world), body_(std::move(body)), attachment_(world.attach(*body_)) {}
+  StockBody(SceneWorld& world, Body body) : world_(world), body_(std::move(body)) {}
   void step(btScalar dt) override {
     world_.step(dt);
     end_part(StepPart::kBullet);
   }
-  const btSoftBody& bullet() const override { return *body_; }
+  const btSoftBody& bullet() const override { return *body_.bullet; }
 
  private:
   SceneWorld& world_;
-  std::unique_ptr<btSoftBody> body_;
-  SceneWorld::Attachment attachment_;  // after the body: leaves the world first
+  Body body_;
 };
 
 /// TC-SB with its controller (none at NoCompression: the body then never changes its cut).
 class TreeCutBody final : public CaseBody {
  public:
-  TreeCutBody(SceneWorld& world, std::unique_ptr<TcSoftBody> body, std::unique_ptr<Controller> controller)
-      : world_(world), body_(std::move(body)), attachment_(world.attach(*body_)), controller_(std::move(controller)) {}
+  TreeCutBody(SceneWorld& world, Body body) : world_(world), body_(std::move(body)), tc_(*body_.tc) {}
   void step(btScalar dt) override {
     // Five clock reads a step (tens of ns against a step of 0.1 ms and more), none inside Bullet's loops.
+    Controller* controller = body_.controller.get();
     const StepClock::time_point t0 = StepClock::now();
-    body_->advance_blends(OrderSettling::kByCaller);
+    tc_.advance_blends(OrderSettling::kByCaller);
     const StepClock::time_point t1 = StepClock::now();
-    if (controller_) controller_->before_step(*body_);
-    body_->settle_order();  // (the controllers settle before their snapshot already: then a no-op)
+    if (controller) controller->before_step(tc_);
+    tc_.settle_order();  // (the controllers settle before their snapshot already: then a no-op)
     const StepClock::time_point t2 = StepClock::now();
     end_part(StepPart::kOwn);
     world_.step(dt);
     end_part(StepPart::kBullet);
     const StepClock::time_point t3 = StepClock::now();
-    if (controller_) controller_->after_step(*body_);
-    injected_step_work(t0, *body_, counting());
+    if (controller) controller->after_step(tc_);
+    injected_step_work(t0, tc_, counting());
     const StepClock::time_point t4 = StepClock::now();
     end_part(StepPart::kOwn);
     phases_ = {ms_between(t0, t1), ms_between(t1, t2) + ms_between(t3, t4), ms_between(t2, t3)};
   }
   const StepPhases* phases() const override { return &phases_; }
-  const btSoftBody& bullet() const override { return *body_; }
-  int interpolations() const override { return body_->interpolations(); }
-  FeedbackCost feedback_cost() const override { return controller_ ? controller_->last_cost() : FeedbackCost{}; }
-  TcSoftBody* tc() override { return body_.get(); }
+  const btSoftBody& bullet() const override { return tc_; }
+  int interpolations() const override { return tc_.interpolations(); }
+  FeedbackCost feedback_cost() const override {
+    return body_.controller ? body_.controller->last_cost() : FeedbackCost{};
+  }
+  TcSoftBody* tc() override { return &tc_; }
   void pause() override {
-    if (controller_) controller_->pause();
+    if (body_.controller) body_.controller->pause();
   }
   void resume() override {
-    if (controller_) controller_->resume();
+    if (body_.controller) body_.controller->resume();
   }
 
  private:
   SceneWorld& world_;
-  std::unique_ptr<TcSoftBody> body_;
-  SceneWorld::Attachment attachment_;  // after the body: leaves the world first
-  std::unique_ptr<Controller> controller_;
+  Body body_;
+  TcSoftBody& tc_;
   StepPhases phases_;
 };
 
 }  // namespace
-
-int node_budget(const Net& net, double compression) {
-  return static_cast<int>(std::lround(compression * static_cast<double>(net.node_count())));
-}
 
 int target_node_count(const Net& net, const CaseKey& key) {
   if ((key.method != Method::kTcsb && key.method != Method::kPlainEqual) || !key.compression) return 0;
   return node_budget(net, *key.compression);
 }
 
+BodySpec case_body_spec(const CaseKey& key) {
+  BodySpec spec;
+  spec.compression = key.compression.value_or(0.0);  // (node budget 0, as target_node_count, without a target)
+  switch (key.method) {
+    case Method::kPlain: spec.kind = BodyKind::kPlain; break;
+    case Method::kStock:
+      spec.kind = BodyKind::kPlain;
+      spec.stock_solver = true;
+      break;
+    case Method::kBulletPatch: spec.kind = BodyKind::kBulletPatch; break;
+    // The fidelity pass's uniform grid, sized by the budget, not by TC-SB's measured mean node count, which is known
+    // only after TC-SB ran (it holds the budget, blends included, so it stays at most that).
+    case Method::kPlainEqual: spec.kind = BodyKind::kUniform; break;
+    case Method::kTcsb: spec.kind = BodyKind::kTcsb; break;
+  }
+  return spec;
+}
+
 std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key, SceneWorld& world,
                                          std::shared_ptr<const Net> net, std::uint64_t seed) {
-  switch (key.method) {
-    case Method::kPlain:
-      return std::make_unique<StockBody>(world, make_plain_softbody(world.info(), *net, suite.solver));
-    case Method::kStock:
-      return std::make_unique<StockBody>(world, make_plain_softbody(world.info(), *net, stock_bullet(suite.solver)));
-    case Method::kBulletPatch:
-      return std::make_unique<StockBody>(world, make_bullet_patch(world.info(), *net, suite.solver));
-    case Method::kPlainEqual: {
-      // The fidelity pass's uniform grid (coarse_net_spec): sized by the budget, not by TC-SB's measured mean node
-      // count, which is known only after TC-SB ran (it holds the budget, blends included, so it stays at most that).
-      const Net coarse(coarse_net_spec(net->spec(), target_node_count(*net, key)));
-      return std::make_unique<StockBody>(world, make_plain_softbody(world.info(), coarse, suite.solver));
-    }
-    case Method::kTcsb: {
-      const int target = target_node_count(*net, key);
-      auto body = std::make_unique<TcSoftBody>(world.info(), net, suite.solver, suite.tcsb);
-      std::unique_ptr<Controller> controller;
-      if (target < static_cast<int>(net->node_count()))
-        controller = make_controller(suite.feedback, target, seed, suite_spectator(suite));
-      return std::make_unique<TreeCutBody>(world, std::move(body), std::move(controller));
-    }
-  }
-  return nullptr;
+  const BodySpec spec = case_body_spec(key);
+  Body body = make_body(suite, spec, world, std::move(net), seed);
+  if (spec.kind == BodyKind::kTcsb) return std::make_unique<TreeCutBody>(world, std::move(body));
+  return std::make_unique<StockBody>(world, std::move(body));
 }
 
 }  // namespace tcsb

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include "case/body_factory.h"
 #include "case/instruction_meter.h"
 #include "feedback/controller.h"
 #include "net/net.h"
@@ -60,15 +61,15 @@ class CaseBody {
   InstructionMeter* meter_ = nullptr;
 };
 
-/// A node budget: the compression target times the net's node count, rounded. Timed cases and fidelity subjects
-/// alike.
-int node_budget(const Net& net, double compression);
-
 /// Node budget of a TC-SB or plain_equal case (node_budget), 0 for other methods.
 int target_node_count(const Net& net, const CaseKey& key);
 
-/// Builds the body for a case inside `world` (which steps it; it must outlive the body). `seed` drives any random
-/// choices (same seed, same run).
+/// The description of a case's body: plain and stock Bullet on the net, Bullet's patch, plain_equal's uniform grid of
+/// the budget (the fidelity pass's uniform_grid), or the suite's TC-SB at the budget.
+BodySpec case_body_spec(const CaseKey& key);
+
+/// Builds the body for a case (case_body_spec, make_body) inside `world` (which steps it; it must outlive the body).
+/// `seed` drives any random choices (same seed, same run).
 std::unique_ptr<CaseBody> make_case_body(const Suite& suite, const CaseKey& key, SceneWorld& world,
                                          std::shared_ptr<const Net> net, std::uint64_t seed);
 

@@ -8,12 +8,10 @@
 
 #include "analysis/fidelity_metrics.h"
 #include "analysis/line_search.h"
-#include "fidelity/fidelity_subject.h"
+#include "case/body_factory.h"
 #include "fidelity/reconstruction.h"
 #include "net/grid_resample.h"
-#include "softbody/bullet_setup.h"
 #include "softbody/divergence.h"
-#include "softbody/plain_softbody.h"
 
 namespace tcsb {
 
@@ -32,19 +30,20 @@ struct Trajectory {
   }
 };
 
-Trajectory record_reference(const Suite& suite, const Net& net) {
+Trajectory record_reference(const Suite& suite, const std::shared_ptr<const Net>& fine) {
   SceneWorld world(suite.world, suite.scene);
-  std::unique_ptr<btSoftBody> body = make_plain_softbody(world.info(), net, suite.solver);
-  const SceneWorld::Attachment attachment = world.attach(*body);
+  const Body reference = make_body(suite, {.kind = BodyKind::kPlain}, world, fine, suite.seed);
+  const btSoftBody& body = *reference.bullet;
+  const Net& net = *fine;
   Trajectory t;
   t.nodes = net.node_count();
   std::vector<Eigen::Vector3d> x;
   for (int s = 0; s < suite.warmup_steps + suite.steps; ++s) {
     world.step(static_cast<btScalar>(suite.world.dt));
-    if (divergence_now(*body, net.extent()))
+    if (divergence_now(body, net.extent()))
       throw std::runtime_error("calibrate: the reference diverged on net \"" + net.spec().name + "\"");
     if (s < suite.warmup_steps) continue;
-    copy_positions(*body, x);
+    copy_positions(body, x);
     for (const Eigen::Vector3d& p : x)
       t.frames.push_back({static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())});
   }
@@ -72,28 +71,27 @@ double mean_rms(const Suite& suite, const Net& net, SceneWorld& world, const btS
 /// A TC-SB body coarsened to `level` with `stiffness` for its levels, against the reference.
 double level_error(const Suite& suite, const std::shared_ptr<const Net>& net, const Trajectory& reference, int level,
                    const std::vector<double>& stiffness) {
+  Suite trial = suite;
+  trial.tcsb.level_stiffness = stiffness;
   SceneWorld world(suite.world, suite.scene);
-  TcSettings tc = suite.tcsb;
-  tc.level_stiffness = stiffness;
-  tc.start_level = 0;  // the whole `level` cut below, whatever cut the suite's bodies start at
-  TcSoftBody body(world.info(), net, suite.solver, tc);
-  body.coarsen_to_level(level);
-  const SceneWorld::Attachment attachment = world.attach(body);
-  return mean_rms(suite, *net, world, body, reference,
-                  [&](std::vector<Eigen::Vector3d>& out) { reconstruct_leaves(body, out); });
+  // At full budget: no controller, the cut stays at `level`.
+  const Body body = make_body(trial, {.kind = BodyKind::kTcsb, .whole_level = level}, world, net, suite.seed);
+  return mean_rms(suite, *net, world, *body.bullet, reference,
+                  [&](std::vector<Eigen::Vector3d>& out) { reconstruct_leaves(*body.tc, out); });
 }
 
 /// The uniform grid of a budget with material stiffness `k`, against the reference.
-double uniform_error(const Suite& suite, const Net& net, const Trajectory& reference, double compression, double k) {
+double uniform_error(const Suite& suite, const std::shared_ptr<const Net>& fine, const Trajectory& reference,
+                     double compression, double k) {
+  Suite trial = suite;
+  trial.solver.linear_stiffness = k;
   SceneWorld world(suite.world, suite.scene);
-  const Net coarse(coarse_net_spec(net.spec(), subject_budget(net, {FidelityMethod::kUniform, compression})));
-  SolverSettings solver = suite.solver;
-  solver.linear_stiffness = k;
-  std::unique_ptr<btSoftBody> body = make_plain_softbody(world.info(), coarse, solver);
-  const SceneWorld::Attachment attachment = world.attach(*body);
+  const Body body = make_body(trial, {.kind = BodyKind::kUniform, .compression = compression}, world, fine, suite.seed);
+  const Net& net = *fine;
+  const Net& coarse = *body.net;
   std::vector<Eigen::Vector3d> x;
-  return mean_rms(suite, net, world, *body, reference, [&](std::vector<Eigen::Vector3d>& out) {
-    copy_positions(*body, x);
+  return mean_rms(suite, net, world, *body.bullet, reference, [&](std::vector<Eigen::Vector3d>& out) {
+    copy_positions(*body.bullet, x);
     out.resize(net.node_count());
     resample_bilinear({coarse.width(), coarse.height()}, x, {net.width(), net.height()}, out);
   });
@@ -130,7 +128,7 @@ std::string fixed(double v, int digits) {
 std::vector<StiffnessFit> evaluate_calibration(const Calibration& calibration, const Suite& suite,
                                                const std::vector<std::shared_ptr<const Net>>& nets) {
   std::vector<Trajectory> references;
-  for (const auto& net : nets) references.push_back(record_reference(suite, *net));
+  for (const auto& net : nets) references.push_back(record_reference(suite, net));
   const double base = suite.solver.linear_stiffness;
   const std::vector<double> stiffness = calibration.level_stiffness();
   const int levels = std::min(calibrated_level_count(nets, static_cast<int>(stiffness.size())),
@@ -152,7 +150,7 @@ std::vector<StiffnessFit> evaluate_calibration(const Calibration& calibration, c
       continue;
     const auto error = [&](double k) {
       return mean_over_nets(nets.size(), [&](std::size_t n) {
-        return uniform_error(suite, *nets[n], references[n], f.compression, k);
+        return uniform_error(suite, nets[n], references[n], f.compression, k);
       });
     };
     f.rms_pct = error(f.linear_stiffness);
@@ -177,7 +175,7 @@ Calibration calibrate_suite(const Suite& suite, const std::vector<std::shared_pt
   c.piterations = suite.solver.piterations;
   c.linear_stiffness = suite.solver.linear_stiffness;
   std::vector<Trajectory> references;
-  for (const auto& net : nets) references.push_back(record_reference(suite, *net));
+  for (const auto& net : nets) references.push_back(record_reference(suite, net));
   const double base = suite.solver.linear_stiffness;
   const auto report = [&](const std::string& what, const StiffnessFit& f) {
     if (progress)
@@ -206,7 +204,7 @@ Calibration calibrate_suite(const Suite& suite, const std::vector<std::shared_pt
   for (const double t : targets) {
     StiffnessFit f = fit(search, base, [&](double k) {
       return mean_over_nets(nets.size(),
-                            [&](std::size_t n) { return uniform_error(suite, *nets[n], references[n], t, k); });
+                            [&](std::size_t n) { return uniform_error(suite, nets[n], references[n], t, k); });
     });
     f.compression = t;
     c.uniform_grid.push_back(f);

@@ -57,12 +57,6 @@ SubstepDoubling measure_doubling(const Suite& suite, const Net& net, std::size_t
 
 }  // namespace
 
-SolverSettings with_substeps(const SolverSettings& solver, int substeps) {
-  SolverSettings s = solver;
-  s.compliant.substeps = substeps;
-  return s;
-}
-
 ReferenceSubsteps find_reference_substeps(const Suite& suite, const std::shared_ptr<const Net>& net,
                                           std::size_t net_index) {
   ReferenceSubsteps out;

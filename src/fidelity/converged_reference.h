@@ -24,7 +24,4 @@ inline constexpr int kMaxReferenceDoublings = 3;
 ReferenceSubsteps find_reference_substeps(const Suite& suite, const std::shared_ptr<const Net>& net,
                                           std::size_t net_index);
 
-/// The suite's solver settings with `substeps` small steps.
-SolverSettings with_substeps(const SolverSettings& solver, int substeps);
-
 }  // namespace tcsb

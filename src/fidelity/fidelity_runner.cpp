@@ -8,6 +8,7 @@
 
 #include "analysis/fidelity_metrics.h"
 #include "analysis/statistics.h"
+#include "case/body_factory.h"
 #include "case/state_hash.h"
 #include "case/step_clock.h"
 #include "feedback/cut_snapshot.h"
@@ -177,9 +178,9 @@ class Track {
     result.net = net_index;
     result.net_name = net->spec().name;
     result.subject = spec;
-    result.target_nodes = subject_budget(*net, spec);
+    result.target_nodes = node_budget(*net, spec.body.compression);
     // Without a pace (not in fidelity_plan()'s subjects) the switch happens at the first measured boundary.
-    body_ = make_fidelity_subject(suite, spec, world_, net, fidelity_seed(suite, net_index, spec), pace,
+    body_ = make_fidelity_subject(suite, spec.body, world_, net, fidelity_seed(suite, net_index, spec), pace,
                                   suite.warmup_steps);
     result.grid = body_->grid();
     body_->reconstruct(surface_);
@@ -299,12 +300,11 @@ class FloorTrack {
     result.net_name = net->spec().name;
     std::vector<double> budgets;
     for (const FidelitySubjectSpec& spec : plan)
-      if (std::none_of(budgets.begin(), budgets.end(), [&](double b) { return b == spec.compression; }))
-        budgets.push_back(spec.compression);
+      if (std::none_of(budgets.begin(), budgets.end(), [&](double b) { return b == spec.body.compression; }))
+        budgets.push_back(spec.body.compression);
     std::sort(budgets.begin(), budgets.end());
     for (const double b : budgets) {
-      const CoarseGrid g =
-          coarse_grid_for(net->width(), net->height(), subject_budget(*net, {FidelityMethod::kTcsb, b}));
+      const CoarseGrid g = coarse_grid_for(net->width(), net->height(), node_budget(*net, b));
       grids_.push_back({g.width, g.height});
       result.interpolation.push_back({b, std::to_string(g.width) + "x" + std::to_string(g.height), {}});
     }
@@ -381,8 +381,8 @@ void run_net(const Suite& suite, std::size_t net_index, const std::shared_ptr<co
     // the pace's track steps each block before it.
     const FidelitySubject* pace = nullptr;
     for (const auto& t : tracks)
-      if (spec.method == FidelityMethod::kSwitch && t->result.subject.method == FidelityMethod::kTcsb &&
-          t->result.subject.compression == spec.compression)
+      if (spec.method == "switch_body" && t->result.subject.method == "tcsb" &&
+          t->result.subject.body.compression == spec.body.compression)
         pace = &t->subject();
     tracks.push_back(std::make_unique<Track>(suite, net_index, net, spec, pace));
   }
@@ -408,14 +408,15 @@ void run_net(const Suite& suite, std::size_t net_index, const std::shared_ptr<co
 
 std::uint64_t fidelity_seed(const Suite& suite, std::size_t net, const FidelitySubjectSpec& spec) {
   const std::vector<CaseKey> keys = expand_cases(suite);
-  if (spec.method == FidelityMethod::kTcsb) {
+  if (spec.method == "tcsb") {
     for (std::size_t i = 0; i < keys.size(); ++i)
-      if (keys[i].net == net && keys[i].method == Method::kTcsb && keys[i].compression == spec.compression)
+      if (keys[i].net == net && keys[i].method == Method::kTcsb && keys[i].compression == spec.body.compression)
         return case_seed(suite, i);
   }
   // Past every case index; distinct per net, method and target.
-  const auto target = static_cast<std::uint64_t>(std::llround(spec.compression * 1000.0));
-  return case_seed(suite, 100000) + net * 10000ULL + static_cast<std::uint64_t>(spec.method) * 1001ULL + target;
+  const auto target = static_cast<std::uint64_t>(std::llround(spec.body.compression * 1000.0));
+  const auto variant = static_cast<std::uint64_t>(fidelity_variant_index(spec.method));
+  return case_seed(suite, 100000) + net * 10000ULL + variant * 1001ULL + target;
 }
 
 FidelityResult run_fidelity(const Suite& suite, const std::vector<std::shared_ptr<const Net>>& nets,

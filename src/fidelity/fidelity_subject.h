@@ -16,7 +16,7 @@
 
 #include "net/net.h"
 #include "scene/scene_world.h"
-#include "suite/fidelity_plan.h"
+#include "suite/body_spec.h"
 #include "suite/suite.h"
 
 namespace tcsb {
@@ -55,20 +55,15 @@ class FidelitySubject {
   virtual std::optional<int> switch_step() const { return std::nullopt; }
 };
 
-/// Builds a subject on `net`. TC-SB subjects use the suite's solver, TC-SB and feedback settings, changed only where
-/// the ablation says (policy random, placement rigid); `seed` drives random choices. The node budget is
-/// round(compression x grid nodes), as for TC-SB cases.
+/// Builds the subject `spec` describes on `net` (make_body: the suite's settings, changed where the spec says; `seed`
+/// drives random choices). The node budget is round(compression x grid nodes), as for TC-SB cases.
 ///
 /// A switch_body subject switches when the budget starts to hold for TC-SB: at the first boundary at which `pace`
 /// (the TC-SB subject at the same target, stepped up to at least that boundary first) reports converged_step(), so
 /// both are coarse from the same step on (if TC-SB never fits its budget, the body never switches and says so with
 /// an empty switch_ms); without a pace, at the boundary of `fallback_switch_step`.
-std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const FidelitySubjectSpec& spec,
-                                                       SceneWorld& world, std::shared_ptr<const Net> net,
-                                                       std::uint64_t seed, const FidelitySubject* pace,
-                                                       int fallback_switch_step);
-
-/// The node budget of a subject on a net: round(compression x grid nodes).
-int subject_budget(const Net& net, const FidelitySubjectSpec& spec);
+std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const BodySpec& spec, SceneWorld& world,
+                                                       std::shared_ptr<const Net> net, std::uint64_t seed,
+                                                       const FidelitySubject* pace, int fallback_switch_step);
 
 }  // namespace tcsb

@@ -8,6 +8,7 @@
 #include "fidelity/reconstruction.h"
 #include "softbody/divergence.h"
 #include "softbody/tc_softbody_impl.h"
+#include "suite/fidelity_plan.h"
 
 namespace tcsb {
 
@@ -62,18 +63,18 @@ FigureFrames record_figure_frames(const Suite& suite, std::size_t net_index, dou
   // One world per body: a body keeps its world's address, and each steps its own.
   SceneWorld plain_world(suite.world, suite.scene), tc_world(suite.world, suite.scene);
   const std::unique_ptr<CaseBody> plain = make_case_body(suite, plain_key, plain_world, net, suite.seed);
-  const FidelitySubjectSpec subject{calibrated ? FidelityMethod::kTcsbCalibrated : FidelityMethod::kTcsb, compression};
+  const FidelitySubjectSpec subject = fidelity_subject(calibrated ? "tcsb_calibrated" : "tcsb", compression);
   const std::unique_ptr<FidelitySubject> tc =
-      make_fidelity_subject(suite, subject, tc_world, net, suite.seed, nullptr, 0);
+      make_fidelity_subject(suite, subject.body, tc_world, net, suite.seed, nullptr, 0);
   const auto& tc_body = dynamic_cast<const TcSoftBody&>(tc->bullet());
   // What the camera compares TC-SB with: the static grid of its node count.
   SceneWorld uniform_world(suite.world, suite.scene);
   std::unique_ptr<FidelitySubject> uniform;
   if (suite.scene.camera) {
-    const FidelitySubjectSpec grid{calibrated ? FidelityMethod::kUniformCalibrated : FidelityMethod::kUniform,
-                                   compression};
-    uniform = make_fidelity_subject(suite, grid, uniform_world, net, suite.seed, nullptr, 0);
-    const CoarseGrid g = coarse_grid_for(spec.width, spec.height, subject_budget(*net, grid));
+    const FidelitySubjectSpec grid =
+        fidelity_subject(calibrated ? "uniform_grid_calibrated" : "uniform_grid", compression);
+    uniform = make_fidelity_subject(suite, grid.body, uniform_world, net, suite.seed, nullptr, 0);
+    const CoarseGrid g = coarse_grid_for(spec.width, spec.height, node_budget(*net, compression));
     out.uniform_width = g.width;
     out.uniform_height = g.height;
   }

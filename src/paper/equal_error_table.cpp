@@ -149,16 +149,16 @@ EqualErrorNet net_table(const FidelityResult& result, const FidelityFloors& floo
     const std::optional<double> error = case_error(c, camera);
     if (!error) continue;
     // Below the noise floor an error is not resolved; the floor keeps the log-log curves defined.
-    TimedPoint p{{.method = fidelity_method_name(c.subject.method),
-                  .compression = c.subject.compression,
-                  .solver_divisor = c.subject.solver_divisor,
+    TimedPoint p{{.method = c.subject.method,
+                  .compression = c.subject.body.compression,
+                  .solver_divisor = c.subject.body.solver_divisor,
                   .nodes = c.mean_nodes,
                   .time_ms = median(c.block_step_ms),
                   .error = std::max(*error, *floor)},
                  &c.block_step_ms};
-    if (c.subject.method == FidelityMethod::kTcsb && c.subject.compression < 1.0) tcsb.push_back(p);
-    if (c.subject.method == FidelityMethod::kUniform) grid.push_back(p);
-    if (c.subject.method == FidelityMethod::kFullResolution) full.push_back(p);
+    if (c.subject.method == "tcsb" && c.subject.body.compression < 1.0) tcsb.push_back(p);
+    if (c.subject.method == "uniform_grid") grid.push_back(p);
+    if (c.subject.method == "full_resolution") full.push_back(p);
   }
   TimedPoint top = reference;
   if (!full.empty()) top.point.nodes = full.front().point.nodes;
@@ -178,9 +178,8 @@ EqualErrorNet net_table(const FidelityResult& result, const FidelityFloors& floo
 }  // namespace
 
 std::vector<EqualErrorNet> equal_error_table(const FidelityResult& result, std::uint64_t seed) {
-  const bool curves = std::any_of(result.cases.begin(), result.cases.end(), [](const FidelityCase& c) {
-    return c.subject.method == FidelityMethod::kFullResolution;
-  });
+  const bool curves = std::any_of(result.cases.begin(), result.cases.end(),
+                                  [](const FidelityCase& c) { return c.subject.method == "full_resolution"; });
   std::vector<EqualErrorNet> out;
   if (!curves) return out;
   for (const FidelityFloors& f : result.floors) out.push_back(net_table(result, f, seed + f.net));

@@ -16,7 +16,8 @@ namespace tcsb {
 
 /// One body of a curve as measured.
 struct EqualErrorPoint {
-  std::string method;  ///< fidelity_method_name(), or "reference" (full resolution as the pass's reference steps it)
+  std::string
+      method;  ///< FidelitySubjectSpec::method, or "reference" (full resolution as the pass's reference steps it)
   double compression = 1.0;
   int solver_divisor = 1;
   double nodes = 0;    ///< simulated nodes, mean over the measured steps

@@ -76,16 +76,16 @@ std::vector<FidelityRow> fidelity_rows(const FidelityResult& result) {
   std::vector<FidelityRow> rows;
   std::vector<std::vector<const FidelityCase*>> members;
   for (const FidelityCase& c : result.cases) {
-    const std::string method = fidelity_method_name(c.subject.method);
+    const std::string method = c.subject.method;
     auto it = std::find_if(rows.begin(), rows.end(), [&](const FidelityRow& r) {
-      return r.method == method && same_compression(r.compression, c.subject.compression) &&
-             r.solver_divisor == c.subject.solver_divisor;
+      return r.method == method && same_compression(r.compression, c.subject.body.compression) &&
+             r.solver_divisor == c.subject.body.solver_divisor;
     });
     if (it == rows.end()) {
       rows.push_back({});
       rows.back().method = method;
-      rows.back().compression = c.subject.compression;
-      rows.back().solver_divisor = c.subject.solver_divisor;
+      rows.back().compression = c.subject.body.compression;
+      rows.back().solver_divisor = c.subject.body.solver_divisor;
       members.emplace_back();
       it = rows.end() - 1;
     }

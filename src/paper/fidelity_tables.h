@@ -16,7 +16,7 @@ namespace tcsb {
 /// One (method, compression) group of the fidelity pass over its ok nets. Metric summaries combine the nets' as:
 /// mean and p95 = mean over nets of each net's value, max = max over nets (so "every step of every net").
 struct FidelityRow {
-  std::string method;  ///< fidelity_method_name()
+  std::string method;  ///< FidelitySubjectSpec::method
   double compression = 1.0;
   int solver_divisor = 1;   ///< full_resolution: what the suite's passes a step were divided by
   std::optional<double> N;  ///< simulated nodes, mean over nets of the per-net mean

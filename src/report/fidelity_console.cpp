@@ -93,9 +93,7 @@ void print_screen(const FidelityResult& fidelity, std::ostream& out) {
   for (const FidelityFloors& f : fidelity.floors)
     if (f.noise_screen) add(f.net_name, "noise floor", "", *f.noise_screen, "");
   for (const FidelityCase& c : fidelity.cases)
-    if (c.screen)
-      add(c.net_name, fidelity_method_name(c.subject.method), compression_label(c.subject.compression), *c.screen,
-          c.status);
+    if (c.screen) add(c.net_name, c.subject.method, compression_label(c.subject.body.compression), *c.screen, c.status);
   out << "Error in pixels as the camera sees it (per step over the grid points in view: mean, p95, max; then mean "
          "over steps, max for max; steps p95>1px: share of steps whose p95 exceeds one pixel; in view: grid points "
          "per step):\n";

@@ -35,7 +35,7 @@ ojson claim_json(const Claim& c) {
 
 /// A row or case of the full-resolution curve names its divisor; no other writes it (older results stay as they were).
 void add_solver_divisor(const std::string& method, int divisor, ojson& out) {
-  if (method == fidelity_method_name(FidelityMethod::kFullResolution)) out["solver_divisor"] = divisor;
+  if (method == "full_resolution") out["solver_divisor"] = divisor;
 }
 
 ojson row_json(const FidelityRow& r) {
@@ -112,8 +112,8 @@ ojson equal_error_json(const EqualErrorNet& n) {
 
 ojson case_json(const FidelityCase& c) {
   ojson out = {{"net", c.net_name},
-               {"method", fidelity_method_name(c.subject.method)},
-               {"compression", json_number(c.subject.compression)},
+               {"method", c.subject.method},
+               {"compression", json_number(c.subject.body.compression)},
                {"target_nodes", c.target_nodes},
                {"N", json_number(c.mean_nodes)},
                {"grid", c.grid.empty() ? ojson(nullptr) : ojson(c.grid)},
@@ -133,7 +133,7 @@ ojson case_json(const FidelityCase& c) {
                {"switch_step", json_integer(c.switch_step)},
                {"converged_step", json_integer(c.converged_step)},
                {"final_state_hash", c.final_state_hash}};
-  add_solver_divisor(out["method"], c.subject.solver_divisor, out);
+  add_solver_divisor(out["method"], c.subject.body.solver_divisor, out);
   out["block_step_ms"] = numbers_json(c.block_step_ms);
   // Only in a scene with a camera: every other result stays as it was.
   if (c.screen) out["screen"] = screen_json(*c.screen);

@@ -1,6 +1,8 @@
 // SolverSettings: the btSoftBody configuration a suite states, applied identically to every body of a run.
 #pragma once
 
+#include <algorithm>
+
 #include "../softbody/material.h"
 
 namespace tcsb {
@@ -27,9 +29,23 @@ struct SolverSettings {
 };
 
 /// The same settings stepped by Bullet itself (MaterialModel::kBullet): stock Bullet at the suite's kLST and
-/// iterations, the baseline beside a compliant suite's bodies (Method::kStock, FidelityMethod::kStock).
+/// iterations, the baseline beside a compliant suite's bodies (Method::kStock, and the fidelity pass's stock_bullet).
 inline SolverSettings stock_bullet(SolverSettings settings) {
   settings.model = MaterialModel::kBullet;
+  return settings;
+}
+
+/// The same settings with `substeps` small steps of the compliant material.
+inline SolverSettings with_substeps(SolverSettings settings, int substeps) {
+  settings.compliant.substeps = substeps;
+  return settings;
+}
+
+/// The same settings with their link passes a step (the small steps under the compliant material) divided by
+/// `divisor`, at least 1: a cheaper cloth without adaptivity (the fidelity pass's full-resolution curve).
+inline SolverSettings with_passes_divided(SolverSettings settings, int divisor) {
+  if (settings.compliant_model()) return with_substeps(settings, std::max(1, settings.compliant.substeps / divisor));
+  settings.piterations = std::max(1, settings.piterations / divisor);
   return settings;
 }
 

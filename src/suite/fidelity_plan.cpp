@@ -7,25 +7,6 @@
 
 namespace tcsb {
 
-const char* fidelity_method_name(FidelityMethod method) {
-  switch (method) {
-    case FidelityMethod::kTcsb: return "tcsb";
-    case FidelityMethod::kUniform: return "uniform_grid";
-    case FidelityMethod::kSwitch: return "switch_body";
-    case FidelityMethod::kTcsbRandom: return "tcsb_random";
-    case FidelityMethod::kTcsbRigid: return "tcsb_rigid";
-    case FidelityMethod::kTcsbNoGeomorph: return "tcsb_no_geomorph";
-    case FidelityMethod::kTcsbCalibrated: return "tcsb_calibrated";
-    case FidelityMethod::kUniformCalibrated: return "uniform_grid_calibrated";
-    case FidelityMethod::kTcsbCalibratedFans: return "tcsb_calibrated_fans";
-    case FidelityMethod::kTcsbMotionOnly: return "tcsb_motion_only";
-    case FidelityMethod::kTcsbCalibratedMotionOnly: return "tcsb_calibrated_motion_only";
-    case FidelityMethod::kStock: return "stock_bullet";
-    case FidelityMethod::kFullResolution: return "full_resolution";
-  }
-  return "unknown";
-}
-
 std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
   std::vector<FidelitySubjectSpec> plan;
   const bool has_tcsb = std::find(suite.methods.begin(), suite.methods.end(), Method::kTcsb) != suite.methods.end();
@@ -36,47 +17,46 @@ std::vector<FidelitySubjectSpec> fidelity_plan(const Suite& suite) {
     targets.insert(targets.end(), suite.fidelity.curves->budgets.begin(), suite.fidelity.curves->budgets.end());
   std::sort(targets.begin(), targets.end());
   targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
-  for (const double c : targets) plan.push_back({FidelityMethod::kTcsb, c});
-  const auto add_at_targets = [&](FidelityMethod m) {
+  for (const double c : targets) plan.push_back(fidelity_subject("tcsb", c));
+  const auto add_at_targets = [&](std::string_view m) {
     for (const double c : suite.compression)
-      if (c < 1.0) plan.push_back({m, c});
+      if (c < 1.0) plan.push_back(fidelity_subject(m, c));
   };
   if (suite.fidelity.ablations)
-    for (const FidelityMethod m : {FidelityMethod::kUniform, FidelityMethod::kSwitch, FidelityMethod::kTcsbRandom,
-                                   FidelityMethod::kTcsbRigid, FidelityMethod::kTcsbNoGeomorph})
+    for (const std::string_view m : {"uniform_grid", "switch_body", "tcsb_random", "tcsb_rigid", "tcsb_no_geomorph"})
       add_at_targets(m);
   if (suite.calibration) {
     // Calibrated TC-SB at every target below 1 of the sweep too, so its maximal compression can be reported (at 1
     // it would be the uncalibrated full-resolution body); its rival, the calibrated grid, at the suite's targets.
     for (const double c : targets)
-      if (c < 1.0) plan.push_back({FidelityMethod::kTcsbCalibrated, c});
-    add_at_targets(FidelityMethod::kUniformCalibrated);
+      if (c < 1.0) plan.push_back(fidelity_subject("tcsb_calibrated", c));
+    add_at_targets("uniform_grid_calibrated");
     if (suite.fidelity.ablations && suite.tcsb.interfaces == Interfaces::kHanging)
-      add_at_targets(FidelityMethod::kTcsbCalibratedFans);
+      add_at_targets("tcsb_calibrated_fans");
   }
   if (suite.feedback.view) {
-    add_at_targets(FidelityMethod::kTcsbMotionOnly);
-    if (suite.calibration) add_at_targets(FidelityMethod::kTcsbCalibratedMotionOnly);
+    add_at_targets("tcsb_motion_only");
+    if (suite.calibration) add_at_targets("tcsb_calibrated_motion_only");
   }
   if (suite.solver.compliant_model()) {
     // One material, no calibration: the uniform grid of the same material is TC-SB's rival at every target; and
     // stock Bullet at the suite's iterations, measured against the same converged cloth.
-    if (!suite.fidelity.ablations) add_at_targets(FidelityMethod::kUniform);
-    plan.push_back({FidelityMethod::kStock, 1.0});
+    if (!suite.fidelity.ablations) add_at_targets("uniform_grid");
+    plan.push_back(fidelity_subject("stock_bullet", 1.0));
   }
   if (const std::optional<FidelityCurves>& curves = suite.fidelity.curves) {
-    const auto planned = [&](FidelityMethod m, double c) {
+    const auto planned = [&](std::string_view m, double c) {
       return std::any_of(plan.begin(), plan.end(),
-                         [&](const FidelitySubjectSpec& p) { return p.method == m && p.compression == c; });
+                         [&](const FidelitySubjectSpec& p) { return p.method == m && p.body.compression == c; });
     };
     std::vector<double> grid_budgets = curves->budgets;
     for (const double c : suite.compression)
       if (c < 1.0) grid_budgets.push_back(c);
     std::sort(grid_budgets.begin(), grid_budgets.end());
     for (const double c : grid_budgets)
-      if (!planned(FidelityMethod::kUniform, c)) plan.push_back({FidelityMethod::kUniform, c});
-    if (suite.solver.compliant_model()) plan.push_back({FidelityMethod::kFullResolution, 1.0, 1});
-    for (const int d : curves->solver_divisors) plan.push_back({FidelityMethod::kFullResolution, 1.0, d});
+      if (!planned("uniform_grid", c)) plan.push_back(fidelity_subject("uniform_grid", c));
+    if (suite.solver.compliant_model()) plan.push_back(fidelity_subject("full_resolution", 1.0, 1));
+    for (const int d : curves->solver_divisors) plan.push_back(fidelity_subject("full_resolution", 1.0, d));
   }
   return plan;
 }

@@ -7,48 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "suite/fidelity_variant.h"
 #include "suite/suite.h"
 
 namespace tcsb {
-
-/// The ways the fidelity pass can simulate a net at a node budget.
-enum class FidelityMethod {
-  kTcsb,            ///< TC-SB as the suite configures it (the method under test)
-  kUniform,         ///< a static coarse grid of about the budget's node count, same size, mass and pins (ablation)
-  kSwitch,          ///< full resolution, then a new coarse btSoftBody built from its state when the budget applies (the
-                    ///< paper's stated alternative: "a new SoftBody has to be created", §6) (ablation)
-  kTcsbRandom,      ///< TC-SB driven by seeded random operations instead of saliency (ablation)
-  kTcsbRigid,       ///< TC-SB with the paper's rigid-offset child placement instead of the affine fit (ablation)
-  kTcsbNoGeomorph,  ///< TC-SB, the same body, its surface switched at once instead of geomorphed (ablation;
-                    ///< fidelity/surface_morph.h)
-  kTcsbCalibrated,  ///< TC-SB with the suite calibration's per-level link stiffness (TcSettings::level_stiffness)
-  kUniformCalibrated,   ///< the uniform coarse grid with the calibration's stiffness for its budget (the fair rival)
-  kTcsbCalibratedFans,  ///< calibrated TC-SB with the paper's fans at interfaces, in a suite whose TC-SB uses
-                        ///< hanging interfaces (ablation)
-  kTcsbMotionOnly,      ///< TC-SB with the paper's motion-only BSWDF, in a suite whose TC-SB uses the view terms
-  kTcsbCalibratedMotionOnly,  ///< the same, calibrated
-  /// Under the compliant material: stock Bullet at full resolution with the suite's solver settings (kLST and
-  /// piterations), against the same converged reference as every subject.
-  kStock,
-  /// Full resolution of the suite's material with its link passes a step (its small steps under the compliant
-  /// material) divided by FidelitySubjectSpec::solver_divisor: the third curve of error against time, what a user
-  /// who wants a cheaper cloth without adaptivity would try (fidelity.curves).
-  kFullResolution,
-};
-
-/// Name used in reports: "tcsb", "uniform_grid", "switch_body", "tcsb_random", "tcsb_rigid", "tcsb_no_geomorph",
-/// "tcsb_calibrated", "uniform_grid_calibrated", "tcsb_calibrated_fans", "tcsb_motion_only",
-/// "tcsb_calibrated_motion_only", "stock_bullet", "full_resolution". ("tcsb" is the suite's TC-SB, uncalibrated: the
-/// timed one.)
-const char* fidelity_method_name(FidelityMethod method);
-
-/// One body of the fidelity pass on every net.
-struct FidelitySubjectSpec {
-  FidelityMethod method = FidelityMethod::kTcsb;
-  double compression = 1.0;  ///< node budget as a fraction of the net's node count
-  /// kFullResolution: what the suite's link passes (small steps) a step are divided by; 1 for every other method.
-  int solver_divisor = 1;
-};
 
 /// The subjects, in report order: TC-SB at every target of compression and fidelity.pareto_targets (ascending,
 /// each once), then, with fidelity.ablations, the five ablations at every suite compression target below 1 (at 1

@@ -202,8 +202,8 @@ FidelityCase read_fidelity_case(const Reader& r, const ojson& j, const std::stri
   c.net = net;
   c.net_name = r.string(j, path, "net");
   c.subject = subject;
-  if (r.string(j, path, "method") != fidelity_method_name(subject.method)) {
-    r.fail(path + ".method", "expected " + std::string(fidelity_method_name(subject.method)) + " here");
+  if (r.string(j, path, "method") != subject.method) {
+    r.fail(path + ".method", "expected " + subject.method + " here");
   }
   c.target_nodes = static_cast<int>(r.integer(j, path, "target_nodes"));
   c.mean_nodes = measured(r.number_or_null(j, path, "N"));

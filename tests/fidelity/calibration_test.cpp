@@ -153,8 +153,8 @@ TEST(Calibration, TheFitNeverDoesWorseThanTheSolversStiffnessAndASuiteUsesIt) {
   EXPECT_EQ(calibrated.calibration->level_stiffness(), c.level_stiffness());
   int added = 0;
   for (const FidelitySubjectSpec& s : fidelity_plan(calibrated))
-    if (s.method == FidelityMethod::kTcsbCalibrated || s.method == FidelityMethod::kUniformCalibrated) {
-      EXPECT_EQ(s.compression, 0.3);
+    if (s.method == "tcsb_calibrated" || s.method == "uniform_grid_calibrated") {
+      EXPECT_EQ(s.body.compression, 0.3);
       ++added;
     }
   EXPECT_EQ(added, 2);
@@ -162,11 +162,11 @@ TEST(Calibration, TheFitNeverDoesWorseThanTheSolversStiffnessAndASuiteUsesIt) {
   const FidelityResult pass = run_fidelity(calibrated, nets);
   bool seen_tcsb = false, seen_grid = false;
   for (const FidelityCase& fc : pass.cases) {
-    if (fc.subject.method == FidelityMethod::kUniformCalibrated) {
+    if (fc.subject.method == "uniform_grid_calibrated") {
       seen_grid = true;
       EXPECT_NEAR(fc.rms_pct.mean, c.uniform_grid[0].rms_pct, 1e-9);
     }
-    if (fc.subject.method == FidelityMethod::kTcsbCalibrated) {
+    if (fc.subject.method == "tcsb_calibrated") {
       seen_tcsb = true;
       EXPECT_EQ(fc.status, "ok");
     }

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <tuple>
 
 #include "fidelity/fidelity_runner.h"
@@ -31,7 +32,7 @@ Suite suite_with_fidelity(bool ablations) {
 TEST(FidelityPlan, TcsbAtEveryTargetOnceAscendingThenTheAblationsBelowOne) {
   const std::vector<FidelitySubjectSpec> plan = fidelity_plan(suite_with_fidelity(true));
   std::vector<std::pair<std::string, double>> got;
-  for (const FidelitySubjectSpec& s : plan) got.emplace_back(fidelity_method_name(s.method), s.compression);
+  for (const FidelitySubjectSpec& s : plan) got.emplace_back(s.method, s.body.compression);
   const std::vector<std::pair<std::string, double>> want{{"tcsb", 0.1},
                                                          {"tcsb", 0.3},
                                                          {"tcsb", 0.5},
@@ -55,8 +56,8 @@ TEST(FidelityPlan, CalibratedTcsbAtEverySweepTargetBelowOneAndTheCalibratedGridA
   s.calibration = Calibration{};
   std::vector<std::pair<std::string, double>> got;
   for (const FidelitySubjectSpec& spec : fidelity_plan(s))
-    if (spec.method == FidelityMethod::kTcsbCalibrated || spec.method == FidelityMethod::kUniformCalibrated)
-      got.emplace_back(fidelity_method_name(spec.method), spec.compression);
+    if (spec.method == "tcsb_calibrated" || spec.method == "uniform_grid_calibrated")
+      got.emplace_back(spec.method, spec.body.compression);
   const std::vector<std::pair<std::string, double>> want{
       {"tcsb_calibrated", 0.1},  {"tcsb_calibrated", 0.3},          {"tcsb_calibrated", 0.5},
       {"tcsb_calibrated", 0.75}, {"uniform_grid_calibrated", 0.75}, {"uniform_grid_calibrated", 0.3}};
@@ -69,13 +70,15 @@ TEST(FidelityPlan, WithHangingInterfacesTheFannedBodyIsAnAblationAtTheSuitesTarg
   const auto fans = [](const Suite& suite) {
     std::vector<double> at;
     for (const FidelitySubjectSpec& spec : fidelity_plan(suite))
-      if (spec.method == FidelityMethod::kTcsbCalibratedFans) at.push_back(spec.compression);
+      if (spec.method == "tcsb_calibrated_fans") at.push_back(spec.body.compression);
     return at;
   };
   EXPECT_TRUE(fans(s).empty());  // the paper's fans are the suite's own TC-SB
   s.tcsb.interfaces = Interfaces::kHanging;
   EXPECT_EQ(fans(s), (std::vector<double>{0.75, 0.3}));
-  EXPECT_STREQ(fidelity_method_name(FidelityMethod::kTcsbCalibratedFans), "tcsb_calibrated_fans");
+  const BodySpec fanned = fidelity_subject("tcsb_calibrated_fans", 0.3).body;
+  EXPECT_EQ(fanned.interfaces, Interfaces::kLinks);
+  EXPECT_EQ(fanned.calibration, BodyCalibration::kSuite);
   s.fidelity.ablations = false;
   EXPECT_TRUE(fans(s).empty());
 }
@@ -97,7 +100,7 @@ TEST(FidelityPlan, CurvesAddTheGridsAtEveryBudgetAndFullResolutionAtEveryDivisor
   s.fidelity.curves = FidelityCurves{{0.1, 0.5}, {2, 4}};
   std::vector<std::tuple<std::string, double, int>> got;
   for (const FidelitySubjectSpec& spec : fidelity_plan(s))
-    got.emplace_back(fidelity_method_name(spec.method), spec.compression, spec.solver_divisor);
+    got.emplace_back(spec.method, spec.body.compression, spec.body.solver_divisor);
   const std::vector<std::tuple<std::string, double, int>> want{{"tcsb", 0.1, 1},           {"tcsb", 0.3, 1},
                                                                {"tcsb", 0.5, 1},           {"tcsb", 0.75, 1},
                                                                {"tcsb", 1.0, 1},           {"uniform_grid", 0.1, 1},
@@ -110,8 +113,8 @@ TEST(FidelityPlan, CurvesAddTheGridsAtEveryBudgetAndFullResolutionAtEveryDivisor
   s.tcsb.masses = Masses::kCut;
   int full_at_one = 0, grids = 0;
   for (const FidelitySubjectSpec& spec : fidelity_plan(s)) {
-    full_at_one += spec.method == FidelityMethod::kFullResolution && spec.solver_divisor == 1;
-    grids += spec.method == FidelityMethod::kUniform;
+    full_at_one += spec.method == "full_resolution" && spec.body.solver_divisor == 1;
+    grids += spec.method == "uniform_grid";
   }
   EXPECT_EQ(full_at_one, 1);
   EXPECT_EQ(grids, 4);  // each budget once, though the compliant material plans the suite's targets' grids too
@@ -141,18 +144,40 @@ TEST(FidelityPlan, CoarseNetKeepsTheClothsSizeMassAndPins) {
   EXPECT_NEAR(coarse.node_mass() * static_cast<double>(coarse.node_count()), 0.01 * 45 * 45, 1e-12);
 }
 
+TEST(FidelityVariant, EachNameIsABodyDescription) {
+  const BodySpec both = fidelity_subject("tcsb_calibrated_motion_only", 0.3).body;
+  EXPECT_EQ(both.kind, BodyKind::kTcsb);
+  EXPECT_EQ(both.compression, 0.3);
+  EXPECT_EQ(both.calibration, BodyCalibration::kSuite);
+  EXPECT_EQ(both.view_terms, false);
+  EXPECT_FALSE(both.policy);
+  const BodySpec stock = fidelity_subject("stock_bullet", 1.0).body;
+  EXPECT_EQ(stock.kind, BodyKind::kUniform);
+  EXPECT_TRUE(stock.stock_solver);
+  EXPECT_EQ(fidelity_subject("full_resolution", 1.0, 4).body.solver_divisor, 4);
+  EXPECT_EQ(fidelity_subject("tcsb_random", 0.5).body.policy, PolicyKind::kRandom);
+  EXPECT_EQ(fidelity_subject("tcsb_rigid", 0.5).body.placement, Placement::kRigid);
+  EXPECT_FALSE(fidelity_subject("tcsb_no_geomorph", 0.5).body.geomorph);
+  EXPECT_EQ(fidelity_subject("switch_body", 0.5).body.kind, BodyKind::kSwitch);
+  EXPECT_THROW(fidelity_subject("tcsb_calibrated_random", 0.5), std::invalid_argument);
+  // The seeds of results already written number the variants in this order.
+  EXPECT_EQ(fidelity_variant_index("tcsb"), 0);
+  EXPECT_EQ(fidelity_variant_index("tcsb_random"), 3);
+  EXPECT_EQ(fidelity_variant_index("full_resolution"), 12);
+}
+
 TEST(FidelitySeed, TcsbAtASuiteTargetRetracesItsTimedCase) {
   const Suite s = suite_with_fidelity(true);
   const std::vector<CaseKey> keys = expand_cases(s);
   for (std::size_t i = 0; i < keys.size(); ++i) {
     if (keys[i].method != Method::kTcsb) continue;
-    EXPECT_EQ(fidelity_seed(s, keys[i].net, {FidelityMethod::kTcsb, *keys[i].compression}), case_seed(s, i));
+    EXPECT_EQ(fidelity_seed(s, keys[i].net, fidelity_subject("tcsb", *keys[i].compression)), case_seed(s, i));
   }
   // Ablations and Pareto-only targets get seeds of their own, past every case.
-  const std::uint64_t random = fidelity_seed(s, 1, {FidelityMethod::kTcsbRandom, 0.3});
+  const std::uint64_t random = fidelity_seed(s, 1, fidelity_subject("tcsb_random", 0.3));
   EXPECT_GT(random, case_seed(s, keys.size()));
-  EXPECT_NE(random, fidelity_seed(s, 0, {FidelityMethod::kTcsbRandom, 0.3}));
-  EXPECT_NE(random, fidelity_seed(s, 1, {FidelityMethod::kTcsbRandom, 0.75}));
+  EXPECT_NE(random, fidelity_seed(s, 0, fidelity_subject("tcsb_random", 0.3)));
+  EXPECT_NE(random, fidelity_seed(s, 1, fidelity_subject("tcsb_random", 0.75)));
 }
 
 }  // namespace

@@ -33,10 +33,10 @@ Suite tiny_suite(double gravity) {
   return s;
 }
 
-const FidelityCase& find(const FidelityResult& r, FidelityMethod method, double compression) {
+const FidelityCase& find(const FidelityResult& r, std::string_view method, double compression) {
   for (const FidelityCase& c : r.cases)
-    if (c.subject.method == method && c.subject.compression == compression) return c;
-  ADD_FAILURE() << fidelity_method_name(method) << "@" << compression << " missing";
+    if (c.subject.method == method && c.subject.body.compression == compression) return c;
+  ADD_FAILURE() << method << "@" << compression << " missing";
   return r.cases.front();
 }
 
@@ -50,7 +50,7 @@ TEST(FidelityPass, TcsbWithoutCompressionIsTheReferenceExactly) {
   ASSERT_TRUE(run.fidelity);
   const FidelityResult& f = *run.fidelity;
   EXPECT_EQ(f.cases.size(), fidelity_plan(s).size());
-  const FidelityCase& full = find(f, FidelityMethod::kTcsb, 1.0);
+  const FidelityCase& full = find(f, "tcsb", 1.0);
   EXPECT_EQ(full.status, "ok");
   EXPECT_EQ(full.rms_pct.count, 40u);
   EXPECT_EQ(full.popping_pct.count, 70u);  // popping: every step, warm-up included
@@ -60,10 +60,10 @@ TEST(FidelityPass, TcsbWithoutCompressionIsTheReferenceExactly) {
   EXPECT_EQ(full.popping_pct.max, 0.0);
   EXPECT_EQ(full.energy_drift_pct.max, 0.0);
   // Compressed TC-SB and the ablations really differ from the reference: the pass can report an error.
-  EXPECT_GT(find(f, FidelityMethod::kTcsb, 0.25).rms_pct.mean, 0.0);
-  EXPECT_GT(find(f, FidelityMethod::kUniform, 0.5).rms_pct.mean, 0.0);
+  EXPECT_GT(find(f, "tcsb", 0.25).rms_pct.mean, 0.0);
+  EXPECT_GT(find(f, "uniform_grid", 0.5).rms_pct.mean, 0.0);
   for (const FidelityCase& c : f.cases) {
-    EXPECT_EQ(c.status, "ok") << fidelity_method_name(c.subject.method) << "@" << c.subject.compression;
+    EXPECT_EQ(c.status, "ok") << c.subject.method << "@" << c.subject.body.compression;
     for (const MetricSummary* m : {&c.rms_pct, &c.max_pct, &c.weighted_rms_pct, &c.popping_pct, &c.energy_drift_pct})
       expect_all_finite(*m);
     EXPECT_GT(c.step_ms, 0.0);
@@ -77,12 +77,11 @@ TEST(FidelityPass, TcsbSubjectRetracesTheTimedCaseAndTheSwitchFollowsItsConverge
   ASSERT_TRUE(run.fidelity);
   for (const CaseResult& c : run.cases) {
     if (c.key.method != Method::kTcsb) continue;
-    EXPECT_EQ(find(*run.fidelity, FidelityMethod::kTcsb, *c.key.compression).final_state_hash,
-              c.repetitions.front().final_state_hash)
+    EXPECT_EQ(find(*run.fidelity, "tcsb", *c.key.compression).final_state_hash, c.repetitions.front().final_state_hash)
         << c.label;
   }
-  const FidelityCase& tc = find(*run.fidelity, FidelityMethod::kTcsb, 0.5);
-  const FidelityCase& sw = find(*run.fidelity, FidelityMethod::kSwitch, 0.5);
+  const FidelityCase& tc = find(*run.fidelity, "tcsb", 0.5);
+  const FidelityCase& sw = find(*run.fidelity, "switch_body", 0.5);
   ASSERT_TRUE(tc.converged_step);
   EXPECT_LT(*tc.converged_step, s.warmup_steps);
   EXPECT_EQ(sw.switch_step, tc.converged_step);
@@ -90,15 +89,14 @@ TEST(FidelityPass, TcsbSubjectRetracesTheTimedCaseAndTheSwitchFollowsItsConverge
   EXPECT_GT(*sw.switch_ms, 0.0);
   EXPECT_EQ(sw.grid, "12x12");  // round(sqrt(0.5 * 289)) = 12: 144 nodes for a budget of 145
   EXPECT_NEAR(sw.mean_nodes, 144.0, 1e-9);
-  EXPECT_NEAR(find(*run.fidelity, FidelityMethod::kUniform, 0.5).mean_nodes, 144.0, 1e-9);
+  EXPECT_NEAR(find(*run.fidelity, "uniform_grid", 0.5).mean_nodes, 144.0, 1e-9);
 }
 
 TEST(FidelityPass, EveryMethodReproducesANetAtRest) {
   const RunResult run = run_suite(tiny_suite(0.0), Context{});
   ASSERT_TRUE(run.fidelity);
   for (const FidelityCase& c : run.fidelity->cases) {
-    const std::string what =
-        std::string(fidelity_method_name(c.subject.method)) + "@" + std::to_string(c.subject.compression);
+    const std::string what = std::string(c.subject.method) + "@" + std::to_string(c.subject.body.compression);
     EXPECT_EQ(c.status, "ok") << what;
     EXPECT_LT(c.max_pct.max, 1e-4) << what;           // % of the extent: under 8 um
     EXPECT_LT(c.popping_pct.max, 1e-4) << what;       // operations and the switch on a resting net do not pop
@@ -175,9 +173,9 @@ TEST(FidelityPass, ACompliantSuiteIsMeasuredAgainstItsConvergedReference) {
   for (std::size_t k = 1; k < r.doublings.size(); ++k)
     EXPECT_EQ(r.doublings[k].substeps, 2 * r.doublings[k - 1].substeps);
   EXPECT_EQ(r.converged, r.doublings.back().change_rms_pct <= r.doublings.back().noise_rms_pct);
-  EXPECT_EQ(find(f, FidelityMethod::kStock, 1.0).status, "ok");
-  EXPECT_EQ(find(f, FidelityMethod::kUniform, 0.5).status, "ok");
-  const FidelityCase& full = find(f, FidelityMethod::kTcsb, 1.0);
+  EXPECT_EQ(find(f, "stock_bullet", 1.0).status, "ok");
+  EXPECT_EQ(find(f, "uniform_grid", 0.5).status, "ok");
+  const FidelityCase& full = find(f, "tcsb", 1.0);
   EXPECT_EQ(full.status, "ok");
   EXPECT_EQ(full.rms_pct.max > 0.0, r.substeps != 4);  // its own small steps' error, unless they converged already
 }
@@ -194,7 +192,7 @@ double points_counted(Suite s, int occlusion_cell_px) {
   s.fidelity.ablations = false;
   s.fidelity.pareto_targets.clear();
   const RunResult run = run_suite(s, Context{});
-  const FidelityCase& full = find(*run.fidelity, FidelityMethod::kTcsb, 1.0);
+  const FidelityCase& full = find(*run.fidelity, "tcsb", 1.0);
   EXPECT_TRUE(full.screen);
   return full.screen ? full.screen->points_in_view : 0.0;
 }

@@ -160,8 +160,9 @@ BodyError uniform_grid(Suite suite, const std::shared_ptr<const Net>& net, const
   if (suite.calibration)
     for (StiffnessFit& fit : suite.calibration->uniform_grid) fit.linear_stiffness *= scale;
   SceneWorld world(suite.world, suite.scene);
-  const FidelityMethod method = suite.calibration ? FidelityMethod::kUniformCalibrated : FidelityMethod::kUniform;
-  const auto grid = make_fidelity_subject(suite, {method, compression}, world, net, 1, nullptr, suite.warmup_steps);
+  const FidelitySubjectSpec spec =
+      fidelity_subject(suite.calibration ? "uniform_grid_calibrated" : "uniform_grid", compression);
+  const auto grid = make_fidelity_subject(suite, spec.body, world, net, 1, nullptr, suite.warmup_steps);
   BodyError e = measure(
       suite, *net, reference,
       [&](int s) {

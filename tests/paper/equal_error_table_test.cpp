@@ -9,10 +9,10 @@ namespace {
 
 constexpr std::size_t kPassBlocks = 12;
 
-FidelityCase timed_case(FidelityMethod method, double compression, double rms, double ms, int divisor = 1) {
+FidelityCase timed_case(std::string_view method, double compression, double rms, double ms, int divisor = 1) {
   FidelityCase c;
   c.net_name = std::string("n");
-  c.subject = {method, compression, divisor};
+  c.subject = fidelity_subject(method, compression, divisor);
   c.mean_nodes = 1000.0 * compression;
   c.rms_pct = {400, rms, rms, rms};
   // Blocks alternate ±5 % around the time: a median of `ms`, and an interval with some width.
@@ -27,12 +27,12 @@ FidelityResult pass_with_curves() {
   f.noise_rms_pct = {400, 0.01, 0.01, 0.01};
   f.reference_block_step_ms.assign(kPassBlocks, 8.0);
   r.floors = {f};
-  r.cases = {timed_case(FidelityMethod::kTcsb, 0.3, 5.0, 1.0),
-             timed_case(FidelityMethod::kTcsb, 1.0, 0.0, 8.0),  // full resolution: on no curve of TC-SB
-             timed_case(FidelityMethod::kUniform, 0.1, 20.0, 0.5),
-             timed_case(FidelityMethod::kUniform, 0.3, 10.0, 1.0),
-             timed_case(FidelityMethod::kUniform, 0.5, 2.5, 4.0),
-             timed_case(FidelityMethod::kFullResolution, 1.0, 40.0, 2.0, 2)};
+  r.cases = {timed_case("tcsb", 0.3, 5.0, 1.0),
+             timed_case("tcsb", 1.0, 0.0, 8.0),  // full resolution: on no curve of TC-SB
+             timed_case("uniform_grid", 0.1, 20.0, 0.5),
+             timed_case("uniform_grid", 0.3, 10.0, 1.0),
+             timed_case("uniform_grid", 0.5, 2.5, 4.0),
+             timed_case("full_resolution", 1.0, 40.0, 2.0, 2)};
   return r;
 }
 
@@ -72,7 +72,7 @@ TEST(EqualErrorTable, ReadsEachRivalsTimeAtTcsbsErrorOffItsCurve) {
 
 TEST(EqualErrorTable, SaysWhichInputIsMissing) {
   FidelityResult r = pass_with_curves();
-  std::erase_if(r.cases, [](const FidelityCase& c) { return c.subject.method == FidelityMethod::kUniform; });
+  std::erase_if(r.cases, [](const FidelityCase& c) { return c.subject.method == "uniform_grid"; });
   const std::vector<EqualErrorNet> nets = equal_error_table(r);
   ASSERT_EQ(nets.size(), 1u);
   EXPECT_TRUE(nets[0].rows.empty());
@@ -83,7 +83,7 @@ TEST(EqualErrorTable, SaysWhichInputIsMissing) {
 
 TEST(EqualErrorTable, APassWithoutCurvesHasNoTable) {
   FidelityResult r = pass_with_curves();
-  std::erase_if(r.cases, [](const FidelityCase& c) { return c.subject.method == FidelityMethod::kFullResolution; });
+  std::erase_if(r.cases, [](const FidelityCase& c) { return c.subject.method == "full_resolution"; });
   EXPECT_TRUE(equal_error_table(r).empty());
 }
 

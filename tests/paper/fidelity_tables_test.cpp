@@ -11,12 +11,12 @@ namespace {
 
 MetricSummary metric(double mean, double p95, double max) { return {400, mean, p95, max}; }
 
-FidelityCase make(std::size_t net, FidelityMethod method, double compression, double rms, double step_ms,
+FidelityCase make(std::size_t net, std::string_view method, double compression, double rms, double step_ms,
                   double reference_ms = 2.0) {
   FidelityCase c;
   c.net = net;
   c.net_name = std::string("n").append(std::to_string(net));  // not "n" + ...: GCC 12 -Wrestrict false positive
-  c.subject = {method, compression};
+  c.subject = fidelity_subject(method, compression);
   c.mean_nodes = 1000.0 * compression * (net + 1);
   c.rms_pct = metric(rms, 2 * rms, 3 * rms);
   c.max_pct = metric(4 * rms, 5 * rms, 6 * rms);
@@ -30,7 +30,7 @@ FidelityCase make(std::size_t net, FidelityMethod method, double compression, do
 
 TEST(FidelityRows, CombineNetsAsMeanOfMeansAndMaxOfMaxima) {
   FidelityResult r;
-  r.cases = {make(0, FidelityMethod::kTcsb, 0.5, 1.0, 1.0, 2.0), make(1, FidelityMethod::kTcsb, 0.5, 3.0, 3.0, 6.0)};
+  r.cases = {make(0, "tcsb", 0.5, 1.0, 1.0, 2.0), make(1, "tcsb", 0.5, 3.0, 3.0, 6.0)};
   r.cases[1].switch_ms = 4.0;
   const std::vector<FidelityRow> rows = fidelity_rows(r);
   ASSERT_EQ(rows.size(), 1u);
@@ -50,8 +50,8 @@ TEST(FidelityRows, CombineNetsAsMeanOfMeansAndMaxOfMaxima) {
 
 TEST(FidelityRows, LeaveDivergedNetsOut) {
   FidelityResult r;
-  r.cases = {make(0, FidelityMethod::kUniform, 0.3, 1.0, 1.0), make(1, FidelityMethod::kUniform, 0.3, 50.0, 1.0),
-             make(0, FidelityMethod::kSwitch, 0.3, 1.0, 1.0)};
+  r.cases = {make(0, "uniform_grid", 0.3, 1.0, 1.0), make(1, "uniform_grid", 0.3, 50.0, 1.0),
+             make(0, "switch_body", 0.3, 1.0, 1.0)};
   r.cases[1].status = "diverged";
   r.cases[2].status = "diverged";
   const std::vector<FidelityRow> rows = fidelity_rows(r);
@@ -68,7 +68,7 @@ std::vector<FidelityRow> sweep_rows(const std::vector<std::pair<double, double>>
                                     const std::vector<double>& ratios) {
   FidelityResult r;
   for (std::size_t i = 0; i < compression_rms.size(); ++i)
-    r.cases.push_back(make(0, FidelityMethod::kTcsb, compression_rms[i].first, compression_rms[i].second, ratios[i]));
+    r.cases.push_back(make(0, "tcsb", compression_rms[i].first, compression_rms[i].second, ratios[i]));
   return fidelity_rows(r);
 }
 
@@ -129,8 +129,7 @@ TEST(MaxCompression, IsAbsentWhenEvenTheLargestTargetFails) {
 
 TEST(FidelityTargets, PassAndFailAsMeasured) {
   FidelityResult r;
-  r.cases = {make(0, FidelityMethod::kTcsb, 0.75, 0.8, 1.0), make(0, FidelityMethod::kTcsb, 0.3, 2.5, 1.0),
-             make(0, FidelityMethod::kUniform, 0.3, 6.0, 1.0)};
+  r.cases = {make(0, "tcsb", 0.75, 0.8, 1.0), make(0, "tcsb", 0.3, 2.5, 1.0), make(0, "uniform_grid", 0.3, 6.0, 1.0)};
   const std::vector<Claim> targets = fidelity_targets(fidelity_rows(r));
   const auto find = [&](const std::string& id) -> const Claim& {
     for (const Claim& c : targets)
@@ -148,10 +147,8 @@ TEST(FidelityTargets, PassAndFailAsMeasured) {
 
 TEST(FidelityTargets, CalibratedRowsAreJudgedAgainstTheConvergedTargets) {
   FidelityResult r;
-  r.cases = {make(0, FidelityMethod::kTcsbCalibrated, 0.75, 0.4, 1.0),
-             make(0, FidelityMethod::kTcsbCalibrated, 0.3, 1.5, 1.0),
-             make(0, FidelityMethod::kUniformCalibrated, 0.3, 3.0, 1.0),
-             make(0, FidelityMethod::kUniformCalibrated, 0.75, 0.5, 1.0)};
+  r.cases = {make(0, "tcsb_calibrated", 0.75, 0.4, 1.0), make(0, "tcsb_calibrated", 0.3, 1.5, 1.0),
+             make(0, "uniform_grid_calibrated", 0.3, 3.0, 1.0), make(0, "uniform_grid_calibrated", 0.75, 0.5, 1.0)};
   const std::vector<Claim> targets = fidelity_targets(fidelity_rows(r));
   const auto find = [&](const std::string& id) -> const Claim* {
     for (const Claim& c : targets)
@@ -169,7 +166,7 @@ TEST(FidelityTargets, CalibratedRowsAreJudgedAgainstTheConvergedTargets) {
 
 TEST(FidelityTargets, NoCalibratedTargetsWithoutACalibration) {
   FidelityResult r;
-  r.cases = {make(0, FidelityMethod::kTcsb, 0.75, 0.8, 1.0), make(0, FidelityMethod::kTcsb, 0.3, 2.5, 1.0)};
+  r.cases = {make(0, "tcsb", 0.75, 0.8, 1.0), make(0, "tcsb", 0.3, 2.5, 1.0)};
   for (const Claim& c : fidelity_targets(fidelity_rows(r))) EXPECT_EQ(c.id.find("calibrated"), std::string::npos);
 }
 
@@ -184,8 +181,8 @@ TEST(FidelityTargets, FailWhenNothingWasMeasured) {
 TEST(FidelityTables, HoldEveryPieceAtThePassThreshold) {
   FidelityResult r;
   r.rms_threshold_pct = 1.5;
-  r.cases = {make(0, FidelityMethod::kTcsb, 1.0, 0.0, 2.0), make(0, FidelityMethod::kTcsb, 0.5, 1.0, 1.0),
-             make(0, FidelityMethod::kTcsb, 0.3, 2.0, 0.5), make(0, FidelityMethod::kTcsbCalibrated, 0.5, 0.5, 1.0)};
+  r.cases = {make(0, "tcsb", 1.0, 0.0, 2.0), make(0, "tcsb", 0.5, 1.0, 1.0), make(0, "tcsb", 0.3, 2.0, 0.5),
+             make(0, "tcsb_calibrated", 0.5, 0.5, 1.0)};
   const FidelityTables t = fidelity_tables(r);
   const std::vector<FidelityRow> rows = fidelity_rows(r);
   ASSERT_EQ(t.rows.size(), rows.size());

@@ -17,10 +17,10 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
-FidelityCase fidelity_case(FidelityMethod method, double compression, double rms) {
+FidelityCase fidelity_case(std::string_view method, double compression, double rms) {
   FidelityCase c;
   c.net_name = std::string("n0");  // moved in: GCC 12 -Wrestrict false positive on literal assignment
-  c.subject = {method, compression};
+  c.subject = fidelity_subject(method, compression);
   c.target_nodes = static_cast<int>(100 * compression);
   c.mean_nodes = 100 * compression;
   c.rms_pct = {400, rms, 2 * rms, 3 * rms};
@@ -43,8 +43,8 @@ RunResult run_with_fidelity() {
              testing::make_case(r.suite, 0, Method::kTcsb, 1.0, 100, 200, 0, 1.0),
              testing::make_case(r.suite, 0, Method::kTcsb, 0.5, 50, 100, 3, 0.5)};
   FidelityResult f;
-  f.cases = {fidelity_case(FidelityMethod::kTcsb, 0.5, 2.0), fidelity_case(FidelityMethod::kTcsb, 1.0, 0.0),
-             fidelity_case(FidelityMethod::kUniform, 0.5, 5.0), fidelity_case(FidelityMethod::kSwitch, 0.5, 6.0)};
+  f.cases = {fidelity_case("tcsb", 0.5, 2.0), fidelity_case("tcsb", 1.0, 0.0), fidelity_case("uniform_grid", 0.5, 5.0),
+             fidelity_case("switch_body", 0.5, 6.0)};
   f.cases[3].switch_ms = 1.5;
   f.cases[3].switch_step = 12;
   f.cases[2].step_ms = std::numeric_limits<double>::quiet_NaN();  // must come out as null
@@ -69,8 +69,8 @@ TEST(FidelityJson, CalibratedTcsbHasItsOwnSweepOnlyWhenItRan) {
   RunResult r = run_with_fidelity();
   EXPECT_FALSE(testing::native_json_of(r).contains("pareto_calibrated"));
   EXPECT_FALSE(testing::native_json_of(r).contains("max_compression_calibrated"));
-  r.fidelity->cases.push_back(fidelity_case(FidelityMethod::kTcsbCalibrated, 0.5, 0.8));
-  r.fidelity->cases.push_back(fidelity_case(FidelityMethod::kTcsbCalibrated, 0.3, 1.2));
+  r.fidelity->cases.push_back(fidelity_case("tcsb_calibrated", 0.5, 0.8));
+  r.fidelity->cases.push_back(fidelity_case("tcsb_calibrated", 0.3, 1.2));
   const ojson doc = testing::native_json_of(r);
   ASSERT_EQ(doc["pareto_calibrated"].size(), 2u);
   EXPECT_EQ(doc["pareto_calibrated"][0]["compression"], 0.3);
