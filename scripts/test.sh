@@ -8,18 +8,27 @@ cd "$(dirname "$0")/.."
 # clang-format for the format check; Slurm and munge for the test on a real single-node cluster
 # (scripts/test-slurm.sh); valgrind for the instruction gate (tcsb run --measure instructions runs under callgrind).
 bash scripts/install-deps.sh libbenchmark-tools python3-scipy clang-format slurm-wlm munge valgrind
+# Where CI's time goes, one line a phase at the end (issue 58 asks for the split; CI's limit is 90 minutes, ours 30).
+phase_start=$SECONDS
+phases=()
+phase_done() { phases+=("$1 $((SECONDS - phase_start)) s"); phase_start=$SECONDS; }
+report_phases() { local p; for p in "${phases[@]}"; do echo "test.sh: time: $p" >&2; done; }
+trap report_phases EXIT
+phase_done "set-up"
 # Formatting first, so a format problem fails in seconds: every C++ source as .clang-format says.
 bash scripts/check-format.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build  # every target: the tests and benchmarks too (setup-and-reproduce.sh builds tcsb alone)
+phase_done "release build"
 ctest --test-dir build --output-on-failure -j2
+phase_done "release tests"
 
 # Regression gates, each with its own line. Both require N, L, I, operations and final states to match their
 # baseline exactly (a change that alters behaviour refreshes the baselines in the same commit:
 # scripts/refresh-baseline.sh). `tcsb compare --summary-json` says what failed; this script reads that, not the
 # Markdown. docs/methodology.md ("The regression gates") has both gates' measured error rates.
 gate_dir=$(mktemp -d)
-trap 'rm -rf "$gate_dir"' EXIT
+trap 'rm -rf "$gate_dir"; report_phases' EXIT
 # gate_line NAME STDERR_FILE: the gate's one line (the verdict line `tcsb compare` ends its stderr with).
 gate_line() { echo "test.sh: $1: $(tail -n 1 "$2" | sed 's/^tcsb compare: //')" >&2; }
 # 1. Instructions (callgrind, about a minute): the counts of one build are the same in every run, so a count 0.5 %
@@ -64,6 +73,7 @@ if [ "$wall" != 0 ]; then
     fi
   fi
 fi
+phase_done "gates"
 [ "$instructions" = 0 ] && [ "$wall" = 0 ] || exit 1
 
 # Sanitizers: a separate tree, every test, any report fatal; the CLI tests run the sanitized tcsb binary too. Debug
@@ -76,6 +86,8 @@ fi
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DTCSB_SANITIZE=ON -DTCSB_BUILD_BENCH=OFF \
   -DCMAKE_UNITY_BUILD=ON
 cmake --build build-sanitize
+phase_done "sanitized build"
 ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_string_checks=1:allocator_may_return_null=1 \
 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
   ctest --test-dir build-sanitize --output-on-failure -j2
+phase_done "sanitized tests"
