@@ -34,6 +34,24 @@ struct AppWorld {
   btSoftBodyWorldInfo& info() { return world.getWorldInfo(); }
 };
 
+/// Static ground whose top is the plane y = 0, `half` metres each way from the origin, in the app's world while it
+/// lives (declare it after the AppWorld and remove the bodies lying on it first).
+struct Ground {
+  AppWorld& app;
+  btBoxShape shape;
+  btRigidBody body;
+
+  Ground(AppWorld& world, float half)
+      : app(world), shape(btVector3(half, 0.5f, half)),
+        body(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &shape)) {
+    body.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, -0.5f, 0)));
+    app.world.addRigidBody(&body);
+  }
+  ~Ground() { app.world.removeRigidBody(&body); }
+  Ground(const Ground&) = delete;
+  Ground& operator=(const Ground&) = delete;
+};
+
 /// A free sheet of width^2 nodes, 2 m square, 0.5 kg, at height `elevation` (no pins).
 inline std::shared_ptr<const Net> free_sheet(int width, double elevation = 0.7) {
   NetSpec spec;

@@ -22,6 +22,7 @@ namespace {
 
 using testing::AppWorld;
 using testing::free_sheet;
+using testing::Ground;
 
 constexpr btScalar kFrame = 1.0f / 30.0f;  // two internal steps of 1/60 s a frame, as a game steps
 void frame(AppWorld& app) { app.world.stepSimulation(kFrame, 2, 1.0f / 60.0f); }
@@ -375,10 +376,7 @@ TEST(TreeCutDriver, TheCameraMovesWhileTheWorldRuns) {
   // A close-up camera on one half of a sheet lying on the ground keeps the detail there; moved to the other half,
   // the detail follows it.
   AppWorld app;
-  btBoxShape ground_shape(btVector3(5, 0.5f, 5));
-  btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &ground_shape));
-  ground.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, -0.5f, 0)));
-  app.world.addRigidBody(&ground);
+  const Ground ground(app, 5);
   auto body = sheet_body(app, 17);
   app.world.addSoftBody(body.get());
   FeedbackSettings feedback;
@@ -407,7 +405,6 @@ TEST(TreeCutDriver, TheCameraMovesWhileTheWorldRuns) {
   EXPECT_THROW(motion_only->set_spectator(right), std::logic_error);
   EXPECT_TRUE(body->validate().ok()) << body->validate().summary();
   app.world.removeSoftBody(body.get());
-  app.world.removeRigidBody(&ground);
 }
 
 TEST(TreeCutDriver, AWorldBudgetGoesToTheBodyTheCameraSeesClosest) {
@@ -415,10 +412,7 @@ TEST(TreeCutDriver, AWorldBudgetGoesToTheBodyTheCameraSeesClosest) {
   // (each alone would take 200 of its 289): the near sheet gets most of it (153 against 32 when written: the far
   // sheet, 15 pixels wide, keeps blocks about view_detail_px wide).
   AppWorld app;
-  btBoxShape ground_shape(btVector3(80, 0.5f, 80));
-  btRigidBody ground(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &ground_shape));
-  ground.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, -0.5f, 0)));
-  app.world.addRigidBody(&ground);
+  const Ground ground(app, 80);
   auto near = sheet_body(app, 17);
   auto far = sheet_body(app, 17);
   far->translate(btVector3(0, 0, -60));
@@ -444,7 +438,6 @@ TEST(TreeCutDriver, AWorldBudgetGoesToTheBodyTheCameraSeesClosest) {
   EXPECT_THROW(driver.set_world_budget(0), std::invalid_argument);
   app.world.removeSoftBody(near.get());
   app.world.removeSoftBody(far.get());
-  app.world.removeRigidBody(&ground);
 }
 
 }  // namespace
