@@ -14,8 +14,10 @@ using json = nlohmann::json;
 
 TEST_F(Cli, AWorldSuiteWritesTheWorldPass) {
   write_file(dir_ / "row.json", testing::world_suite_json().dump());
-  const Outcome o = tcsb("run row.json --quiet --out result.json");
+  const Outcome o = tcsb("run row.json --out result.json");
   ASSERT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(o.err.find("World pass: 3 bodies"), std::string::npos) << o.err;  // the console's table
+  EXPECT_NE(o.err.find("discrete_lod"), std::string::npos) << o.err;
   const json doc = json::parse(read_file(dir_ / "result.json"));
   EXPECT_EQ(doc["suite"]["scene"]["bodies"], 3);
   EXPECT_EQ(doc["suite"]["feedback"]["budget_scope"], "world");
