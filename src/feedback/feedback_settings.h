@@ -11,6 +11,12 @@ enum class PolicyKind {
   kRandom,    ///< seeded random choices under the same budget (an ablation, and the driver before feedback existed)
 };
 
+/// Whose node budget a TC-SB body spends.
+enum class BudgetScope {
+  kBody,   ///< its own: each body holds its compression target of its own nodes
+  kWorld,  ///< the scene's: one budget for every TC-SB body, split each step (feedback/world_budget.h)
+};
+
 /// Feedback stage parameters. Defaults are documented in docs/design.md ("The feedback loop").
 struct FeedbackSettings {
   PolicyKind policy = PolicyKind::kSaliency;
@@ -65,6 +71,9 @@ struct FeedbackSettings {
   /// is its capped motion. In [0, 1]; above 0, a quiet node in view still outranks every node out of view. Which
   /// share suits which scene: docs/design.md, "The spectator".
   double view_static_share = 0.5;
+  /// Per body, or one budget for a scene of many bodies (a suite's scene.bodies; docs/design.md, "Scenes of many
+  /// bodies"). Body: every single-cloth run, bit for bit.
+  BudgetScope budget_scope = BudgetScope::kBody;
 };
 
 /// Name used in suites and reports: "saliency" or "random".

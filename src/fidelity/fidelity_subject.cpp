@@ -6,13 +6,13 @@
 #include "analysis/fidelity_metrics.h"
 #include "case/body_factory.h"
 #include "case/step_clock.h"
+#include "fidelity/grid_state_transfer.h"
 #include "fidelity/reconstruction.h"
 #include "fidelity/surface_morph.h"
 #include "net/grid_resample.h"
 #include "softbody/op_sample.h"
 #include "softbody/plain_softbody.h"
 #include "softbody/tc_softbody_impl.h"
-#include "softbody/vector_conversion.h"
 #include "suite/fidelity_plan.h"
 
 namespace tcsb {
@@ -151,21 +151,7 @@ class SwitchSubject final : public FidelitySubject {
     switched_at_ = step;
     const StepClock::time_point t0 = StepClock::now();
     std::unique_ptr<btSoftBody> coarse = make_plain_softbody(world_.info(), coarse_, solver_);
-    copy_positions(*body_.bullet, x_);
-    copy_velocities(*body_.bullet, v_);
-    cx_.resize(coarse_.node_count());
-    cv_.resize(coarse_.node_count());
-    resample_bilinear(grid_of(*fine_), x_, grid_of(coarse_), cx_);
-    resample_bilinear(grid_of(*fine_), v_, grid_of(coarse_), cv_);
-    for (int i = 0; i < coarse->m_nodes.size(); ++i) {
-      btSoftBody::Node& n = coarse->m_nodes[i];
-      if (coarse_.pinned()[static_cast<std::size_t>(i)]) continue;  // corners stay at rest (the fine ones are too)
-      const Eigen::Vector3d& p = cx_[static_cast<std::size_t>(i)];
-      const Eigen::Vector3d& u = cv_[static_cast<std::size_t>(i)];
-      n.m_x = n.m_q = to_bullet(p);
-      n.m_v = to_bullet(u);
-    }
-    coarse->updateBounds();
+    transfer_grid_state(*body_.bullet, grid_of(*fine_), *coarse, coarse_, x_, v_, cx_, cv_);
     body_.attachment.release();
     body_.bullet = std::move(coarse);  // frees the fine body: part of what a switch costs
     body_.attachment = world_.attach(*body_.bullet);

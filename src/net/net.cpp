@@ -18,6 +18,8 @@ Net::Net(const NetSpec& spec, RestPlacement rest) : spec_(spec) {
   for (const auto& [field, value] : {std::pair<const char*, double>{"size_x", spec.size_x},
                                      {"size_z", spec.size_z},
                                      {"elevation", spec.elevation},
+                                     {"centre_x", spec.centre_x},
+                                     {"centre_z", spec.centre_z},
                                      {"mass", spec.mass}})
     if (!std::isfinite(value)) throw std::invalid_argument(std::string("Net: ") + field + " must be finite");
   const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
@@ -34,8 +36,8 @@ Net::Net(const NetSpec& spec, RestPlacement rest) : spec_(spec) {
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       rest_[static_cast<std::size_t>(index(x, y))] =
-          Eigen::Vector3d(-0.5 * spec.size_x + spec.size_x * x / (w - 1), spec.elevation,
-                          -0.5 * spec.size_z + spec.size_z * y / (h - 1));
+          Eigen::Vector3d(spec.centre_x - 0.5 * spec.size_x + spec.size_x * x / (w - 1), spec.elevation,
+                          spec.centre_z - 0.5 * spec.size_z + spec.size_z * y / (h - 1));
   for (const GridNode& p : spec.pinned_nodes)
     if (p.x < 0 || p.x >= w || p.z < 0 || p.z >= h) throw std::invalid_argument("Net: a pinned node lies off the grid");
   pinned_ = pinned_grid_nodes(spec);

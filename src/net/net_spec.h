@@ -43,7 +43,8 @@ enum class RestPlacement : std::uint8_t { kCentroid, kVertex };
 /// so border nodes carry half and corners a quarter of an inner node's; the compliant material's masses).
 enum class MassMode { kTotal, kPerNode, kDensity };
 
-/// One regular W x H cloth net lying flat in the x-z plane at height `elevation`, gravity along -y.
+/// One regular W x H cloth net lying flat in the x-z plane at height `elevation`, centred on (centre_x, centre_z),
+/// gravity along -y.
 struct NetSpec {
   std::string name = "net";  ///< label used in reports
   int width = 65;            ///< nodes along x (>= 2)
@@ -51,6 +52,9 @@ struct NetSpec {
   double size_x = 8.0;       ///< physical extent along x, metres
   double size_z = 8.0;       ///< physical extent along z, metres
   double elevation = 8.0;    ///< y of the rest plane, metres
+  /// Where the rest rectangle's centre lies in x and z, metres: a scene of many bodies places each where it stands.
+  double centre_x = 0.0;
+  double centre_z = 0.0;
   MassMode mass_mode = MassMode::kTotal;
   double mass = 1.0;                      ///< total mass (kTotal) or per-node mass (kPerNode), kg; kg/m^2 (kDensity)
   unsigned pinned_corners = kAllCorners;  ///< PinnedCorner bits

@@ -7,6 +7,7 @@
 #include "paper/paper_tables.h"
 #include "report/fidelity_console.h"
 #include "report/text_table.h"
+#include "report/world_console.h"
 
 namespace tcsb {
 namespace {
@@ -206,6 +207,10 @@ void print_console_report(const RunResult& result, const RunTables& tables, std:
   if (result.fidelity) {
     out << '\n';
     print_fidelity_report(result, tables, out);
+  }
+  if (result.world) {
+    out << '\n';
+    print_world_report(result, out);
   }
 }
 

@@ -6,6 +6,7 @@
 #include "paper/paper_tables.h"
 #include "report/fidelity_json.h"
 #include "report/op_work_json.h"
+#include "report/world_json.h"
 #include "suite/suite_axes.h"
 #include "suite/suite_settings_table.h"
 
@@ -77,6 +78,8 @@ ojson scene_json(const SceneSettings& scene) {
                    {"lift", json_number(w->lift)},
                    {"drag", json_number(w->drag)},
                    {"air_density", json_number(w->air_density)}};
+  // Only in a scene of many bodies, so results written before such scenes read as before.
+  if (!scene.bodies.empty()) out["bodies"] = scene.bodies.size();
   if (const PinPath& p = scene.pin_path; p.moves()) {
     if (p.keyframes.empty())
       out["pin_path"] = {
@@ -341,6 +344,7 @@ ojson native_json(const RunResult& result, const RunTables& tables) {
   }
   add_fidelity_json(result, tables,
                     doc);  // fidelity, pareto, max_compression (and calibrated): only with a fidelity pass
+  add_world_json(result, doc);
   doc["status"] = diverged ? "diverged" : "ok";
   doc["wall_s"] = json_number(result.wall_s);
   return doc;

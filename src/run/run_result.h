@@ -15,6 +15,7 @@
 #include "suite/case_plan.h"
 #include "suite/shard_index.h"
 #include "suite/suite.h"
+#include "world/world_result.h"
 
 namespace tcsb {
 
@@ -132,6 +133,7 @@ struct RunResult {
   Context context;
   std::vector<CaseResult> cases;
   std::optional<FidelityResult> fidelity;  ///< the fidelity pass, when the suite enables it and runs TC-SB
+  std::optional<WorldResult> world;        ///< the world pass, for a scene of many bodies (is_world_suite)
   double wall_s = 0;                       ///< wall time of the run (the fidelity pass included)
   /// Set when this run is one shard of its suite (`tcsb run --shard K/N`): `cases` then holds only the shard's
   /// cases (with a repetition split, only its repetitions of them), and the JSON carries what `tcsb merge` needs

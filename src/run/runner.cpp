@@ -13,7 +13,9 @@
 #include "run/out_of_memory.h"
 #include "softbody/divergence.h"
 #include "softbody/tc_softbody_impl.h"
+#include "suite/scene_bodies.h"
 #include "suite/suite_axes.h"
+#include "world/world_runner.h"
 
 namespace tcsb {
 
@@ -380,6 +382,10 @@ RunResult run_suite(const Suite& suite, const Context& context, const RunOptions
       });
     });
   }
+  // A scene of many bodies: after the timed cases of its nets, as the fidelity pass, by the process that runs the
+  // first net's first repetition.
+  if (is_world_suite(suite) && runs_fidelity_of(suite, 0))
+    result.world = naming_out_of_memory("suite " + suite.name + ", world pass", [&] { return run_world(suite); });
   result.wall_s = std::chrono::duration<double>(StepClock::now() - start).count();
   return result;
 }

@@ -96,6 +96,13 @@ struct PinPath {
 inline constexpr double kPlaneSlabHalfThickness = 0.5;
 inline constexpr double kPlaneSlabHalfWidth = 100.0;
 
+/// One body of a scene of many (docs/design.md, "Scenes of many bodies"): one of the suite's nets, standing where
+/// `position` puts the centre of its rest rectangle ([centre x, elevation, centre z]), with the net's pins and mass.
+struct SceneBody {
+  std::string net;                          ///< the name of one of the suite's nets
+  std::array<double, 3> position{0, 0, 0};  ///< metres
+};
+
 /// The scene around the nets.
 struct SceneSettings {
   std::vector<Collider> colliders;
@@ -121,6 +128,8 @@ struct SceneSettings {
   std::optional<Wind> wind;
   /// How the nets' pins move; by default they stay at rest.
   PinPath pin_path;
+  /// The cloths of a scene of many bodies, stepped in one world (the world pass); empty: each case's lone net.
+  std::vector<SceneBody> bodies;
 
   /// Whether bodies live in a collision world (btSoftRigidDynamicsWorld) rather than being stepped solo.
   bool has_colliders() const { return !colliders.empty(); }

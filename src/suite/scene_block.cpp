@@ -233,11 +233,32 @@ bool parse_rigid_contact(const Reader& r, const json& j, const std::string& path
   return rigid_contact;
 }
 
+/// `scene.bodies`: [{"net": NAME, "position": [x, y, z]}, ...], at least one. The names are checked against the
+/// suite's nets where both are known (suite.cpp).
+std::vector<SceneBody> parse_scene_bodies(const Reader& r, const json& j, const std::string& path) {
+  r.array(j, path);
+  // Every body is simulated by every method of the world pass: a cap keeps a typo from building thousands.
+  constexpr std::size_t kMaxSceneBodies = 256;
+  if (j.size() > kMaxSceneBodies)
+    r.fail(path, "at most " + std::to_string(kMaxSceneBodies) + " bodies, got " + std::to_string(j.size()));
+  std::vector<SceneBody> bodies;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string at = index_path(path, i);
+    const Object o(r, j[i], at, {"net", "position"});
+    SceneBody body;
+    body.net = r.string(o.need("net"), o.at("net"));
+    body.position = r.numbers<3>(o.need("position"), o.at("position"), kSceneCoordinate);
+    bodies.push_back(std::move(body));
+  }
+  return bodies;
+}
+
 }  // namespace
 
 SceneSettings parse_scene(const Reader& r, const json& j) {
   const Object o(r, j, "scene",
-                 {"colliders", "margin", "friction", "sdf_voxel", "collisions", "camera", "wind", "pin_path"});
+                 {"colliders", "margin", "friction", "sdf_voxel", "collisions", "camera", "wind", "pin_path",
+                  "bodies"});
   SceneSettings scene;
   if (const json* colliders = o.find("colliders")) {
     r.array(*colliders, o.at("colliders"), EmptyArray::kAllowed);
@@ -258,6 +279,7 @@ SceneSettings parse_scene(const Reader& r, const json& j) {
   if (const json* camera = o.find("camera")) scene.camera = parse_camera(r, *camera, o.at("camera"));
   if (const json* wind = o.find("wind")) scene.wind = parse_wind(r, *wind, o.at("wind"));
   if (const json* pins = o.find("pin_path")) scene.pin_path = parse_pin_path(r, *pins, o.at("pin_path"));
+  if (const json* bodies = o.find("bodies")) scene.bodies = parse_scene_bodies(r, *bodies, o.at("bodies"));
   return scene;
 }
 

@@ -19,6 +19,7 @@
 #include "suite/fidelity_block.h"
 #include "suite/material_block.h"
 #include "suite/scene_block.h"
+#include "suite/scene_bodies.h"
 #include "suite/suite_axes.h"
 #include "suite/suite_fields.h"
 #include "suite/suite_memory.h"
@@ -336,6 +337,7 @@ Suite parse_suite_text(const std::string& text, const std::string& file, const S
   check_settings_together(r, s);
   check_link_kinds(r, s);
   check_fidelity(r, s);
+  check_scene_bodies(r, s);
   if (adjust) adjust(s);  // before the memory check: it must see the suite that will run
   // Counted before anything expands them (the memory check does): 10^8 cases would exhaust memory on the way.
   if (const std::uint64_t cases = case_count(s); cases > kMaxCases)

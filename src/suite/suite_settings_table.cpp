@@ -101,6 +101,8 @@ constexpr SettingChoice kMasses[] = {{"blocks", static_cast<int>(Masses::kBlocks
                                      {"cut", static_cast<int>(Masses::kCut)}};
 constexpr SettingChoice kPolicies[] = {{"saliency", static_cast<int>(PolicyKind::kSaliency)},
                                        {"random", static_cast<int>(PolicyKind::kRandom)}};
+constexpr SettingChoice kBudgetScopes[] = {{"body", static_cast<int>(BudgetScope::kBody)},
+                                           {"world", static_cast<int>(BudgetScope::kWorld)}};
 
 /// The step the compliant material's constants are made for is the suite's step.
 void step_dt_follows_dt(Suite& s) { s.solver.step_dt = s.world.dt; }
@@ -187,6 +189,8 @@ constexpr SuiteSetting kSettings[] = {
      number_range(kPositive), 27, false, Written::kWithView},
     {"feedback.view_static_share", setting_member<&Suite::feedback, &FeedbackSettings::view_static_share>(),
      number_range(kUnit), 28, false, Written::kWithView},
+    {"feedback.budget_scope", setting_member<&Suite::feedback, &FeedbackSettings::budget_scope>(),
+     choice_range(kBudgetScopes), kNoAxis, false, Written::kUnlessDefault},
 };
 
 }  // namespace

@@ -64,17 +64,23 @@ bool DepthBuffer::visible(const ScreenPoint& p, double tolerance) const {
 
 void visible_grid_points(const ScreenProjection& view, std::span<const Eigen::Vector3d> points, int width, int height,
                          double tolerance, DepthBuffer& buffer, std::vector<std::uint8_t>& visible) {
-  if (width < 1 || height < 1 || points.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
-    throw std::invalid_argument("visible_grid_points: points do not form a width x height grid");
+  const std::size_t grid =
+      width < 1 || height < 1 ? 0 : static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  if (grid == 0 || points.empty() || points.size() % grid != 0)
+    throw std::invalid_argument("visible_grid_points: points do not form width x height grids");
   std::vector<ScreenPoint> image(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) image[k] = view.project(points[k]);
   buffer.clear();
-  const auto at = [width](int x, int y) { return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + x; };
-  for (int y = 0; y + 1 < height; ++y)
-    for (int x = 0; x + 1 < width; ++x) {
-      buffer.add_triangle(image[at(x, y)], image[at(x + 1, y)], image[at(x + 1, y + 1)]);
-      buffer.add_triangle(image[at(x, y)], image[at(x + 1, y + 1)], image[at(x, y + 1)]);
-    }
+  for (std::size_t first = 0; first < points.size(); first += grid) {
+    const auto at = [first, width](int x, int y) {
+      return first + static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + x;
+    };
+    for (int y = 0; y + 1 < height; ++y)
+      for (int x = 0; x + 1 < width; ++x) {
+        buffer.add_triangle(image[at(x, y)], image[at(x + 1, y)], image[at(x + 1, y + 1)]);
+        buffer.add_triangle(image[at(x, y)], image[at(x + 1, y + 1)], image[at(x, y + 1)]);
+      }
+  }
   visible.resize(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) visible[k] = buffer.visible(image[k], tolerance) ? 1 : 0;
 }

@@ -47,10 +47,11 @@ class DepthBuffer {
   std::vector<float> nearest_;  // row-major; +infinity where no triangle covers the cell's centre
 };
 
-/// Which points of a grid the camera sees: `points` are width x height grid points, row-major, whose surface is the
-/// grid's quads, each split along one diagonal. Clears `buffer` (whose view is `view`), draws the surface into it,
-/// then writes visible[i] = 1 for each point in view and not hidden by the surface (DepthBuffer::visible with
-/// `tolerance`), else 0. Throws std::invalid_argument when points.size() != width x height.
+/// Which points of one or more grids the camera sees: `points` are whole grids of width x height points one after
+/// another (each row-major; several cloths of one net, say), whose surfaces are their quads, each split along one
+/// diagonal. Clears `buffer` (whose view is `view`), draws every grid's surface into it, so each hides the others,
+/// then writes visible[i] = 1 for each point in view and not hidden by any surface (DepthBuffer::visible with
+/// `tolerance`), else 0. Throws std::invalid_argument when points is empty or not a whole number of grids.
 void visible_grid_points(const ScreenProjection& view, std::span<const Eigen::Vector3d> points, int width, int height,
                          double tolerance, DepthBuffer& buffer, std::vector<std::uint8_t>& visible);
 

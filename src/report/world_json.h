@@ -1,0 +1,13 @@
+// The world pass's section of the native JSON report: `world`, one row per method of a scene of many bodies.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "run/run_result.h"
+
+namespace tcsb {
+
+/// Adds `world` to `doc` when the run has a world pass; leaves `doc` alone otherwise.
+void add_world_json(const RunResult& result, nlohmann::ordered_json& doc);
+
+}  // namespace tcsb

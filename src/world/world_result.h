@@ -1,0 +1,42 @@
+// WorldResult: what the world pass measured of a scene of many bodies (world/world_runner.h), each method's bodies
+// stepped side by side in one world of their own.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tcsb {
+
+/// One method over the whole scene.
+struct WorldMethodResult {
+  /// "full_resolution" (also the reference), "tcsb_world", "tcsb_body" or "discrete_lod".
+  std::string method;
+  double budget = 1.0;        ///< node budget as a fraction of the scene's nodes (1 for full resolution)
+  std::string status = "ok";  ///< "ok" or "diverged"
+  std::optional<int> diverged_step;
+  std::string diverged_reason;
+  double mean_nodes = 0;                ///< simulated nodes of every body, summed, mean over the measured steps
+  std::vector<double> body_mean_nodes;  ///< per body (scene order), mean over the measured steps
+  double step_ms = 0;                   ///< mean step of the whole scene, milliseconds
+  std::vector<double> block_step_ms;    ///< per block of measured steps, its mean step
+  /// Median over blocks of this method's block mean over full resolution's of the same block (same run).
+  double step_ratio = 1.0;
+  /// Per measured step the 95th percentile over every visible reference point of every body of the distance on the
+  /// image to where this method puts it, pixels; the mean over steps.
+  double p95_px = 0;
+  /// The largest jump on the image of any body's surface at a step boundary where the method changed its resolution
+  /// (TC-SB: operations, and the boundaries its geomorph spreads them over; discrete LOD: a switch), pixels.
+  double popping_px = 0;
+  int resolution_changes = 0;       ///< those boundaries, counted per body
+  std::optional<double> lod_scale;  ///< discrete LOD: the fitted distance of its first switch, metres
+};
+
+struct WorldResult {
+  int bodies = 0;
+  long long scene_nodes = 0;  ///< every body's net nodes, summed
+  std::vector<WorldMethodResult> methods;
+  double wall_s = 0;
+};
+
+}  // namespace tcsb

@@ -1,0 +1,24 @@
+// The world pass: a scene of many bodies (the suite's scene.bodies) simulated by each method a game could pick, every
+// method's bodies in one SceneWorld of its own, the methods stepped in turn in blocks of steps as the fidelity pass
+// steps its subjects, so time ratios are of the same moments of the machine:
+//   full_resolution  every body plain at full resolution; also the reference the others are measured against, and
+//                    the denominator of every time ratio (its own steps)
+//   tcsb_world       TC-SB bodies sharing one node budget (feedback/world_budget.h), re-split every step; run when
+//                    feedback.budget_scope is "world"
+//   tcsb_body        TC-SB bodies, each holding the budget's fraction of its own nodes
+//   discrete_lod     per body a few uniform grids (the net, then about a quarter of the nodes each level), switched
+//                    at distance thresholds fitted so the run's mean node count is the largest within the budget
+//                    (fidelity/discrete_lod.h), the state resampled onto the new grid at each switch
+// at each of the suite's compression targets below 1, a fraction of the scene's nodes. Errors are pixels on the
+// camera's image over every reference point it sees (with occlusion, any body may hide another).
+#pragma once
+
+#include "suite/suite.h"
+#include "world/world_result.h"
+
+namespace tcsb {
+
+/// Runs the world pass of `suite` (is_world_suite). Deterministic but for the times.
+WorldResult run_world(const Suite& suite);
+
+}  // namespace tcsb

@@ -1,0 +1,41 @@
+// A scene of many bodies end to end through the executable: its run writes the world pass's block, which the
+// result's schema takes, and a bad scene exits 2 with one line naming the field.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "../world/world_suite_json.h"
+#include "cli_fixture.h"
+
+namespace tcsb::cli_test {
+namespace {
+
+using json = nlohmann::json;
+
+TEST_F(Cli, AWorldSuiteWritesTheWorldPass) {
+  write_file(dir_ / "row.json", testing::world_suite_json().dump());
+  const Outcome o = tcsb("run row.json --out result.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(o.err.find("World pass: 3 bodies"), std::string::npos) << o.err;  // the console's table
+  EXPECT_NE(o.err.find("discrete_lod"), std::string::npos) << o.err;
+  const json doc = json::parse(read_file(dir_ / "result.json"));
+  EXPECT_EQ(doc["suite"]["scene"]["bodies"], 3);
+  EXPECT_EQ(doc["suite"]["feedback"]["budget_scope"], "world");
+  ASSERT_EQ(doc["world"]["methods"].size(), 4u);
+  EXPECT_EQ(doc["world"]["methods"][0]["method"], "full_resolution");
+  const Outcome read = tcsb("export result.json --format markdown");  // read back through the schema
+  EXPECT_EQ(read.exit_code, 0) << read.err;
+}
+
+TEST_F(Cli, OverlappingBodiesExitTwoNamingTheField) {
+  json j = testing::world_suite_json();
+  j["scene"]["bodies"][1]["position"] = {-2.5, 2.0, 0.0};
+  write_file(dir_ / "row.json", j.dump());
+  const Outcome o = tcsb("run row.json --quiet --out result.json");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_EQ(count_lines(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find("scene.bodies[1].position"), std::string::npos) << o.err;
+}
+
+}  // namespace
+}  // namespace tcsb::cli_test
