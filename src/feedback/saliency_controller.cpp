@@ -41,9 +41,9 @@ void SaliencyController::evaluate() {
   std::optional<ScreenProjection> view;
   if (spectator_) view.emplace(spectator_->camera, static_cast<double>(snapshot_.step) * spectator_->dt);
   const ScreenProjection* seen = view ? &*view : nullptr;
-  const int cell_px = spectator_ ? spectator_->camera.occlusion_cell_px : 0;
-  const std::span<const std::uint8_t> visible =
-      view && cell_px > 0 ? occlusion_.seen(snapshot_, *view, cell_px) : std::span<const std::uint8_t>{};
+  const std::span<const std::uint8_t> visible = view && occlusion_cell_px() > 0
+                                                    ? occlusion_.seen(snapshot_, *view, occlusion_cell_px())
+                                                    : std::span<const std::uint8_t>{};
   const int threads = workers_ ? workers_->threads() : 1;
   if (threads > 1) {
     // Chunks write disjoint ranges; the normalisation and ranking run after the join: same numbers for any split.
@@ -122,7 +122,7 @@ void SaliencyController::before_step(TcSoftBody& body) {
     const bool positions = settings_.illumination || settings_.popping_charge > 0 || spectator_.has_value();
     take_snapshot(body, cut_view(body), positions, boundary_, snapshot_,
                   settings_.contact_saliency > 0 ? &contacts_ : nullptr);
-    if (spectator_ && spectator_->camera.occlusion_cell_px > 0)
+    if (occlusion_cell_px() > 0)
       occlusion_.capture(body, snapshot_);  // here, where the cut holds still; drawn on the worker
     else
       snapshot_.faces.clear();

@@ -54,6 +54,8 @@ class SaliencyController final : public Controller {
  private:
   void evaluate();
   void adapt_time_budget();
+  /// The spectator's occlusion cells, pixels; 0 without a spectator or when its camera does not model occlusion.
+  int occlusion_cell_px() const { return spectator_ ? spectator_->camera.occlusion_cell_px : 0; }
 
   FeedbackSettings settings_;
   std::optional<Spectator> spectator_;
