@@ -127,9 +127,10 @@ double lambert_factor(const CutSnapshot& snapshot, std::size_t i, const std::arr
 void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings, std::span<float> motion,
                      const ScreenProjection* view, std::span<const std::uint8_t> seen) {
   // A hidden node's motion, as one out of view, is nothing the spectator sees: it must not scale the others'.
+  for (std::size_t i = 0; i < seen.size(); ++i)
+    if (!seen[i]) motion[i] = 0;
   float largest = 0;
-  for (std::size_t i = 0; i < motion.size(); ++i)
-    if (seen.empty() || seen[i]) largest = std::max(largest, motion[i]);
+  for (float m : motion) largest = std::max(largest, m);
   const double cap = view ? global_motion_cap(projected_global_motion(snapshot, *view), settings.view_motion_scale)
                           : global_motion_cap(global_motion(snapshot), settings.global_motion_scale);
   const double leaf_spacing = view ? grid_spacing(*snapshot.cut.tree) : 0.0;
