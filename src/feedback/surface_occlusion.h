@@ -28,9 +28,11 @@ class SurfaceOcclusion {
 
   /// Per simulated node, 1 when `view` sees it: in view, and no face of snapshot.faces covers its cell of a depth
   /// buffer of `cell_px` pixels more than the node's own block side nearer than it. The tolerance is the block's
-  /// side (block_side, saliency.h) because a coarse block's faces stretch a block's side around its node: seen
-  /// obliquely, they lie up to that much nearer than the node in its cell, and must not hide the node they are
-  /// drawn from (on the finest cut the tolerance is one link, as the fidelity pass's visible_grid_points has it).
+  /// side (block_side, saliency.h) because a coarse block's faces are chords a block's side long: where the cloth
+  /// bends within that span, the faces around a node can pass up to about that much in front of it in its cell, as
+  /// a link's do on the finest cut, and must not hide the node they are drawn from. On the finest cut it is one
+  /// link, as the fidelity pass's visible_grid_points has it; the cost: a fold closer than a block's side does not
+  /// hide a coarse node.
   /// Requires snapshot positions. The buffer is kept between calls and made anew only when the image's cells change.
   std::span<const std::uint8_t> seen(const CutSnapshot& snapshot, const ScreenProjection& view, int cell_px);
 

@@ -122,13 +122,15 @@ TEST(SurfaceOcclusion, AFlatSheetSeenObliquelyHidesNothingAtAnyLevel) {
 
 /// Mean z of the leaves the controller simulates after `steps` steps of the sheet sagging between its pinned
 /// corners, seen from below and beside it (+z) by a camera that does or does not model occlusion.
-double mean_leaf_z(int occlusion_cell_px, int steps) {
+double mean_leaf_z(int occlusion_cell_px, int steps, bool parallel = false) {
   const auto net = occluded_sheet(17);
   SceneWorld world({});
   TcSoftBody body(world.info(), net, {}, {});
   FeedbackSettings settings;
   settings.view = true;
   settings.max_ops_per_step = 16;
+  settings.parallel = parallel;
+  settings.threads = 2;
   Camera camera = from_below();
   camera.occlusion_cell_px = occlusion_cell_px;
   SaliencyController controller(settings, 120, Spectator{camera, kDt});
@@ -155,6 +157,8 @@ TEST(SurfaceOcclusion, TheControllerKeepsDetailOnTheSideTheCameraSees) {
   // move towards the camera.
   const double see_through = mean_leaf_z(0, 90), occluded = mean_leaf_z(1, 90);
   EXPECT_GT(occluded, see_through + 0.5) << "see-through " << see_through << ", occluded " << occluded;
+  // The depth buffer is drawn on the worker in parallel mode: the same decisions.
+  EXPECT_EQ(mean_leaf_z(1, 90, true), occluded);
 }
 
 }  // namespace
