@@ -16,13 +16,7 @@ namespace tcsb {
 namespace {
 
 using testing::kDt;
-
-/// An 8 x 8 m sheet at y = 8 m, pinned at its corners, of width^2 nodes.
-std::shared_ptr<const Net> occluded_sheet(int width) {
-  NetSpec spec;
-  spec.width = spec.height = width;
-  return std::make_shared<const Net>(spec);
-}
+using testing::square_net;  // 8 x 8 m at y = 8 m, pinned at its corners
 
 /// The body's snapshot with its surface, and which nodes `camera` sees of it (cells of one pixel).
 struct SeenBody {
@@ -61,7 +55,7 @@ Camera from_below() {
 TEST(SurfaceOcclusion, AFoldedSheetHidesItsLowerLayerAndItsSaliencyIsZero) {
   // The half at z > 0 folded over the other half, 2 m above it (two links of the 9 x 9 net): seen from above, the
   // lower layer's nodes lie behind the upper layer.
-  const auto net = occluded_sheet(9);
+  const auto net = square_net(9);
   SceneWorld world({});
   TcSoftBody body(world.info(), net, {}, {});
   const LodTree& tree = net->lod();
@@ -99,7 +93,7 @@ TEST(SurfaceOcclusion, AFoldedSheetHidesItsLowerLayerAndItsSaliencyIsZero) {
 TEST(SurfaceOcclusion, AFlatSheetSeenObliquelyHidesNothingAtAnyLevel) {
   // Seen at about 10 degrees, a flat surface's triangles around a node lie up to a fraction of a block nearer than it
   // within its cell: the tolerance of the node's own block side keeps the surface from hiding itself, fine or coarse.
-  const auto net = occluded_sheet(17);
+  const auto net = square_net(17);
   const ScreenProjection view(from_below(), 0.0);
   for (const int level : {0, 2}) {
     SCOPED_TRACE(level);
@@ -123,7 +117,7 @@ TEST(SurfaceOcclusion, AFlatSheetSeenObliquelyHidesNothingAtAnyLevel) {
 /// Mean z of the leaves the controller simulates after `steps` steps of the sheet sagging between its pinned
 /// corners, seen from below and beside it (+z) by a camera that does or does not model occlusion.
 double mean_leaf_z(int occlusion_cell_px, int steps, bool parallel = false) {
-  const auto net = occluded_sheet(17);
+  const auto net = square_net(17);
   SceneWorld world({});
   TcSoftBody body(world.info(), net, {}, {});
   FeedbackSettings settings;
