@@ -60,6 +60,9 @@ struct CutSnapshot {
   /// Per simulated node, 1 when Bullet's last step found it in contact with a rigid body (nodes_in_contact); empty
   /// unless the contact feature asked for it.
   std::vector<std::uint8_t> contact;
+  /// The body's surface, its cut's faces as simulated-node index triples (SurfaceOcclusion::capture); empty unless
+  /// the spectator's camera models occlusion.
+  std::vector<std::array<std::int32_t, 3>> faces;
   std::int64_t step = -1;  ///< the boundary it was taken at
 
   std::size_t size() const { return cut.size(); }

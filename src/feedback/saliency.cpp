@@ -29,15 +29,21 @@ void neighbour_sums(const CutSnapshot& snapshot, NeighbourSums& out) {
 namespace {
 Eigen::Vector3d vec(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
 
-/// How much of a detail the spectator sees in simulated node i: its block's side (leaves x spacing) on the image,
-/// over detail_px, capped at 1.
+/// How much of a detail the spectator sees in simulated node i: its block's side on the image, over detail_px,
+/// capped at 1.
 double apparent_detail(const CutSnapshot& snapshot, std::size_t i, const ScreenProjection& view, double leaf_spacing,
                        double detail_px) {
-  const LodNode& node = snapshot.cut.tree->node(snapshot.cut.tree_of[i]);
-  const double side = leaf_spacing * std::max(node.leaf_x1 - node.leaf_x0, node.leaf_y1 - node.leaf_y0);
+  const double side = block_side(*snapshot.cut.tree, snapshot.cut.tree_of[i], leaf_spacing);
   return std::min(1.0, view.apparent_size_px(vec(snapshot.position[i]), side) / detail_px);
 }
 }  // namespace
+
+double grid_spacing(const LodTree& tree) { return tree.leaf_count() > 1 ? (tree.rest(1) - tree.rest(0)).norm() : 0.0; }
+
+double block_side(const LodTree& tree, TreeId id, double spacing) {
+  const LodNode& node = tree.node(id);
+  return spacing * std::max(node.leaf_x1 - node.leaf_x0, node.leaf_y1 - node.leaf_y0);
+}
 
 void local_motion(const CutSnapshot& snapshot, const NeighbourSums& sums, std::size_t begin, std::size_t end,
                   std::span<float> out, const ScreenProjection* view) {
@@ -119,14 +125,15 @@ double lambert_factor(const CutSnapshot& snapshot, std::size_t i, const std::arr
 }
 
 void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings, std::span<float> motion,
-                     const ScreenProjection* view) {
+                     const ScreenProjection* view, std::span<const std::uint8_t> seen) {
+  // A hidden node's motion, as one out of view, is nothing the spectator sees: it must not scale the others'.
+  for (std::size_t i = 0; i < seen.size(); ++i)
+    if (!seen[i]) motion[i] = 0;
   float largest = 0;
   for (float m : motion) largest = std::max(largest, m);
   const double cap = view ? global_motion_cap(projected_global_motion(snapshot, *view), settings.view_motion_scale)
                           : global_motion_cap(global_motion(snapshot), settings.global_motion_scale);
-  // The grid's spacing at rest, from the first two leaves (neighbours along a row).
-  const LodTree& tree = *snapshot.cut.tree;
-  const double leaf_spacing = view && tree.leaf_count() > 1 ? (tree.rest(1) - tree.rest(0)).norm() : 0.0;
+  const double leaf_spacing = view ? grid_spacing(*snapshot.cut.tree) : 0.0;
   for (std::size_t i = 0; i < motion.size(); ++i) {
     double s = largest > 0 ? motion[i] / largest : 0.0;
     s = std::min(s, cap);
@@ -140,19 +147,20 @@ void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settin
               : 0.0;
     if (settings.illumination && s > 0) s *= lambert_factor(snapshot, i, settings.light_direction);
     if (!snapshot.contact.empty() && snapshot.contact[i]) s = std::max(s, settings.contact_saliency);
-    // What the spectator cannot see gets the lowest saliency, contact included.
-    if (view && !view->project(vec(snapshot.position[i])).in_view) s = 0;
+    // What the spectator cannot see, out of view or hidden by the body's surface, gets the lowest saliency, contact
+    // included.
+    if (view && (!view->project(vec(snapshot.position[i])).in_view || (!seen.empty() && !seen[i]))) s = 0;
     motion[i] = static_cast<float>(s);
   }
 }
 
 std::vector<float> compute_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings,
-                                    const ScreenProjection* view) {
+                                    const ScreenProjection* view, std::span<const std::uint8_t> seen) {
   std::vector<float> s(snapshot.size());
   NeighbourSums sums;
   neighbour_sums(snapshot, sums);
   local_motion(snapshot, sums, 0, snapshot.size(), s, view);
-  finish_saliency(snapshot, settings, s, view);
+  finish_saliency(snapshot, settings, s, view, seen);
   return s;
 }
 

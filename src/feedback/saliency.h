@@ -12,8 +12,9 @@
 //  * View (optional, feedback.view): with a spectator (a ScreenProjection), local and global motion are measured on
 //    the image — the relative velocity's projection, in degrees of visual angle per second — so motion far away or
 //    along the line of sight counts little; a node in view is worth its block's apparent size x (view_static_share
-//    + (1 - view_static_share) x its capped motion), and a node out of view gets 0 whatever else it has
-//    (docs/design.md, "The spectator").
+//    + (1 - view_static_share) x its capped motion), and a node out of view gets 0 whatever else it has, as does a
+//    node the body's own surface hides when the camera models occlusion (`seen`, surface_occlusion.h;
+//    docs/design.md, "The spectator").
 #pragma once
 
 #include <array>
@@ -56,15 +57,23 @@ double global_motion_cap(double speed, double scale);
 /// Lambertian factor max(0, n . l) at node i, n from the neighbours' positions (requires snapshot positions).
 double lambert_factor(const CutSnapshot& snapshot, std::size_t i, const std::array<double, 3>& light);
 
+/// The grid's spacing at rest, metres: the distance between its first two leaves (neighbours along a row); 0 for a
+/// single leaf.
+double grid_spacing(const LodTree& tree);
+
+/// The side of tree node `id`'s block at rest, metres: its leaves across (the larger of its two extents) x `spacing`.
+double block_side(const LodTree& tree, TreeId id, double spacing);
+
 /// Turns raw local motion into saliency in place: divide by the largest value, clamp to the global cap, apply the
 /// illumination factor when enabled, raise nodes in contact to the contact saliency (when the snapshot has contacts);
-/// with a `view`, the cap from the projected global motion and 0 for every node out of view. Deterministic for a
-/// given snapshot.
+/// with a `view`, the cap from the projected global motion and 0 for every node out of view. With `seen` (per node,
+/// 1 where the camera sees it; empty when the camera does not model occlusion) a node it does not see is out of view:
+/// 0, and its motion does not enter the largest value. Deterministic for a given snapshot.
 void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings, std::span<float> motion,
-                     const ScreenProjection* view = nullptr);
+                     const ScreenProjection* view = nullptr, std::span<const std::uint8_t> seen = {});
 
 /// All of the above on one thread: saliency of every simulated node of the snapshot.
 std::vector<float> compute_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settings,
-                                    const ScreenProjection* view = nullptr);
+                                    const ScreenProjection* view = nullptr, std::span<const std::uint8_t> seen = {});
 
 }  // namespace tcsb

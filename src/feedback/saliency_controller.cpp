@@ -41,6 +41,9 @@ void SaliencyController::evaluate() {
   std::optional<ScreenProjection> view;
   if (spectator_) view.emplace(spectator_->camera, static_cast<double>(snapshot_.step) * spectator_->dt);
   const ScreenProjection* seen = view ? &*view : nullptr;
+  const std::span<const std::uint8_t> visible = view && occlusion_cell_px() > 0
+                                                    ? occlusion_.seen(snapshot_, *view, occlusion_cell_px())
+                                                    : std::span<const std::uint8_t>{};
   const int threads = workers_ ? workers_->threads() : 1;
   if (threads > 1) {
     // Chunks write disjoint ranges; the normalisation and ranking run after the join: same numbers for any split.
@@ -53,7 +56,7 @@ void SaliencyController::evaluate() {
   } else {
     local_motion(snapshot_, sums_, 0, n, saliency_, seen);
   }
-  finish_saliency(snapshot_, settings_, saliency_, seen);
+  finish_saliency(snapshot_, settings_, saliency_, seen, visible);
   JumpCharge charge;
   if (settings_.popping_charge > 0) {
     cut_neighbours(snapshot_.cut, neighbours_);
@@ -119,6 +122,10 @@ void SaliencyController::before_step(TcSoftBody& body) {
     const bool positions = settings_.illumination || settings_.popping_charge > 0 || spectator_.has_value();
     take_snapshot(body, cut_view(body), positions, boundary_, snapshot_,
                   settings_.contact_saliency > 0 ? &contacts_ : nullptr);
+    if (occlusion_cell_px() > 0)
+      occlusion_.capture(body, snapshot_);  // here, where the cut holds still; drawn on the worker
+    else
+      snapshot_.faces.clear();
     if (workers_) {
       workers_->post([this] { evaluate(); });
       job_running_ = true;

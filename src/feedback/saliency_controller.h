@@ -19,6 +19,7 @@
 #include "../feedback/evaluator.h"
 #include "../feedback/feedback_workers.h"
 #include "../feedback/saliency.h"
+#include "../feedback/surface_occlusion.h"
 
 namespace tcsb {
 
@@ -26,7 +27,8 @@ namespace tcsb {
 class SaliencyController final : public Controller {
  public:
   /// `node_budget`: the maximal number of simulated (Bullet) nodes, held at every step once first reached.
-  /// `spectator`: with one, saliency takes the BSWDF's view terms through its camera (settings.view).
+  /// `spectator`: with one, saliency takes the BSWDF's view terms through its camera (settings.view); when the camera
+  /// models occlusion (occlusion_cell_px > 0), nodes the body's own surface hides from it get saliency 0.
   SaliencyController(const FeedbackSettings& settings, int node_budget,
                      std::optional<Spectator> spectator = std::nullopt);
   ~SaliencyController() override;
@@ -52,6 +54,8 @@ class SaliencyController final : public Controller {
  private:
   void evaluate();
   void adapt_time_budget();
+  /// The spectator's occlusion cells, pixels; 0 without a spectator or when its camera does not model occlusion.
+  int occlusion_cell_px() const { return spectator_ ? spectator_->camera.occlusion_cell_px : 0; }
 
   FeedbackSettings settings_;
   std::optional<Spectator> spectator_;
@@ -70,6 +74,7 @@ class SaliencyController final : public Controller {
   std::vector<float> interface_weights_;  // per tree node, when the interface charge weighs the pins' tension
   int budget_level_ = 0;                  // the level most of the cloth takes under the budget, for the pull
   std::vector<float> saliency_;
+  SurfaceOcclusion occlusion_;  // when the spectator's camera models occlusion: its depth buffer, kept between steps
   Evaluation evaluation_;
   bool evaluation_ready_ = false;
   double evaluation_ms_ = 0;  // time of the last evaluation, wherever it ran

@@ -126,9 +126,11 @@ class Reference {
       const std::optional<ScreenProjection> view = suite_.feedback.view ? camera_view(suite_, s) : std::nullopt;
       take_snapshot(*body_, finest_.view(), suite_.feedback.illumination || view, s, snapshot_,
                     contact ? &contacts_ : nullptr);
-      const std::vector<float> saliency = compute_saliency(snapshot_, suite_.feedback, view ? &*view : nullptr);
-      std::copy(saliency.begin(), saliency.end(), block.saliency.begin() + static_cast<std::ptrdiff_t>(f * n));
       if (occlusion) see_through_camera(s, f);
+      // With occlusion the weights see it as the suite's TC-SB does: a point the grid's own surface hides weighs 0.
+      const std::span<const std::uint8_t> seen = view && occlusion ? seen_ : std::span<const std::uint8_t>{};
+      const std::vector<float> saliency = compute_saliency(snapshot_, suite_.feedback, view ? &*view : nullptr, seen);
+      std::copy(saliency.begin(), saliency.end(), block.saliency.begin() + static_cast<std::ptrdiff_t>(f * n));
     }
     add_block_mean(step_ms, timed_before, block_step_ms);
     return true;

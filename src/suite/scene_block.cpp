@@ -148,7 +148,7 @@ Camera parse_camera(const Reader& r, const json& j, const std::string& path) {
     c.height_px = static_cast<int>(r.integer((*image)[1], index_path(o.at("image"), 1), 16, 16384));
   }
   // At most 64 pixels a cell: coarser, a silhouette's misjudged band would be most of a cloth far away.
-  o.read("occlusion_cell_px", c.occlusion_cell_px, 1, 64);
+  o.read("occlusion_cell_px", c.occlusion_cell_px, 1, Camera::kMaxOcclusionCellPx);
   if (const json* keys = o.find("path")) {
     // A path gives every pose; a fixed position or target beside it would be silently ignored.
     for (const char* fixed : {"position", "target"})

@@ -53,6 +53,9 @@ void validate_spectator(const Spectator& spectator) {
   if (c.width_px < 1 || c.height_px < 1)
     refuse("camera.width_px",
            "the image must have pixels, got " + std::to_string(c.width_px) + " x " + std::to_string(c.height_px));
+  if (c.occlusion_cell_px < 0 || c.occlusion_cell_px > Camera::kMaxOcclusionCellPx)
+    refuse("camera.occlusion_cell_px", "must be 0 (off) or 1 to " + std::to_string(Camera::kMaxOcclusionCellPx) +
+                                           " pixels, got " + std::to_string(c.occlusion_cell_px));
   check_finite("camera.up", c.up);
   if (c.up == std::array<double, 3>{}) refuse("camera.up", "must not be the zero vector");
   if (c.path.empty()) {

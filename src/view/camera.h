@@ -112,8 +112,11 @@ struct Camera {
   /// move linearly; before the first and after the last the camera holds that keyframe's pose.
   std::vector<CameraKey> path;
   /// Occlusion: 0, not modelled (every point in view counts as seen); else points hidden behind the surface count as
-  /// unseen, decided on a depth buffer of cells this many pixels wide (view/depth_buffer.h states what that costs).
+  /// unseen, decided on a depth buffer of cells this many pixels wide (view/depth_buffer.h states what that costs),
+  /// at most kMaxOcclusionCellPx: by the fidelity pass's error in pixels and by the feedback's view terms.
   int occlusion_cell_px = 0;
+  /// Cells wider than this would judge a cloth's visibility by a handful of samples.
+  static constexpr int kMaxOcclusionCellPx = 64;
 
   /// The pose at `time` seconds of simulated time.
   CameraPose pose_at(double time) const;
@@ -127,10 +130,11 @@ struct Spectator {
 };
 
 /// Throws std::invalid_argument naming the field ("Spectator: camera.path[1]: ...") when the spectator gives no image
-/// at some time: a field of view outside (0, 180) degrees, an image without pixels, a zero or non-finite up, a
-/// non-finite position, target or time, keyframe times not ascending, a pose (at a keyframe or between two:
-/// camera_path_problem) that looks nowhere or along up, or a step length that is not a finite number > 0. What the
-/// suite parser refuses, for a library user who builds the camera in code; make_controller checks with it.
+/// at some time: a field of view outside (0, 180) degrees, an image without pixels, occlusion cells outside
+/// [0, Camera::kMaxOcclusionCellPx], a zero or non-finite up, a non-finite position, target or time, keyframe times
+/// not ascending, a pose (at a keyframe or between two: camera_path_problem) that looks nowhere or along up, or a
+/// step length that is not a finite number > 0. What the suite parser refuses, for a library user who builds the
+/// camera in code; make_controller checks with it.
 void validate_spectator(const Spectator& spectator);
 
 }  // namespace tcsb

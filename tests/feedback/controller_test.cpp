@@ -305,6 +305,8 @@ TEST(MakeController, RefusesASpectatorThatGivesNoImageNamingTheField) {
       {"dt", [](Spectator& s) { s.dt = 0; }},
       {"camera.fov_deg", [](Spectator& s) { s.camera.fov_deg = 180; }},
       {"camera.width_px", [](Spectator& s) { s.camera.height_px = 0; }},
+      {"camera.occlusion_cell_px", [](Spectator& s) { s.camera.occlusion_cell_px = -1; }},
+      {"camera.occlusion_cell_px", [](Spectator& s) { s.camera.occlusion_cell_px = Camera::kMaxOcclusionCellPx + 1; }},
       {"camera.up",
        [](Spectator& s) {
          s.camera.up = {0, 0, 0};

@@ -181,14 +181,18 @@ TEST(FidelityPass, ACompliantSuiteIsMeasuredAgainstItsConvergedReference) {
 }
 
 /// The points of the reference the camera counts at full resolution (TC-SB without compression), mean over steps.
-double points_counted(Suite s, int occlusion_cell_px) {
+Camera below_the_corners(int occlusion_cell_px) {
   Camera c;
   c.pose = {{0, 5.5, 14}, {0, 7, 0}};  // below the cloth's corners, looking up at it from beside the net
   c.fov_deg = 60;
   c.width_px = 320;
   c.height_px = 240;
   c.occlusion_cell_px = occlusion_cell_px;
-  s.scene.camera = c;
+  return c;
+}
+
+double points_counted(Suite s, int occlusion_cell_px) {
+  s.scene.camera = below_the_corners(occlusion_cell_px);
   s.fidelity.ablations = false;
   s.fidelity.pareto_targets.clear();
   const RunResult run = run_suite(s, Context{});
@@ -208,6 +212,22 @@ TEST(FidelityPass, WithOcclusionThePixelErrorCountsOnlyThePointsTheCameraSees) {
   const double seen = points_counted(tiny_suite(9.81), 1);
   EXPECT_LT(seen, 0.9 * sagging);
   EXPECT_GT(seen, 0.2 * sagging);
+}
+
+TEST(FidelityPass, WithOcclusionTheWeightsHideWhatTheReferencesSurfaceHides) {
+  // The uniform grid does not depend on the feedback, so only its weights (the reference's saliency with the view
+  // terms) can tell the two runs apart: its error is the same, its weighted error is not.
+  const auto uniform_grid = [](int occlusion_cell_px) {
+    Suite s = tiny_suite(9.81);
+    s.feedback.view = true;
+    s.scene.camera = below_the_corners(occlusion_cell_px);
+    s.fidelity.pareto_targets.clear();
+    const RunResult run = run_suite(s, Context{});
+    return find(*run.fidelity, "uniform_grid", 0.5);
+  };
+  const FidelityCase see_through = uniform_grid(0), occluded = uniform_grid(1);
+  EXPECT_EQ(occluded.rms_pct.mean, see_through.rms_pct.mean);
+  EXPECT_NE(occluded.weighted_rms_pct.mean, see_through.weighted_rms_pct.mean);
 }
 
 }  // namespace
