@@ -4,16 +4,16 @@
 # and run every test once more. Any failure stops it with a non-zero exit.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# Google Benchmark's compare.py (libbenchmark-tools, which needs SciPy) for the test that it reads our exports;
-# clang-format for the format check; Slurm and munge for the test on a real single-node cluster
-# (scripts/test-slurm.sh); valgrind for the instruction gate (tcsb run --measure instructions runs under callgrind).
-bash scripts/install-deps.sh libbenchmark-tools python3-scipy clang-format slurm-wlm munge valgrind
 # Where CI's time goes, one line a phase at the end (issue 58 asks for the split; CI's limit is 90 minutes, ours 30).
 phase_start=$SECONDS
 phases=()
 phase_done() { phases+=("$1 $((SECONDS - phase_start)) s"); phase_start=$SECONDS; }
 report_phases() { local p; for p in "${phases[@]}"; do echo "test.sh: time: $p" >&2; done; }
 trap report_phases EXIT
+# Google Benchmark's compare.py (libbenchmark-tools, which needs SciPy) for the test that it reads our exports;
+# clang-format for the format check; Slurm and munge for the test on a real single-node cluster
+# (scripts/test-slurm.sh); valgrind for the instruction gate (tcsb run --measure instructions runs under callgrind).
+bash scripts/install-deps.sh libbenchmark-tools python3-scipy clang-format slurm-wlm munge valgrind
 phase_done "set-up"
 # Formatting first, so a format problem fails in seconds: every C++ source as .clang-format says.
 bash scripts/check-format.sh
