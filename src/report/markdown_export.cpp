@@ -473,6 +473,29 @@ std::string fidelity_section(const ojson& doc) {
   return out;
 }
 
+/// A scene of many bodies: each method of the world pass in one table (world/world_runner.h).
+std::string world_section(const ojson& doc) {
+  const ojson& world = at(doc, "world");
+  const ojson& methods = at(world, "methods");
+  if (!non_empty_array(methods)) return "";
+  std::string out = "### Many bodies\n\n" + text_of(at(world, "bodies")) + " bodies, " +
+                    text_of(at(world, "scene_nodes")) +
+                    " nodes at full resolution, stepped side by side in one world each. p95 px: the 95th percentile of "
+                    "the pixel error over every point of every body the camera sees, mean over steps; time / full: the "
+                    "median over blocks of the step's ratio to full resolution's; pop: the largest jump on the image "
+                    "where a body changed its resolution.\n";
+  const std::vector<Column> columns{field("method", "method"),
+                                    {"budget", [](const ojson& row) { return compression_text(at(row, "budget")); }},
+                                    field("mean nodes", "mean_nodes"),
+                                    field("step ms", "step_ms"),
+                                    field("time / full", "step_ratio"),
+                                    field("p95 px", "p95_px"),
+                                    field("pop max px", "popping_px"),
+                                    field("resolution changes", "resolution_changes"),
+                                    field("status", "status")};
+  return out + "\n" + table(columns, methods);
+}
+
 /// A run of a suite with axes: each configuration's Table 2, Table 1 and fits under a line naming it (the run-wide
 /// tables are empty then: a mean over configurations would mix settings).
 std::string configurations_section(const ojson& doc) {
@@ -494,7 +517,7 @@ std::string markdown_report(const ojson& native) {
   std::string out = heading(native) + "\n" + source_line(native);
   for (const std::string& section :
        {table2_section(native), tax_section(native), table1_section(native), scaling_section(native),
-        configurations_section(native), fidelity_section(native), claims_section(native)}) {
+        configurations_section(native), fidelity_section(native), world_section(native), claims_section(native)}) {
     if (!section.empty()) out += "\n" + section;
   }
   return out;

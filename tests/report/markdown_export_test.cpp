@@ -284,6 +284,38 @@ TEST(MarkdownExport, FidelitySummary) {
   EXPECT_TRUE(contains(md, " · 12.3 s wall (fidelity pass 13.5 s).")) << md;
 }
 
+TEST(MarkdownExport, AWorldPassHasItsMethodsInOneTable) {
+  EXPECT_EQ(markdown_report(synthetic_document()).find("### Many bodies"), std::string::npos) << "no world, no table";
+  ojson doc = synthetic_document();
+  doc["world"] = {{"bodies", 16},
+                  {"scene_nodes", 17424},
+                  {"wall_s", 1.0},
+                  {"methods",
+                   {{{"method", "full_resolution"},
+                     {"budget", 1.0},
+                     {"status", "ok"},
+                     {"mean_nodes", 17424},
+                     {"step_ms", 5.4},
+                     {"step_ratio", 1.0},
+                     {"p95_px", 0.0},
+                     {"popping_px", 0.0},
+                     {"resolution_changes", 0}},
+                    {{"method", "tcsb_world"},
+                     {"budget", 0.3},
+                     {"status", "ok"},
+                     {"mean_nodes", 5374.4},
+                     {"step_ms", 2.4},
+                     {"step_ratio", 0.452},
+                     {"p95_px", 3.92},
+                     {"popping_px", 0.35},
+                     {"resolution_changes", 5130}}}}};
+  const std::string md = markdown_report(doc);
+  ASSERT_NE(md.find("### Many bodies"), std::string::npos) << md;
+  EXPECT_NE(md.find("16 bodies, 17424 nodes"), std::string::npos) << md;
+  EXPECT_NE(md.find("| tcsb_world | 30% | 5374 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 0.4520 | 3.920 | 0.3500 | 5130 | ok |"), std::string::npos) << md;
+}
+
 }  // namespace
 }  // namespace tcsb
 
