@@ -34,15 +34,6 @@ namespace {
 /// are interleaved, like the repetitions of the timed cases.
 constexpr int kBlockSteps = 20;
 
-/// Appends the mean of series[from, end) to `blocks` when the block timed any step: a block's mean step, the unit
-/// the speed-up's interval resamples (paper/equal_error_table.h), since the blocks of all bodies are interleaved.
-void add_block_mean(const std::vector<double>& series, std::size_t from, std::vector<double>& blocks) {
-  if (series.size() <= from) return;
-  double sum = 0;
-  for (std::size_t i = from; i < series.size(); ++i) sum += series[i];
-  blocks.push_back(sum / static_cast<double>(series.size() - from));
-}
-
 /// The scene's camera as it saw the end of step `step` (at (step + 1) x dt), when the scene has one.
 std::optional<ScreenProjection> camera_view(const Suite& suite, int step) {
   if (!suite.scene.camera) return std::nullopt;
@@ -152,8 +143,7 @@ class Reference {
     const ScreenProjection view = *camera_view(suite_, step);
     if (!depth_) depth_.emplace(view, camera.occlusion_cell_px);
     const NetSpec& spec = net_->spec();
-    const double link = std::max(spec.size_x / std::max(1, spec.width - 1), spec.size_z / std::max(1, spec.height - 1));
-    visible_grid_points(view, x_, net_->width(), net_->height(), link, *depth_, seen_);
+    visible_grid_points(view, x_, net_->width(), net_->height(), spec.link_length(), *depth_, seen_);
     std::copy(seen_.begin(), seen_.end(), block.seen.begin() + static_cast<std::ptrdiff_t>(f * block.nodes));
   }
 

@@ -32,13 +32,6 @@ double stock_energy(const btSoftBody& body, const Net& net, double gravity, std:
   return mechanical_energy(net.masses(), x, v, gravity);
 }
 
-/// Counts operations begun or ended, so the pass knows when the surface may have jumped.
-class OpCounter final : public OpSink {
- public:
-  void record(const OpSample&) override { ++count; }
-  std::int64_t count = 0;
-};
-
 /// TC-SB with its controller (none at compression 1: the body then never changes its cut).
 class TreeCutSubject final : public FidelitySubject {
  public:

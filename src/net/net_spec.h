@@ -1,6 +1,7 @@
 // NetSpec: the parameters of one cloth net, as a suite names them. Plain data, validated by the suite parser.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -67,6 +68,8 @@ struct NetSpec {
   /// Where the LOD tree's blocks rest (kVertex where a suite's TC-SB has masses that follow the cut, tcsb.masses).
   RestPlacement lod_rest = RestPlacement::kCentroid;
 
+  /// The longer of the grid's two rest spacings (x and z), metres: one link's length at rest.
+  double link_length() const { return std::max(size_x / std::max(1, width - 1), size_z / std::max(1, height - 1)); }
   /// Number of grid nodes (leaves of the LOD tree).
   long long node_count() const { return static_cast<long long>(width) * height; }
   /// Total mass of the net, kg.

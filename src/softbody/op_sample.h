@@ -107,4 +107,11 @@ class OpSink {
   virtual void record(const OpSample& sample) = 0;
 };
 
+/// A sink that only counts the operations begun or ended, so a caller knows when a body's surface may have jumped.
+class OpCounter final : public OpSink {
+ public:
+  void record(const OpSample&) override { ++count; }
+  std::int64_t count = 0;
+};
+
 }  // namespace tcsb

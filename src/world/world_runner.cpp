@@ -46,13 +46,6 @@ constexpr std::size_t kWorldSeedIndex = 200000;
 
 GridSize grid_size_of(const Net& net) { return {net.width(), net.height()}; }
 
-/// Counts the operations a TC-SB body begins or ends, so a boundary that changed its resolution is known.
-class WorldOpCounter final : public OpSink {
- public:
-  void record(const OpSample&) override { ++count; }
-  long long count = 0;
-};
-
 /// One body of a method's scene.
 class SceneMember {
  public:
@@ -89,7 +82,7 @@ class TreeCutMember final : public SceneMember {
   explicit TreeCutMember(Body body) : body_(std::move(body)), tc_(*body_.tc) { tc_.impl().set_op_sink(&ops_); }
   ~TreeCutMember() override { tc_.impl().set_op_sink(nullptr); }
   void boundary(int) override {
-    const long long before = ops_.count;
+    const std::int64_t before = ops_.count;
     tc_.advance_blends(OrderSettling::kByCaller);
     if (body_.controller) body_.controller->before_step(tc_);
     tc_.settle_order();
@@ -116,7 +109,7 @@ class TreeCutMember final : public SceneMember {
   Body body_;
   TcSoftBody& tc_;
   SurfaceMorph morph_;
-  WorldOpCounter ops_;
+  OpCounter ops_;
   bool changed_ = false;
   bool morph_pending_ = false;
 };
@@ -241,11 +234,7 @@ class WorldTrack {
       }
       if (e.in_view > 0) p95_.push_back(e.p95);
     }
-    if (step_ms_.size() > timed_before) {
-      double sum = 0;
-      for (std::size_t i = timed_before; i < step_ms_.size(); ++i) sum += step_ms_[i];
-      result.block_step_ms.push_back(sum / static_cast<double>(step_ms_.size() - timed_before));
-    }
+    add_block_mean(step_ms_, timed_before, result.block_step_ms);
   }
 
   void pause(bool paused) {
@@ -303,8 +292,7 @@ class WorldTrack {
     const Camera& camera = *suite_.scene.camera;
     if (!depth_) depth_.emplace(view, camera.occlusion_cell_px);
     const NetSpec& spec = nets_.front()->spec();
-    const double link = std::max(spec.size_x / std::max(1, spec.width - 1), spec.size_z / std::max(1, spec.height - 1));
-    visible_grid_points(view, all_, spec.width, spec.height, link, *depth_, seen);
+    visible_grid_points(view, all_, spec.width, spec.height, spec.link_length(), *depth_, seen);
   }
 
   static void gather(const std::vector<std::vector<Eigen::Vector3d>>& parts, std::vector<Eigen::Vector3d>& out) {
