@@ -62,6 +62,24 @@ std::vector<int> split_world_budget(std::span<const BudgetDemand> demands, int w
   return shares;
 }
 
+std::vector<int> limit_growth_to_free_nodes(std::span<const BudgetDemand> demands, std::vector<int> shares,
+                                            int world_budget) {
+  long long held = 0, growth = 0;
+  for (std::size_t i = 0; i < demands.size(); ++i) {
+    const long long simulated = std::max(demands[i].nodes, demands[i].simulated);
+    held += std::max<long long>(shares[i], simulated);
+    growth += std::max<long long>(0, shares[i] - simulated);
+  }
+  const long long over = held - world_budget;
+  if (over <= 0 || growth == 0) return shares;
+  const long long allowed = std::max<long long>(0, growth - over);
+  for (std::size_t i = 0; i < demands.size(); ++i) {
+    const long long simulated = std::max(demands[i].nodes, demands[i].simulated);
+    if (shares[i] > simulated) shares[i] = static_cast<int>(simulated + (shares[i] - simulated) * allowed / growth);
+  }
+  return shares;
+}
+
 void share_world_budget(std::span<const WorldBudgetMember> members, int world_budget, double hysteresis) {
   std::vector<BudgetDemand> demands(members.size());
   for (std::size_t i = 0; i < members.size(); ++i) {
@@ -70,11 +88,13 @@ void share_world_budget(std::span<const WorldBudgetMember> members, int world_bu
     const int top = tree.level_count() - 1;
     BudgetDemand& d = demands[i];
     d.nodes = body.committed_count();
+    d.simulated = body.node_count();
     d.fewest = tree.level_width(top) * tree.level_height(top);
     d.most = static_cast<int>(tree.leaf_count());
     if (members[i].controller) members[i].controller->budget_demand(d);
   }
-  const std::vector<int> shares = split_world_budget(demands, world_budget, hysteresis);
+  const std::vector<int> shares =
+      limit_growth_to_free_nodes(demands, split_world_budget(demands, world_budget, hysteresis), world_budget);
   for (std::size_t i = 0; i < members.size(); ++i)
     if (members[i].controller) members[i].controller->set_budget(std::max(1, shares[i]));
 }

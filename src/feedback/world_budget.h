@@ -21,6 +21,7 @@ namespace tcsb {
 /// What one body asks of the world budget: its committed nodes and the priorities of its ranked candidates.
 struct BudgetDemand {
   int nodes = 0;                ///< committed simulated nodes now
+  int simulated = 0;            ///< Bullet nodes now, blends included (at least `nodes`; 0: as `nodes`)
   int fewest = 1;               ///< nodes of its coarsest cut: no share goes below it
   int most = 1;                 ///< nodes of its finest cut (the net's): no share goes above it
   std::vector<double> refine;   ///< refine priorities, any order: each refine adds `nodes_per_operation`
@@ -35,6 +36,14 @@ struct BudgetDemand {
 /// to it over the next steps, the split recomputed each step). Throws std::invalid_argument when world_budget < 1.
 std::vector<int> split_world_budget(std::span<const BudgetDemand> demands, int world_budget, double hysteresis);
 
+/// Holds the world to its budget while nodes move between bodies: a body whose share fell still simulates its old
+/// nodes until its coarsening blends end, so the bodies whose shares rose may grow only into what the world has
+/// free — the budget less every body's max(share, simulated). Growth is cut in proportion to each body's, rounding
+/// down; shares that fall are kept. With it the scene's Bullet nodes stay within the budget as a single body's do
+/// (feedback/budget_policy.h), at the price of a body's refinement waiting for another's coarsening.
+std::vector<int> limit_growth_to_free_nodes(std::span<const BudgetDemand> demands, std::vector<int> shares,
+                                            int world_budget);
+
 class Controller;
 class TcSoftBody;
 
@@ -44,7 +53,8 @@ struct WorldBudgetMember {
   Controller* controller = nullptr;
 };
 
-/// Re-splits `world_budget` over `members` and gives each controller its share (Controller::set_budget, effective at
+/// Re-splits `world_budget` over `members` (split_world_budget, then limit_growth_to_free_nodes) and gives each
+/// controller its share (Controller::set_budget, effective at
 /// its next before_step): call it once per step, after every member's after_step and before any before_step. A
 /// member whose controller ranks nothing this boundary (Controller::budget_demand false) keeps its committed nodes.
 /// The same split for the library's TreeCutDriver and the harness's scenes of many bodies.

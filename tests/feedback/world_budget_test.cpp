@@ -65,5 +65,26 @@ TEST(WorldBudget, WithoutCandidatesEachBodyKeepsWhatItHas) {
   EXPECT_THROW(split_world_budget(d, 0, 0.0), std::invalid_argument);
 }
 
+TEST(WorldBudget, ABodyGrowsOnlyIntoWhatAnotherHasReleased) {
+  // The far body's share fell from 100 to 70 but it still simulates 100 (its coarsening blends): of the near body's
+  // 30 more only what the world has free may come now.
+  std::vector<BudgetDemand> d{demand(100, {}, {}), demand(100, {}, {})};
+  d[1].simulated = 100;
+  EXPECT_EQ(limit_growth_to_free_nodes(d, {130, 70}, 200), (std::vector<int>{100, 70}));
+  EXPECT_EQ(limit_growth_to_free_nodes(d, {130, 70}, 210), (std::vector<int>{110, 70}));
+  // Released: the far body simulates its 70.
+  d[1].nodes = d[1].simulated = 70;
+  EXPECT_EQ(limit_growth_to_free_nodes(d, {130, 70}, 200), (std::vector<int>{130, 70}));
+}
+
+TEST(WorldBudget, GrowthIsCutInProportionAndFallingSharesAreKept) {
+  std::vector<BudgetDemand> d{demand(100, {}, {}), demand(100, {}, {}), demand(100, {}, {})};
+  d[2].simulated = 112;  // blends in flight: 12 more Bullet nodes than committed
+  // Held: 120 + 140 + 112 = 372 against 320, over by 52 of a growth of 60: 8 remain, shared 20 : 40.
+  const std::vector<int> shares = limit_growth_to_free_nodes(d, {120, 140, 60}, 320);
+  EXPECT_EQ(shares, (std::vector<int>{102, 105, 60}));
+  EXPECT_LE(shares[0] + shares[1] + 112, 320);
+}
+
 }  // namespace
 }  // namespace tcsb
