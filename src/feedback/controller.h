@@ -46,9 +46,10 @@ class Controller {
   /// and a saliency controller made without FeedbackSettings::view).
   virtual void set_spectator(const Spectator& spectator);
   /// The priorities of the candidates the next before_step will choose from (BudgetDemand's refine and coarse; the
-  /// caller fills in the body's node counts), for a world budget to weigh this body against others
-  /// (feedback/world_budget.h). Call between after_step and before_step. False when the controller ranks nothing
-  /// this boundary (this default, and a controller between evaluations); `out` is then left as it was.
+  /// caller fills in the body's node counts) and the nodes its policy keeps free below its budget (reserve, set even
+  /// when it returns false), for a world budget to weigh this body against others (feedback/world_budget.h). Call
+  /// between after_step and before_step. False when the controller ranks nothing this boundary (this default, and a
+  /// controller between evaluations); the candidates are then left as they were.
   virtual bool budget_demand(BudgetDemand& out) const;
 };
 

@@ -68,6 +68,7 @@ void SaliencyController::evaluate() {
 }
 
 bool SaliencyController::budget_demand(BudgetDemand& out) const {
+  out.reserve = budget_reserve(budget(), settings_.max_ops_per_step);
   if (!evaluation_ready_ || job_running_ || evaluation_.snapshot_step != boundary_ - 1) return false;
   out.refine.clear();
   out.coarse.clear();

@@ -82,6 +82,7 @@ std::vector<int> limit_growth_to_free_nodes(std::span<const BudgetDemand> demand
 
 void share_world_budget(std::span<const WorldBudgetMember> members, int world_budget, double hysteresis) {
   std::vector<BudgetDemand> demands(members.size());
+  long long reserves = 0;
   for (std::size_t i = 0; i < members.size(); ++i) {
     const TcSoftBody& body = *members[i].body;
     const LodTree& tree = body.tree();
@@ -92,11 +93,14 @@ void share_world_budget(std::span<const WorldBudgetMember> members, int world_bu
     d.fewest = tree.level_width(top) * tree.level_height(top);
     d.most = static_cast<int>(tree.leaf_count());
     if (members[i].controller) members[i].controller->budget_demand(d);
+    reserves += d.reserve;
   }
-  const std::vector<int> shares =
-      limit_growth_to_free_nodes(demands, split_world_budget(demands, world_budget, hysteresis), world_budget);
+  const int shared = static_cast<int>(std::max<long long>(1, world_budget - reserves));
+  std::vector<int> budgets = split_world_budget(demands, shared, hysteresis);
+  for (std::size_t i = 0; i < members.size(); ++i) budgets[i] += demands[i].reserve;
+  budgets = limit_growth_to_free_nodes(demands, std::move(budgets), world_budget);
   for (std::size_t i = 0; i < members.size(); ++i)
-    if (members[i].controller) members[i].controller->set_budget(std::max(1, shares[i]));
+    if (members[i].controller) members[i].controller->set_budget(std::max(1, budgets[i]));
 }
 
 }  // namespace tcsb

@@ -20,8 +20,12 @@ namespace tcsb {
 
 /// What one body asks of the world budget: its committed nodes and the priorities of its ranked candidates.
 struct BudgetDemand {
-  int nodes = 0;                ///< committed simulated nodes now
-  int simulated = 0;            ///< Bullet nodes now, blends included (at least `nodes`; 0: as `nodes`)
+  int nodes = 0;      ///< committed simulated nodes now
+  int simulated = 0;  ///< Bullet nodes now, blends included (at least `nodes`; 0: as `nodes`)
+  /// Nodes the body's budget policy keeps free below its budget for operations in flight (budget_reserve in
+  /// feedback/budget_policy.h): its controller's budget is its share plus this, or the policy would coarsen a block
+  /// for every refine the share grants and the body would churn.
+  int reserve = 0;
   int fewest = 1;               ///< nodes of its coarsest cut: no share goes below it
   int most = 1;                 ///< nodes of its finest cut (the net's): no share goes above it
   std::vector<double> refine;   ///< refine priorities, any order: each refine adds `nodes_per_operation`
@@ -53,8 +57,9 @@ struct WorldBudgetMember {
   Controller* controller = nullptr;
 };
 
-/// Re-splits `world_budget` over `members` (split_world_budget, then limit_growth_to_free_nodes) and gives each
-/// controller its share (Controller::set_budget, effective at
+/// Re-splits `world_budget` over `members` and gives each controller its budget: the shares of the world budget less
+/// every body's reserve (split_world_budget), each plus its body's reserve, growth held to what the world has free
+/// (limit_growth_to_free_nodes, on those budgets) (Controller::set_budget, effective at
 /// its next before_step): call it once per step, after every member's after_step and before any before_step. A
 /// member whose controller ranks nothing this boundary (Controller::budget_demand false) keeps its committed nodes.
 /// The same split for the library's TreeCutDriver and the harness's scenes of many bodies.

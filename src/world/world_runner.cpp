@@ -79,9 +79,12 @@ class FullResolutionMember final : public SceneMember {
 /// TC-SB with its controller, its surface geomorphed as the fidelity pass shows it (fidelity/surface_morph.h).
 class TreeCutMember final : public SceneMember {
  public:
-  explicit TreeCutMember(Body body) : body_(std::move(body)), tc_(*body_.tc) { tc_.impl().set_op_sink(&ops_); }
+  TreeCutMember(const Suite& suite, Body body) : suite_(suite), body_(std::move(body)), tc_(*body_.tc) {
+    tc_.impl().set_op_sink(&ops_);
+  }
   ~TreeCutMember() override { tc_.impl().set_op_sink(nullptr); }
-  void boundary(int) override {
+  void boundary(int step) override {
+    if (body_.controller && suite_.feedback.view) tell_spectator(step);
     const std::int64_t before = ops_.count;
     tc_.advance_blends(OrderSettling::kByCaller);
     if (body_.controller) body_.controller->before_step(tc_);
@@ -106,6 +109,17 @@ class TreeCutMember final : public SceneMember {
   }
 
  private:
+  /// The camera as a game moves it: each frame the application tells the controller where the spectator stands now
+  /// (Controller::set_spectator, the library's call), not a path known in advance. Boundary b sees the state at b x dt,
+  /// where the suite's path puts the camera then, so the view terms see what they saw from the path, bit for bit.
+  void tell_spectator(int step) {
+    Spectator now{*suite_.scene.camera, suite_.world.dt};
+    now.camera.pose = now.camera.pose_at(static_cast<double>(step) * suite_.world.dt);
+    now.camera.path.clear();
+    body_.controller->set_spectator(now);
+  }
+
+  const Suite& suite_;
   Body body_;
   TcSoftBody& tc_;
   SurfaceMorph morph_;
@@ -373,7 +387,7 @@ WorldResult run_world(const Suite& suite) {
         BodySpec spec;
         spec.compression = c;
         Body body = make_body(suite, spec, track->world(), nets[b], case_seed(suite, kWorldSeedIndex + b));
-        track->add(std::make_unique<TreeCutMember>(std::move(body)), nets[b]);
+        track->add(std::make_unique<TreeCutMember>(suite, std::move(body)), nets[b]);
       }
       tracks.push_back(std::move(track));
     };
