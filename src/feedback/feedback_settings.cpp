@@ -53,6 +53,7 @@ void check_feedback_settings(const FeedbackSettings& s) {
   positive("view_motion_scale", s.view_motion_scale);
   positive("view_detail_px", s.view_detail_px);
   unit("view_static_share", s.view_static_share);
+  unit("view_offscreen_share", s.view_offscreen_share);
 }
 
 }  // namespace tcsb

@@ -71,6 +71,12 @@ struct FeedbackSettings {
   /// is its capped motion. In [0, 1]; above 0, a quiet node in view still outranks every node out of view. Which
   /// share suits which scene: docs/design.md, "The spectator".
   double view_static_share = 0.5;
+  /// With view: what a node out of view or hidden keeps, as a share of the worth its block's apparent size would give
+  /// it were the camera turned to it (ScreenProjection::facing_size_px; its motion is not seen, so it has none). In
+  /// [0, 1]; 0, the default, gives it nothing, as the paper's view terms do. Above 0, a cloth the camera has just
+  /// passed, or may turn to, keeps detail by its distance, so it does not come into view from its coarsest cut with
+  /// the motion of a coarse cloth (docs/investigations/unseen-detail.md).
+  double view_offscreen_share = 0.0;
   /// Per body, or one budget for a scene of many bodies (a suite's scene.bodies; docs/design.md, "Scenes of many
   /// bodies"). Body: every single-cloth run, bit for bit.
   BudgetScope budget_scope = BudgetScope::kBody;

@@ -30,11 +30,12 @@ namespace {
 Eigen::Vector3d vec(const std::array<float, 3>& a) { return {a[0], a[1], a[2]}; }
 
 /// How much of a detail the spectator sees in simulated node i: its block's side on the image, over detail_px,
-/// capped at 1.
+/// capped at 1. `facing`: as it would look were the camera turned to it (a node the spectator does not see now).
 double apparent_detail(const CutSnapshot& snapshot, std::size_t i, const ScreenProjection& view, double leaf_spacing,
-                       double detail_px) {
+                       double detail_px, bool facing = false) {
   const double side = block_side(*snapshot.cut.tree, snapshot.cut.tree_of[i], leaf_spacing);
-  return std::min(1.0, view.apparent_size_px(vec(snapshot.position[i]), side) / detail_px);
+  const Eigen::Vector3d x = vec(snapshot.position[i]);
+  return std::min(1.0, (facing ? view.facing_size_px(x, side) : view.apparent_size_px(x, side)) / detail_px);
 }
 }  // namespace
 
@@ -148,8 +149,12 @@ void finish_saliency(const CutSnapshot& snapshot, const FeedbackSettings& settin
     if (settings.illumination && s > 0) s *= lambert_factor(snapshot, i, settings.light_direction);
     if (!snapshot.contact.empty() && snapshot.contact[i]) s = std::max(s, settings.contact_saliency);
     // What the spectator cannot see, out of view or hidden by the body's surface, gets the lowest saliency, contact
-    // included.
-    if (view && (!view->project(vec(snapshot.position[i])).in_view || (!seen.empty() && !seen[i]))) s = 0;
+    // included: nothing, or with view_offscreen_share its share of what its size would be worth in view.
+    if (view && (!view->project(vec(snapshot.position[i])).in_view || (!seen.empty() && !seen[i])))
+      s = settings.view_offscreen_share > 0 && snapshot.cut.committed(snapshot.cut.tree_of[i])
+              ? settings.view_offscreen_share *
+                    apparent_detail(snapshot, i, *view, leaf_spacing, settings.view_detail_px, /*facing=*/true)
+              : 0.0;
     motion[i] = static_cast<float>(s);
   }
 }

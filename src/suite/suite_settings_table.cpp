@@ -189,6 +189,8 @@ constexpr SuiteSetting kSettings[] = {
      number_range(kPositive), 27, false, Written::kWithView},
     {"feedback.view_static_share", setting_member<&Suite::feedback, &FeedbackSettings::view_static_share>(),
      number_range(kUnit), 28, false, Written::kWithView},
+    {"feedback.view_offscreen_share", setting_member<&Suite::feedback, &FeedbackSettings::view_offscreen_share>(),
+     number_range(kUnit), kNoAxis, false, Written::kUnlessDefault},
     {"feedback.budget_scope", setting_member<&Suite::feedback, &FeedbackSettings::budget_scope>(),
      choice_range(kBudgetScopes), kNoAxis, false, Written::kUnlessDefault},
 };

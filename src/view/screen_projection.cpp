@@ -56,6 +56,11 @@ double ScreenProjection::apparent_size_px(const Eigen::Vector3d& x, double lengt
   return z < kNearPlane ? 0.0 : focal_px_ * length / z;
 }
 
+double ScreenProjection::facing_size_px(const Eigen::Vector3d& x, double length) const {
+  const double distance = (x - eye_).norm();
+  return distance < kNearPlane ? 0.0 : focal_px_ * length / distance;
+}
+
 double ScreenProjection::diagonal_px() const { return std::sqrt(width_ * width_ + height_ * height_); }
 
 double ScreenProjection::displacement_px(const Eigen::Vector3d& x, const ScreenPoint& seen_in_view) const {

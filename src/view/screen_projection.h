@@ -40,6 +40,9 @@ class ScreenProjection {
   /// How long a segment of `length` metres at `x`, across the line of sight, appears on the image, pixels. 0 at or
   /// behind the near plane.
   double apparent_size_px(const Eigen::Vector3d& x, double length) const;
+  /// The same were the camera turned to look at x (the length over its distance from the eye, anywhere around it):
+  /// how large something out of view or behind the camera would look once the camera turns to it.
+  double facing_size_px(const Eigen::Vector3d& x, double length) const;
 
   /// Visual angle of one pixel at the image's centre, degrees: turns pixel speeds into the retinal velocities of
   /// the perception literature (Yee, Pattanaik and Greenberg 2001).

@@ -176,6 +176,29 @@ TEST(SaliencyView, TheStaticShareWeighsApparentSizeAgainstMotion) {
   }
 }
 
+TEST(SaliencyView, WhatIsUnseenKeepsItsShareOfHowLargeItWouldLook) {
+  Field f;
+  f.set(4 * 9 + 1, btVector3(0, -5, 0));  // x = -3: out of view, moving (unseen motion counts for nothing)
+  f.take(true);
+  const ScreenProjection view = looking_down();
+  FeedbackSettings settings;
+  settings.view = true;
+  settings.view_detail_px = 1e4;  // nothing reaches the cap: every worth is in proportion to its size
+  settings.view_offscreen_share = 0.25;
+  const std::vector<float> s = compute_saliency(f.snapshot, settings, &view);
+  // Out of view, the columns x = -4 .. -1: a quarter of the block's size facing the camera, over view_detail_px.
+  const LodTree& tree = *f.snapshot.cut.tree;
+  const double side = block_side(tree, f.snapshot.cut.tree_of[4 * 9 + 1], grid_spacing(tree));
+  const Eigen::Vector3d x(f.snapshot.position[4 * 9 + 1][0], f.snapshot.position[4 * 9 + 1][1],
+                          f.snapshot.position[4 * 9 + 1][2]);
+  EXPECT_NEAR(s[4 * 9 + 1], 0.25 * view.facing_size_px(x, side) / 1e4, 1e-7);
+  EXPECT_GT(s[4 * 9 + 1], 0.0f);
+  EXPECT_GT(s[4 * 9 + 1], s[4 * 9 + 0]) << "nearer the camera, it would look larger";
+  EXPECT_GT(s[4 * 9 + 6], s[4 * 9 + 1]) << "seen, the same block is worth more";
+  settings.view_offscreen_share = 0;  // the default: nothing, as before
+  EXPECT_EQ(compute_saliency(f.snapshot, settings, &view)[4 * 9 + 1], 0.0f);
+}
+
 TEST(Evaluator, RanksRefinesHighFirstAndCoarsensLowFirst) {
   Field f(17);
   f.take();
