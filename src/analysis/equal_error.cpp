@@ -13,6 +13,12 @@ void sort_by_time(std::vector<CurvePoint>& curve) {
                    [](const CurvePoint& a, const CurvePoint& b) { return a.time_ms < b.time_ms; });
 }
 
+/// y at x on the line through (x0, y0) and (x1, y1) in log-log; x0 != x1, every value positive.
+double log_log_between(double x0, double y0, double x1, double y1, double x) {
+  const double t = (std::log(x) - std::log(x0)) / (std::log(x1) - std::log(x0));
+  return std::exp(std::log(y0) + t * (std::log(y1) - std::log(y0)));
+}
+
 }  // namespace
 
 const char* equal_error_status_name(EqualErrorStatus status) {
@@ -37,9 +43,7 @@ TimeAtError time_at_error(std::vector<CurvePoint> curve, double error) {
     const CurvePoint& at = curve[i];
     if (at.error > error) continue;
     // above.error > error >= at.error, so the slope's denominator is not 0.
-    const double t = (std::log(error) - std::log(above.error)) / (std::log(at.error) - std::log(above.error));
-    return {EqualErrorStatus::kInterpolated,
-            std::exp(std::log(above.time_ms) + t * (std::log(at.time_ms) - std::log(above.time_ms)))};
+    return {EqualErrorStatus::kInterpolated, log_log_between(above.error, above.time_ms, at.error, at.time_ms, error)};
   }
   return {EqualErrorStatus::kNotReached, 0.0};
 }
@@ -49,6 +53,24 @@ bool is_monotone(std::vector<CurvePoint> curve) {
   for (std::size_t i = 1; i < curve.size(); ++i)
     if (curve[i].error > curve[i - 1].error) return false;
   return true;
+}
+
+std::optional<double> error_at_nodes(std::vector<NodesPoint> curve, double nodes) {
+  if (curve.empty()) throw std::invalid_argument("error_at_nodes: an empty curve");
+  if (!(nodes > 0)) throw std::invalid_argument("error_at_nodes: the node count must be positive");
+  for (const NodesPoint& p : curve)
+    if (!(p.nodes > 0) || !(p.error > 0) || !std::isfinite(p.nodes) || !std::isfinite(p.error))
+      throw std::invalid_argument("error_at_nodes: a point's nodes and error must be positive and finite");
+  std::sort(curve.begin(), curve.end(), [](const NodesPoint& a, const NodesPoint& b) { return a.nodes < b.nodes; });
+  for (std::size_t i = 1; i < curve.size(); ++i)
+    if (curve[i].nodes == curve[i - 1].nodes)
+      throw std::invalid_argument("error_at_nodes: two points of the same node count");
+  for (std::size_t i = 0; i < curve.size(); ++i) {
+    if (curve[i].nodes == nodes) return curve[i].error;
+    if (i > 0 && curve[i - 1].nodes < nodes && nodes < curve[i].nodes)
+      return log_log_between(curve[i - 1].nodes, curve[i - 1].error, curve[i].nodes, curve[i].error, nodes);
+  }
+  return std::nullopt;
 }
 
 }  // namespace tcsb

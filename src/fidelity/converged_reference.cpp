@@ -24,7 +24,7 @@ struct Runner {
   std::vector<Eigen::Vector3d> x;
 };
 
-/// Seed of the perturbation (any fixed value; the noise floor's own is in fidelity_runner.cpp).
+/// Seed of the perturbation (any fixed value; the noise floor's own is in fidelity_floors.h).
 constexpr std::uint64_t kPerturbationSeed = 0x737562737465ULL;
 
 SubstepDoubling measure_doubling(const Suite& suite, const Net& net, std::size_t net_index, int substeps) {

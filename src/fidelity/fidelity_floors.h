@@ -26,6 +26,10 @@ namespace tcsb {
 /// Relative size of the noise floor's perturbation: a fraction of the net's extent.
 inline constexpr double kNoiseFloorPerturbation = 1e-6;
 
+/// Seed of the noise floor's perturbation of net (or scene body) 0; net k uses this + k. Any fixed value serves, it
+/// only has to be the same on every run.
+inline constexpr std::uint64_t kNoiseFloorSeed = 0x6e6f697365ULL;
+
 /// Moves every node of `body` (position and previous position, pinned ones included) by a deterministic
 /// pseudo-random offset, each coordinate uniform in [-amplitude, amplitude], drawn from `seed` (splitmix64, so the
 /// same body and seed get the same offsets on every platform). Amplitude 0 leaves the body bit for bit unchanged.

@@ -273,10 +273,6 @@ class Track {
   std::vector<double> scratch_;
 };
 
-/// Seed of the noise floor's perturbation on net 0 (net k uses this + k): any fixed value serves, it only has to be
-/// the same on every run.
-constexpr std::uint64_t kNoiseFloorSeed = 0x6e6f697365ULL;
-
 /// The floors of one net (fidelity/fidelity_floors.h): a perturbed copy of the reference stepped in lockstep with it,
 /// and the reference's recorded frames resampled through each budget's uniform rest grid, both compared with the
 /// reference's frames of the measured steps by the subjects' metric.

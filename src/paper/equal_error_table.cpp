@@ -14,36 +14,31 @@ namespace {
 /// Resamples per interval: enough that a 95 % percentile interval moves by less than its last digit shown.
 constexpr int kBootstrapResamples = 1000;
 
-/// A body of one of the curves and its per-block step times.
-struct TimedPoint {
-  EqualErrorPoint point;
-  const std::vector<double>* blocks = nullptr;
-};
-
 double median_of(const std::vector<double>& blocks, const std::vector<std::size_t>& pick, std::vector<double>& tmp) {
   tmp.clear();
   for (const std::size_t k : pick) tmp.push_back(blocks[k]);
   return median(tmp);
 }
 
-std::vector<CurvePoint> curve_of(const std::vector<TimedPoint>& points, const std::vector<double>& times) {
+std::vector<CurvePoint> curve_of(const std::vector<TimedCurvePoint>& points, const std::vector<double>& times) {
   std::vector<CurvePoint> curve;
   for (std::size_t i = 0; i < points.size(); ++i) curve.push_back({times[i], points[i].point.error});
   return curve;
 }
 
-std::vector<EqualErrorPoint> points_of(std::vector<TimedPoint> points) {
-  std::stable_sort(points.begin(), points.end(),
-                   [](const TimedPoint& a, const TimedPoint& b) { return a.point.time_ms < b.point.time_ms; });
+std::vector<EqualErrorPoint> points_of(std::vector<TimedCurvePoint> points) {
+  std::stable_sort(points.begin(), points.end(), [](const TimedCurvePoint& a, const TimedCurvePoint& b) {
+    return a.point.time_ms < b.point.time_ms;
+  });
   std::vector<EqualErrorPoint> out;
-  for (const TimedPoint& p : points) out.push_back(p.point);
+  for (const TimedCurvePoint& p : points) out.push_back(p.point);
   return out;
 }
 
 /// The curves of one net and the interval's resampling of their blocks.
 class NetCurves {
  public:
-  NetCurves(std::vector<TimedPoint> tcsb, std::vector<TimedPoint> grid, std::vector<TimedPoint> full,
+  NetCurves(std::vector<TimedCurvePoint> tcsb, std::vector<TimedCurvePoint> grid, std::vector<TimedCurvePoint> full,
             std::size_t blocks)
       : tcsb_(std::move(tcsb)), grid_(std::move(grid)), full_(std::move(full)), blocks_(blocks) {}
 
@@ -59,9 +54,9 @@ class NetCurves {
     std::vector<double> tmp;
     for (int b = 0; b < kBootstrapResamples; ++b) {
       const std::vector<std::size_t> pick = resample_indices(blocks_, rng);
-      const auto resampled = [&](const std::vector<TimedPoint>& points) {
+      const auto resampled = [&](const std::vector<TimedCurvePoint>& points) {
         std::vector<double> t;
-        for (const TimedPoint& p : points) t.push_back(median_of(*p.blocks, pick, tmp));
+        for (const TimedCurvePoint& p : points) t.push_back(median_of(*p.blocks, pick, tmp));
         return t;
       };
       const std::vector<double> tcsb = resampled(tcsb_), grid = resampled(grid_), full = resampled(full_);
@@ -89,9 +84,9 @@ class NetCurves {
   }
 
  private:
-  static std::vector<double> times(const std::vector<TimedPoint>& points) {
+  static std::vector<double> times(const std::vector<TimedCurvePoint>& points) {
     std::vector<double> t;
-    for (const TimedPoint& p : points) t.push_back(p.point.time_ms);
+    for (const TimedCurvePoint& p : points) t.push_back(p.point.time_ms);
     return t;
   }
   /// The speed-up of a replicate: only where the rival's curve is interpolated (a bound or no value is no sample).
@@ -99,7 +94,7 @@ class NetCurves {
     if (at.status != EqualErrorStatus::kInterpolated || !(tcsb_ms > 0)) return std::numeric_limits<double>::quiet_NaN();
     return at.time_ms / tcsb_ms;
   }
-  static EqualErrorRival rival(const std::vector<TimedPoint>& curve, const EqualErrorPoint& tcsb,
+  static EqualErrorRival rival(const std::vector<TimedCurvePoint>& curve, const EqualErrorPoint& tcsb,
                                std::vector<double> replicates) {
     const TimeAtError at = time_at_error(curve_of(curve, times(curve)), tcsb.error);
     EqualErrorRival r;
@@ -111,7 +106,7 @@ class NetCurves {
     return r;
   }
 
-  std::vector<TimedPoint> tcsb_, grid_, full_;
+  std::vector<TimedCurvePoint> tcsb_, grid_, full_;
   std::size_t blocks_;
 };
 
@@ -141,26 +136,26 @@ EqualErrorNet net_table(const FidelityResult& result, const FidelityFloors& floo
     net.missing = "the reference's blocks were not timed (it diverged, or the result predates block times)";
     return net;
   }
-  std::vector<TimedPoint> tcsb, grid, full;
-  const TimedPoint reference{{.method = "reference", .time_ms = median(reference_blocks), .error = *floor},
-                             &reference_blocks};
+  std::vector<TimedCurvePoint> tcsb, grid, full;
+  const TimedCurvePoint reference{{.method = "reference", .time_ms = median(reference_blocks), .error = *floor},
+                                  &reference_blocks};
   for (const FidelityCase& c : result.cases) {
     if (c.net != floors.net || c.status != "ok" || c.block_step_ms.size() != reference_blocks.size()) continue;
     const std::optional<double> error = case_error(c, camera);
     if (!error) continue;
     // Below the noise floor an error is not resolved; the floor keeps the log-log curves defined.
-    TimedPoint p{{.method = c.subject.method,
-                  .compression = c.subject.body.compression,
-                  .solver_divisor = c.subject.body.solver_divisor,
-                  .nodes = c.mean_nodes,
-                  .time_ms = median(c.block_step_ms),
-                  .error = std::max(*error, *floor)},
-                 &c.block_step_ms};
+    TimedCurvePoint p{{.method = c.subject.method,
+                       .compression = c.subject.body.compression,
+                       .solver_divisor = c.subject.body.solver_divisor,
+                       .nodes = c.mean_nodes,
+                       .time_ms = median(c.block_step_ms),
+                       .error = std::max(*error, *floor)},
+                      &c.block_step_ms};
     if (c.subject.method == "tcsb" && c.subject.body.compression < 1.0) tcsb.push_back(p);
     if (c.subject.method == "uniform_grid") grid.push_back(p);
     if (c.subject.method == "full_resolution") full.push_back(p);
   }
-  TimedPoint top = reference;
+  TimedCurvePoint top = reference;
   if (!full.empty()) top.point.nodes = full.front().point.nodes;
   grid.push_back(top);
   full.push_back(top);
@@ -171,11 +166,16 @@ EqualErrorNet net_table(const FidelityResult& result, const FidelityFloors& floo
   else if (full.size() < 2)
     net.missing = "no full-resolution body at fewer passes ran to the end (fidelity.curves.solver_divisors)";
   if (!net.missing.empty()) return net;
-  NetCurves(std::move(tcsb), std::move(grid), std::move(full), reference_blocks.size()).fill(net, seed);
+  fill_equal_error(std::move(tcsb), std::move(grid), std::move(full), reference_blocks.size(), seed, net);
   return net;
 }
 
 }  // namespace
+
+void fill_equal_error(std::vector<TimedCurvePoint> tcsb, std::vector<TimedCurvePoint> grid,
+                      std::vector<TimedCurvePoint> full, std::size_t blocks, std::uint64_t seed, EqualErrorNet& out) {
+  NetCurves(std::move(tcsb), std::move(grid), std::move(full), blocks).fill(out, seed);
+}
 
 std::vector<EqualErrorNet> equal_error_table(const FidelityResult& result, std::uint64_t seed) {
   const bool curves = std::any_of(result.cases.begin(), result.cases.end(),

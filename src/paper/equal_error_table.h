@@ -39,7 +39,7 @@ struct EqualErrorRow {
   double nodes = 0;
   double time_ms = 0;
   double error = 0;
-  EqualErrorRival grid;  ///< the uniform grids' curve (full resolution as its finest point)
+  EqualErrorRival grid;  ///< the uniform grids' curve (the world pass: discrete LOD's), the reference its finest point
   EqualErrorRival full;  ///< full resolution at fewer passes (the reference as its finest point)
 };
 
@@ -59,5 +59,18 @@ struct EqualErrorNet {
 
 /// Per net (the result's order) when the pass ran curves; empty otherwise. `seed` drives the bootstrap.
 std::vector<EqualErrorNet> equal_error_table(const FidelityResult& result, std::uint64_t seed = 1);
+
+/// A body of one of the curves and its per-block step times, which the interval resamples.
+struct TimedCurvePoint {
+  EqualErrorPoint point;
+  const std::vector<double>* blocks = nullptr;  ///< one time per block of the pass, the same blocks for every point
+};
+
+/// Fills `out`'s curves, their monotonicity and its rows from three curves of one pass: TC-SB's, the grid-like
+/// rival's and full resolution's at fewer passes, each rival with the reference as its finest point, every point's
+/// blocks as many as `blocks`. What the fidelity pass's nets and the world pass's scene (paper/world_equal_error.h)
+/// share.
+void fill_equal_error(std::vector<TimedCurvePoint> tcsb, std::vector<TimedCurvePoint> grid,
+                      std::vector<TimedCurvePoint> full, std::size_t blocks, std::uint64_t seed, EqualErrorNet& out);
 
 }  // namespace tcsb

@@ -98,6 +98,27 @@ std::string curve_text(const ojson& points, const std::string& unit) {
   return out;
 }
 
+/// One net's (or the world pass's scene's) table and curves; `grid_rival` names the grid-like rival's key.
+std::string net_equal_error_text(const ojson& net, const std::string& grid_rival, const std::string& grid_title) {
+  const std::string unit = unit_of(net);
+  std::string out = "\n";  // (one append per piece: GCC 12 -Wrestrict false positive on a chain starting at a literal)
+  out += text_of(at(net, "net")) + " (error: " + unit + ", noise floor " + markdown_number(at(net, "floor"), 3) + "):";
+  if (at(net, "missing").is_string()) return out + " no speed-up: " + text_of(at(net, "missing")) + ".\n";
+  out += "\n\n" + table({{"budget", [](const ojson& r) { return compression_text(at(r, "compression")); }},
+                         field("N", "N"),
+                         field("TC-SB ms", "time_ms", 3),
+                         field("TC-SB " + unit, "error", 3),
+                         {grid_title, [grid_rival](const ojson& r) { return speedup_text(at(r, grid_rival)); }},
+                         {"vs full resolution", [](const ojson& r) { return speedup_text(at(r, "full_resolution")); }}},
+                        at(net, "rows"));
+  const ojson& curves = at(net, "curves");
+  const ojson& monotone = at(curves, "monotone");
+  for (const std::string& name : {std::string("tcsb"), grid_rival, std::string("full_resolution")})
+    out += "\n- curve " + name + (at(monotone, name) == false ? " (not monotone)" : "") + ": " +
+           curve_text(at(curves, name), unit);
+  return out + "\n";
+}
+
 }  // namespace
 
 std::string equal_error_section(const ojson& doc) {
@@ -109,32 +130,33 @@ std::string equal_error_section(const ojson& doc) {
       "TC-SB's step; 95 % intervals over the pass's interleaved blocks. Uniform grid: the grids of every budget "
       "with full resolution as the finest; full resolution: the suite's passes a step divided by 2, 4 and 8, with "
       "the reference as the finest (its error is the noise floor).\n";
-  for (const ojson& net : at(block, "nets")) {
-    const std::string unit = unit_of(net);
-    out += "\n";  // (one append per piece: GCC 12 -Wrestrict false positive on a chain starting at a literal)
-    out +=
-        text_of(at(net, "net")) + " (error: " + unit + ", noise floor " + markdown_number(at(net, "floor"), 3) + "):";
-    if (at(net, "missing").is_string()) {
-      out += " no speed-up: " + text_of(at(net, "missing")) + ".\n";
-      continue;
-    }
-    out +=
-        "\n\n" + table({{"budget", [](const ojson& r) { return compression_text(at(r, "compression")); }},
-                        field("N", "N"),
-                        field("TC-SB ms", "time_ms", 3),
-                        field("TC-SB " + unit, "error", 3),
-                        {"vs uniform grid", [](const ojson& r) { return speedup_text(at(r, "uniform_grid")); }},
-                        {"vs full resolution", [](const ojson& r) { return speedup_text(at(r, "full_resolution")); }}},
-                       at(net, "rows"));
-    const ojson& curves = at(net, "curves");
-    const ojson& monotone = at(curves, "monotone");
-    for (const char* name : {"tcsb", "uniform_grid", "full_resolution"}) {
-      out += "\n- curve " + std::string(name) + (at(monotone, name) == false ? " (not monotone)" : "") + ": " +
-             curve_text(at(curves, name), unit);
-    }
-    out += "\n";
-  }
+  for (const ojson& net : at(block, "nets")) out += net_equal_error_text(net, "uniform_grid", "vs uniform grid");
   return out;
+}
+
+std::string world_equal_error_section(const ojson& doc) {
+  const ojson& block = at(at(doc, "world"), "equal_error");
+  if (!block.is_object()) return "";
+  std::string out =
+      "\n#### Many bodies: speed-up at equal error\n\nFor the p95 px TC-SB under one world budget reaches at each "
+      "budget, the step time of the whole scene each rival needs to reach it on its curve of p95 px against step time "
+      "(log-log interpolation, never extrapolated), as a ratio to TC-SB's; 95 % intervals over the pass's "
+      "interleaved blocks. Discrete LOD: its fitted levels at every budget; full resolution: the suite's passes a "
+      "step divided by each divisor; the reference, at the noise floor, is both rivals' finest point.\n";
+  out += net_equal_error_text(at(block, "scene"), "discrete_lod", "vs discrete LOD");
+  out += "\nThe world budget against per-body budgets at the same total node count: per-body TC-SB's p95 px at the "
+         "world budget's mean nodes, log-log between its two budgets around them (\"outside\": its budgets do not "
+         "reach that count); above 1, the world budget errs less.\n\n";
+  return out + table({{"budget", [](const ojson& r) { return compression_text(at(r, "budget")); }},
+                      field("N", "N"),
+                      field("world p95 px", "tcsb_world_p95_px", 3),
+                      {"per-body p95 px",
+                       [](const ojson& r) {
+                         const std::string v = markdown_number(at(r, "tcsb_body_p95_px"), 3);
+                         return v.empty() ? std::string("outside") : v;
+                       }},
+                      field("per-body / world", "body_over_world", 3)},
+                     at(block, "same_nodes"));
 }
 
 std::string HeadlineRowFormat::render_native(const ojson& doc) const {

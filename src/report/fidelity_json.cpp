@@ -2,6 +2,7 @@
 
 #include "fidelity/fidelity_result.h"
 #include "paper/fidelity_tables.h"
+#include "report/equal_error_json.h"
 #include "report/json_number.h"
 
 namespace tcsb {
@@ -33,11 +34,6 @@ ojson claim_json(const Claim& c) {
           {"verdict", verdict_name(verdict(c))}};
 }
 
-/// A row or case of the full-resolution curve names its divisor; no other writes it (older results stay as they were).
-void add_solver_divisor(const std::string& method, int divisor, ojson& out) {
-  if (method == "full_resolution") out["solver_divisor"] = divisor;
-}
-
 ojson row_json(const FidelityRow& r) {
   ojson out = {{"method", r.method},
                {"compression", json_number(r.compression)},
@@ -63,51 +59,6 @@ ojson numbers_json(const std::vector<double>& values) {
   ojson out = ojson::array();
   for (const double v : values) out.push_back(json_number(v));
   return out;
-}
-
-ojson equal_error_point_json(const EqualErrorPoint& p) {
-  ojson out = {{"method", p.method},
-               {"compression", json_number(p.compression)},
-               {"N", json_number(p.nodes)},
-               {"time_ms", json_number(p.time_ms)},
-               {"error", json_number(p.error)}};
-  add_solver_divisor(p.method, p.solver_divisor, out);
-  return out;
-}
-
-ojson rival_json(const EqualErrorRival& r) {
-  return {{"status", equal_error_status_name(r.status)},
-          {"time_ms", json_number(r.time_ms)},
-          {"speedup", json_number(r.speedup)},
-          {"interval",
-           r.interval ? ojson{json_number(r.interval->low), json_number(r.interval->high)} : ojson(nullptr)}};
-}
-
-ojson equal_error_json(const EqualErrorNet& n) {
-  const auto curve = [](const std::vector<EqualErrorPoint>& points) {
-    ojson out = ojson::array();
-    for (const EqualErrorPoint& p : points) out.push_back(equal_error_point_json(p));
-    return out;
-  };
-  ojson rows = ojson::array();
-  for (const EqualErrorRow& r : n.rows)
-    rows.push_back({{"compression", json_number(r.compression)},
-                    {"N", json_number(r.nodes)},
-                    {"time_ms", json_number(r.time_ms)},
-                    {"error", json_number(r.error)},
-                    {"uniform_grid", rival_json(r.grid)},
-                    {"full_resolution", rival_json(r.full)}});
-  return {{"net", n.net},
-          {"metric", n.metric},
-          {"floor", json_number(n.floor)},
-          {"missing", n.missing.empty() ? ojson(nullptr) : ojson(n.missing)},
-          {"curves",
-           {{"tcsb", curve(n.tcsb)},
-            {"uniform_grid", curve(n.grid)},
-            {"full_resolution", curve(n.full)},
-            {"monotone",
-             {{"tcsb", n.tcsb_monotone}, {"uniform_grid", n.grid_monotone}, {"full_resolution", n.full_monotone}}}}},
-          {"rows", std::move(rows)}};
 }
 
 ojson case_json(const FidelityCase& c) {
@@ -231,7 +182,7 @@ void add_fidelity_json(const RunResult& result, const RunTables& tables, nlohman
     doc["fidelity"]["curves"] = {{"budgets", numbers_json(settings.curves->budgets)},
                                  {"solver_divisors", settings.curves->solver_divisors}};
     ojson equal_error = ojson::array();
-    for (const EqualErrorNet& n : computed.equal_error) equal_error.push_back(equal_error_json(n));
+    for (const EqualErrorNet& n : computed.equal_error) equal_error.push_back(equal_error_json(n, "uniform_grid"));
     doc["fidelity"]["equal_error"] = {
         {"definition",
          "per net, for the error TC-SB reaches at each budget (metric: p95_px with a camera, the mean over the "

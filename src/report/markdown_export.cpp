@@ -484,7 +484,12 @@ std::string world_section(const ojson& doc) {
                     "the pixel error over every point of every body the camera sees, mean over steps; time / full: the "
                     "median over blocks of the step's ratio to full resolution's; pop: the largest jump on the image "
                     "where a body changed its resolution.\n";
-  const std::vector<Column> columns{field("method", "method"),
+  const std::vector<Column> columns{{"method",
+                                     [](const ojson& row) {
+                                       const ojson& divisor = at(row, "solver_divisor");
+                                       return text_of(at(row, "method")) +
+                                              (divisor.is_number() ? " ÷" + text_of(divisor) : std::string());
+                                     }},
                                     {"budget", [](const ojson& row) { return compression_text(at(row, "budget")); }},
                                     field("mean nodes", "mean_nodes"),
                                     field("step ms", "step_ms"),
@@ -493,7 +498,7 @@ std::string world_section(const ojson& doc) {
                                     field("pop max px", "popping_px"),
                                     field("resolution changes", "resolution_changes"),
                                     field("status", "status")};
-  return out + "\n" + table(columns, methods);
+  return out + "\n" + table(columns, methods) + world_equal_error_section(doc);
 }
 
 /// A run of a suite with axes: each configuration's Table 2, Table 1 and fits under a line naming it (the run-wide

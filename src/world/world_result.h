@@ -10,9 +10,12 @@ namespace tcsb {
 
 /// One method over the whole scene.
 struct WorldMethodResult {
-  /// "full_resolution" (also the reference), "tcsb_world", "tcsb_body" or "discrete_lod".
+  /// "full_resolution" (the first row, solver_divisor 1, is the reference), "tcsb_world", "tcsb_body",
+  /// "discrete_lod", or with fidelity.curves "noise_floor": the reference started perturbed, whose error is what no
+  /// method can be measured more finely than (fidelity/fidelity_floors.h).
   std::string method;
   double budget = 1.0;        ///< node budget as a fraction of the scene's nodes (1 for full resolution)
+  int solver_divisor = 1;     ///< full resolution on the curve of fewer passes: the suite's passes a step divided
   std::string status = "ok";  ///< "ok" or "diverged"
   std::optional<int> diverged_step;
   std::string diverged_reason;

@@ -12,6 +12,7 @@
 #include "case/step_clock.h"
 #include "feedback/world_budget.h"
 #include "fidelity/discrete_lod.h"
+#include "fidelity/fidelity_floors.h"
 #include "fidelity/grid_state_transfer.h"
 #include "fidelity/reconstruction.h"
 #include "fidelity/screen_error.h"
@@ -354,6 +355,36 @@ std::vector<double> lod_level_compressions(const Net& net, std::vector<int>& lev
   return compressions;
 }
 
+/// The budgets every method but full resolution runs at: the suite's targets below 1 in the suite's order; with
+/// fidelity.curves, those and the curve budgets, ascending.
+std::vector<double> world_budgets(const Suite& suite) {
+  std::vector<double> budgets;
+  for (const double c : suite.compression)
+    if (c < 1.0) budgets.push_back(c);
+  if (!suite.fidelity.curves) return budgets;
+  budgets.insert(budgets.end(), suite.fidelity.curves->budgets.begin(), suite.fidelity.curves->budgets.end());
+  std::sort(budgets.begin(), budgets.end());
+  budgets.erase(std::unique(budgets.begin(), budgets.end()), budgets.end());
+  return budgets;
+}
+
+/// Every body plain at full resolution with the suite's passes divided by `solver_divisor`; with `perturbed`, each
+/// started perturbed as the fidelity pass's noise floor is (fidelity/fidelity_floors.h).
+std::unique_ptr<WorldTrack> full_resolution_track(const Suite& suite, const char* method, int solver_divisor,
+                                                  bool perturbed, const std::vector<std::shared_ptr<const Net>>& nets) {
+  auto track = std::make_unique<WorldTrack>(suite, method, 1.0, std::nullopt);
+  track->result.solver_divisor = solver_divisor;
+  for (std::size_t b = 0; b < nets.size(); ++b) {
+    BodySpec spec;
+    spec.kind = BodyKind::kPlain;
+    spec.solver_divisor = solver_divisor;
+    Body body = make_body(suite, spec, track->world(), nets[b], 0);
+    if (perturbed) perturb_positions(*body.bullet, kNoiseFloorPerturbation * nets[b]->extent(), kNoiseFloorSeed + b);
+    track->add(std::make_unique<FullResolutionMember>(std::move(body)), nets[b]);
+  }
+  return track;
+}
+
 }  // namespace
 
 WorldResult run_world(const Suite& suite) {
@@ -367,19 +398,12 @@ WorldResult run_world(const Suite& suite) {
   const int total = suite.warmup_steps + suite.steps;
 
   std::vector<std::unique_ptr<WorldTrack>> tracks;
-  auto reference = std::make_unique<WorldTrack>(suite, "full_resolution", 1.0, std::nullopt);
-  for (const auto& net : nets) {
-    BodySpec spec;
-    spec.kind = BodyKind::kPlain;
-    reference->add(std::make_unique<FullResolutionMember>(make_body(suite, spec, reference->world(), net, 0)), net);
-  }
-  tracks.push_back(std::move(reference));
+  tracks.push_back(full_resolution_track(suite, "full_resolution", 1, false, nets));
   std::vector<int> level_nodes;
   const std::vector<double> level_compressions = lod_level_compressions(*nets.front(), level_nodes);
   const std::vector<double> distances = camera_distances(suite, placed, total);
   const std::size_t first_measured = static_cast<std::size_t>(suite.warmup_steps) * nets.size();
-  for (const double c : suite.compression) {
-    if (!(c < 1.0)) continue;
+  for (const double c : world_budgets(suite)) {
     const int world_budget = static_cast<int>(std::llround(c * static_cast<double>(result.scene_nodes)));
     const auto add_tcsb = [&](const char* method, std::optional<int> shared) {
       auto track = std::make_unique<WorldTrack>(suite, method, c, shared);
@@ -411,6 +435,12 @@ WorldResult run_world(const Suite& suite) {
                  nets[b]);
     }
     tracks.push_back(std::move(track));
+  }
+  // The rivals' finest points and full resolution's curve of fewer passes (paper/world_equal_error.h).
+  if (const std::optional<FidelityCurves>& curves = suite.fidelity.curves) {
+    tracks.push_back(full_resolution_track(suite, "noise_floor", 1, true, nets));
+    for (const int d : curves->solver_divisors)
+      tracks.push_back(full_resolution_track(suite, "full_resolution", d, false, nets));
   }
 
   // Full resolution first in each block: the others are measured against the frames it records.

@@ -9,8 +9,11 @@
 //   discrete_lod     per body a few uniform grids (the net, then about a quarter of the nodes each level), switched
 //                    at distance thresholds fitted so the run's mean node count is the largest within the budget
 //                    (fidelity/discrete_lod.h), the state resampled onto the new grid at each switch
-// at each of the suite's compression targets below 1, a fraction of the scene's nodes. Errors are pixels on the
-// camera's image over every reference point it sees (with occlusion, any body may hide another).
+// at each of the suite's compression targets below 1, a fraction of the scene's nodes. With fidelity.curves, the
+// curves the speed-up at equal error is read from (paper/world_equal_error.h): those three methods at every curve
+// budget too, full resolution at the suite's passes divided by each divisor, and noise_floor, the reference started
+// perturbed as the fidelity pass's noise floor is (fidelity/fidelity_floors.h). Errors are pixels on the camera's
+// image over every reference point it sees (with occlusion, any body may hide another).
 #pragma once
 
 #include "suite/suite.h"

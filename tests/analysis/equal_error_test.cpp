@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <stdexcept>
 
 namespace tcsb {
@@ -48,6 +49,34 @@ TEST(EqualError, RefusesWhatALogCannotTake) {
   EXPECT_THROW(time_at_error({{1.0, 0.0}}, 1.0), std::invalid_argument);
   EXPECT_THROW(time_at_error({{0.0, 1.0}}, 1.0), std::invalid_argument);
   EXPECT_THROW(time_at_error({{1.0, 1.0}}, 0.0), std::invalid_argument);
+}
+
+TEST(ErrorAtNodes, InterpolatesInLogLogBetweenTheCountsAroundIt) {
+  // error = 1000 / nodes, a straight line in log-log: at 200 nodes exactly 5 (linear in nodes would give 6.25).
+  const std::vector<NodesPoint> curve{{400.0, 2.5}, {100.0, 10.0}};  // any order: sorted by nodes
+  const std::optional<double> at = error_at_nodes(curve, 200.0);
+  ASSERT_TRUE(at);
+  EXPECT_NEAR(*at, 5.0, 1e-12);
+  EXPECT_EQ(error_at_nodes(curve, 400.0), 2.5);  // on a point, its own error
+  EXPECT_EQ(error_at_nodes(curve, 100.0), 10.0);
+}
+
+TEST(ErrorAtNodes, NeverExtrapolatesAndReadsEachSegmentOnItsOwn) {
+  const std::vector<NodesPoint> curve{{100.0, 10.0}, {200.0, 4.0}, {400.0, 3.0}};
+  EXPECT_FALSE(error_at_nodes(curve, 99.0));
+  EXPECT_FALSE(error_at_nodes(curve, 401.0));
+  const std::optional<double> upper = error_at_nodes(curve, 300.0);  // between the second and the third point only
+  ASSERT_TRUE(upper);
+  EXPECT_GT(*upper, 3.0);
+  EXPECT_LT(*upper, 4.0);
+}
+
+TEST(ErrorAtNodes, RefusesWhatALogCannotTake) {
+  EXPECT_THROW(error_at_nodes({}, 1.0), std::invalid_argument);
+  EXPECT_THROW(error_at_nodes({{1.0, 0.0}}, 1.0), std::invalid_argument);
+  EXPECT_THROW(error_at_nodes({{0.0, 1.0}}, 1.0), std::invalid_argument);
+  EXPECT_THROW(error_at_nodes({{1.0, 1.0}}, 0.0), std::invalid_argument);
+  EXPECT_THROW(error_at_nodes({{1.0, 1.0}, {1.0, 2.0}}, 1.0), std::invalid_argument);
 }
 
 }  // namespace

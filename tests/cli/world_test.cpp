@@ -27,6 +27,41 @@ TEST_F(Cli, AWorldSuiteWritesTheWorldPass) {
   EXPECT_EQ(read.exit_code, 0) << read.err;
 }
 
+TEST_F(Cli, AWorldSuiteWithCurvesWritesItsSpeedUpAtEqualError) {
+  json j = testing::world_suite_json();
+  j["fidelity"] = {{"curves", {{"budgets", {0.25}}, {"solver_divisors", {2}}}}};
+  write_file(dir_ / "row.json", j.dump());
+  const Outcome o = tcsb("run row.json --out result.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(o.err.find("World pass, speed-up at equal error"), std::string::npos) << o.err;
+  const json doc = json::parse(read_file(dir_ / "result.json"));
+  // The reference, three methods at each of 0.25 and the suite's 0.5, the noise floor and full resolution at half
+  // the passes.
+  const json& methods = doc["world"]["methods"];
+  ASSERT_EQ(methods.size(), 9u);
+  EXPECT_EQ(methods[1]["budget"], 0.25);
+  EXPECT_EQ(methods[7]["method"], "noise_floor");
+  EXPECT_EQ(methods[8]["solver_divisor"], 2);
+  const json& equal_error = doc["world"]["equal_error"];
+  EXPECT_TRUE(equal_error["scene"]["missing"].is_null()) << equal_error["scene"]["missing"];
+  ASSERT_EQ(equal_error["scene"]["rows"].size(), 2u);
+  EXPECT_TRUE(equal_error["scene"]["rows"][0]["discrete_lod"]["status"].is_string());
+  ASSERT_EQ(equal_error["same_nodes"].size(), 2u);
+  const Outcome read = tcsb("export result.json --format markdown");  // read back through the schema
+  ASSERT_EQ(read.exit_code, 0) << read.err;
+  EXPECT_NE(read.out.find("Many bodies: speed-up at equal error"), std::string::npos);
+}
+
+TEST_F(Cli, AWorldCurveBudgetOfEveryNodeExitsTwoNamingTheField) {
+  json j = testing::world_suite_json();
+  j["fidelity"] = {{"curves", {{"budgets", {0.25, 1.0}}, {"solver_divisors", {2}}}}};
+  write_file(dir_ / "row.json", j.dump());
+  const Outcome o = tcsb("run row.json --quiet --out result.json");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_EQ(count_lines(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find("fidelity.curves.budgets[1]"), std::string::npos) << o.err;
+}
+
 TEST_F(Cli, OverlappingBodiesExitTwoNamingTheField) {
   json j = testing::world_suite_json();
   j["scene"]["bodies"][1]["position"] = {-2.5, 2.0, 0.0};
