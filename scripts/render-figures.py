@@ -29,8 +29,11 @@ The inputs, each the newest by name (file names start with the date; reverse C c
       figure left from one is stale)
 Usage: python3 scripts/render-figures.py --animate FRAMES GIF
                draws the same three views for every frame of FRAMES (a `tcsb frames` file of a scene with a camera)
-               into an animated GIF; not part of the manifest (its input is too large to keep). Exit 2 and one line
-               for a FRAMES that is not such a file, a GIF in no directory, or no matplotlib, before anything is drawn
+               into an animated GIF; of a scene of many bodies (`"kind": "world_frames"`), TC-SB left and discrete
+               LOD right, every body's cells through the camera coloured by LOD level. Not part of the manifest (the
+               input is too large to keep; results/figures/README.md has the commands of viewer_corner.gif and
+               street_flyby.gif). Exit 2 and one line for a FRAMES that is not such a file, a GIF in no directory, or
+               no matplotlib, before anything is drawn
 Figure 6's rows: plain Bullet (every grid node), TC-SB's surface reconstructed at every grid node, TC-SB's simulated
 links with those an operation is replacing (fading in or out, tethers, links about to go) in red. The figures show
 exactly the numbers in their input; PNG bytes depend on the matplotlib version, so the manifest records them only to
@@ -335,7 +338,12 @@ def animate(frames_path, gif):
     # The input and the output's place first, then matplotlib: bad input is exit 2 before anything is drawn.
     doc = read_json(frames_path, frames_path)
     if not isinstance(doc, dict) or "camera" not in doc or not isinstance(doc.get("frames"), list) or not doc["frames"]:
-        raise BadInput(f"{frames_path}: not frames of a scene with a camera (`tcsb frames --suite viewer-...`)")
+        raise BadInput(f"{frames_path}: not frames of a scene with a camera (`tcsb frames --suite viewer-...`, or of "
+                       f"a scene of many bodies, `--suite street`)")
+    world = doc.get("kind") == "world_frames"
+    if world and not all(isinstance(doc.get(key), list) and doc[key] for key in ("bodies", "methods")):
+        raise BadInput(f"{frames_path}: world frames without bodies or methods (`tcsb frames` of a scene of many "
+                       f"bodies writes both)")
     if not os.path.isdir(os.path.dirname(os.path.abspath(gif))):
         raise BadInput(f"{gif}: its directory does not exist")
     try:
@@ -346,6 +354,18 @@ def animate(frames_path, gif):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.animation import FuncAnimation, PillowWriter
+    try:
+        fig, draw, dpi = (world_animation if world else viewer_animation)(plt, doc)
+        FuncAnimation(fig, draw, frames=len(doc["frames"])).save(gif, writer=PillowWriter(fps=10), dpi=dpi)
+    except (KeyError, IndexError, TypeError, ValueError) as e:
+        raise BadInput(f"{frames_path}: a frame lacks what the views need ({type(e).__name__}: {e})")
+    plt.close(fig)
+    print(f"render-figures: {gif} from {frames_path}", file=sys.stderr)
+    return 0
+
+
+def viewer_animation(plt, doc):
+    """A viewer suite's frames: full resolution, TC-SB and the uniform grid side by side (figure_viewer's views)."""
     fig, axes = plt.subplots(1, 3, figsize=(10, 2.3))
 
     def draw(i):
@@ -357,13 +377,73 @@ def animate(frames_path, gif):
             ax.set_title(title, fontsize=8)
         axes[0].set_ylabel(f"{frame['step'] * doc['dt']:.2f} s", fontsize=8)
 
-    try:
-        FuncAnimation(fig, draw, frames=len(doc["frames"])).save(gif, writer=PillowWriter(fps=10), dpi=70)
-    except (KeyError, IndexError, TypeError, ValueError) as e:
-        raise BadInput(f"{frames_path}: a frame lacks what the views need ({type(e).__name__}: {e})")
-    plt.close(fig)
-    print(f"render-figures: {gif} from {frames_path}", file=sys.stderr)
-    return 0
+    return fig, draw, 70
+
+
+def world_level_labels(doc):
+    """The legend's levels: 0 to the coarsest any frame holds (at least discrete LOD's 0..3), each a quarter of the
+    nodes of the one before (TC-SB's level k: blocks of 2^k x 2^k grid points)."""
+    coarsest = max([3] + [max(body["levels"]) for frame in doc["frames"] for scene in frame["scenes"]
+                          for body in scene["bodies"]])
+    return ["LOD level 0: full resolution"] + [f"{k}: 1/{4 ** k} of the nodes" for k in range(1, coarsest + 1)]
+
+
+WORLD_METHOD_TITLES = {"tcsb_world": "TC-SB, one budget for the scene", "tcsb_body": "TC-SB, a budget per body",
+                       "discrete_lod": "discrete LOD, switched by distance"}
+
+
+def world_cells(doc, frame, scene, colours):
+    """Every body's grid cells on the frame's image, all bodies together: corners, depth and colour (its level's,
+    lightly shaded as shade() lights it). A cell takes the level of its first corner's block, the block holding it."""
+    import numpy as np
+    corners, depth, cell_colours = [], [], []
+    for body, data in zip(doc["bodies"], scene["bodies"]):
+        points = np.asarray(data["xyz"], float).reshape(-1, 3)
+        quads, c, d, brightness = shade(doc, frame, points, body["width"], body["height"])
+        rgba = colours[np.asarray(data["levels"], int)[quads[:, 0]]]
+        rgba[:, :3] *= 0.6 + 0.4 * brightness[:, None]  # lightly shaded: the level's colour stays readable
+        corners.append(c)
+        depth.append(d)
+        cell_colours.append(rgba)
+    return np.concatenate(corners), np.concatenate(depth), np.concatenate(cell_colours)
+
+
+def world_animation(plt, doc):
+    """A scene of many bodies' world frames: TC-SB left, discrete LOD right, each banner's cells through the camera
+    coloured by level, near banners hiding far ones (draw_cells' painter's order)."""
+    import numpy as np
+    from matplotlib import cm
+    from matplotlib.patches import Patch
+    width, height = doc["camera"]["image"]
+    methods = [m["method"] for m in doc["methods"]]
+    labels = world_level_labels(doc)
+    colours = cm.turbo(np.linspace(0.9, 0.15, len(labels)))  # fine warm, coarse cool
+    fig, axes = plt.subplots(1, len(methods), figsize=(9, 3.0))
+    fig.subplots_adjust(left=0.01, right=0.99, top=0.84, bottom=0.1, wspace=0.03)
+    fig.legend([Patch(color=c) for c in colours], labels, loc="lower center", ncol=len(colours), fontsize=7,
+               frameon=False)
+    budget = round(100 * doc["compression"])
+
+    def draw(i):
+        frame = doc["frames"][i]
+        for ax, method, scene in zip(axes, methods, frame["scenes"]):
+            ax.clear()
+            corners, depth, cell_colours = world_cells(doc, frame, scene, colours)
+            # Cells wholly off the image would only cost drawing time.
+            x, y = corners[..., 0], corners[..., 1]
+            seen = (x.max(axis=1) >= 0) & (x.min(axis=1) <= width) & (y.max(axis=1) >= 0) & (y.min(axis=1) <= height)
+            draw_cells(ax, corners[seen], depth[seen], cell_colours[seen], antialiased=False)
+            ax.set_facecolor("0.93")
+            ax.set_xlim(0, width)
+            ax.set_ylim(height, 0)
+            ax.set_aspect("equal")
+            ax.set_xticks([])
+            ax.set_yticks([])
+            ax.set_title(f"{WORLD_METHOD_TITLES.get(method, method)}: {scene['nodes']} nodes", fontsize=8)
+        fig.suptitle(f"{doc['suite']['name']}, {len(doc['bodies'])} bodies, budget {budget} % of the nodes: "
+                     f"{frame['step'] * doc['dt']:.2f} s", fontsize=9)
+
+    return fig, draw, 100
 
 
 def grid_quads(width, height):
@@ -412,13 +492,15 @@ def shade(doc, frame, points, width, height):
     return quads, corners, depth, brightness
 
 
-def draw_cells(ax, corners, depth, colors):
-    """The cells in front of the camera, far ones first (the painter's order)."""
+def draw_cells(ax, corners, depth, colors, antialiased=True):
+    """The cells in front of the camera, far ones first (the painter's order); without antialiasing no seams show
+    between neighbouring cells."""
     import numpy as np
     from matplotlib.collections import PolyCollection
     keep = np.isfinite(corners).all(axis=(1, 2)) & np.isfinite(depth)
     order = np.argsort(-depth[keep])
-    ax.add_collection(PolyCollection(corners[keep][order], facecolors=colors[keep][order], edgecolors="none"))
+    ax.add_collection(PolyCollection(corners[keep][order], facecolors=colors[keep][order], edgecolors="none",
+                                     antialiased=antialiased))
 
 
 def figure_shaded(plt, doc, png):

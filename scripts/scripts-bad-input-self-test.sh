@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The scripts answer bad arguments and bad input files with exit 2 and one line on stderr, before they build, run or
 # draw anything (issue 60): render-figures.py (--check on a kept run cut short, --animate without matplotlib or with a
-# file that is not frames, unknown arguments), error-concentration.py (malformed points, bad flags) and
+# file that is not frames or world frames without their bodies, unknown arguments), error-concentration.py (malformed points, bad flags) and
 # gate-error-rates.sh (run counts and environment settings it cannot use; a fake cmake first on PATH makes a script
 # that would build fail at once instead). Needs python3 only. Usage: bash scripts/scripts-bad-input-self-test.sh
 set -euo pipefail
@@ -50,6 +50,9 @@ expect_exit_2 "render-figures --animate, no such file" "missing.json" \
 echo '{"frames": []}' >"$scratch/not-frames.json"
 expect_exit_2 "render-figures --animate, frames without a camera" "not frames of a scene with a camera" \
   python3 "$root/scripts/render-figures.py" --animate "$scratch/not-frames.json" "$scratch/out.gif"
+echo '{"kind": "world_frames", "camera": {}, "frames": [{"step": 0}]}' >"$scratch/world-frames.json"
+expect_exit_2 "render-figures --animate, world frames without bodies" "world frames without bodies or methods" \
+  python3 "$root/scripts/render-figures.py" --animate "$scratch/world-frames.json" "$scratch/out.gif"
 expect_exit_2 "render-figures --animate, a GIF in no directory" "does not exist" \
   python3 "$root/scripts/render-figures.py" --animate "$scratch/frames.json" "$scratch/nowhere/out.gif"
 expect_exit_2 "render-figures, an unknown argument" "unknown arguments --chekc" \

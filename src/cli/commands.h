@@ -68,6 +68,7 @@ struct FramesArgs {
   std::string net;                           ///< a net of the suite by name; empty: its last
   std::optional<double> compression;         ///< TC-SB node budget; absent: the suite's smallest target
   std::vector<int> steps{30, 60, 120, 240};  ///< record after these steps (the cloth falls, then swings)
+  std::optional<int> every;                  ///< instead of steps: after every this many, from 0 to the run's end
   bool calibrated = false;                   ///< TC-SB with the suite's calibration (fidelity.calibration)
   std::string out;                           ///< output file; empty: stdout
 };
@@ -160,9 +161,11 @@ int compare_command(const CompareArgs& args);
 CLI::App* add_tax_command(CLI::App& app, TaxArgs& args);
 int tax_command(const TaxArgs& args);
 
-/// Registers `frames [--suite S] [--net N] [--compression C] [--steps A,B,...] [--out FILE]`.
+/// Registers `frames [--suite S] [--net N] [--compression C] [--steps A,B,... | --every K] [--calibrated]
+/// [--out FILE]`.
 CLI::App* add_frames_command(CLI::App& app, FramesArgs& args);
-/// Records the frames (fidelity/figure_frames.h) and writes their JSON (report/frames_json.h).
+/// Records the frames (fidelity/figure_frames.h; of a scene of many bodies, world/world_frames.h) and writes their
+/// JSON (report/frames_json.h, report/world_frames_json.h).
 int frames_command(const FramesArgs& args);
 
 /// Registers `export RESULT --format NAME [--out FILE]`.

@@ -53,6 +53,17 @@ void reconstruct_leaves(const TcSoftBody& body, std::vector<Eigen::Vector3d>& le
     throw std::logic_error("reconstruct_leaves: the committed cut does not cover the net");
 }
 
+void committed_leaf_levels(const TcSoftBody& body, std::vector<int>& levels) {
+  const LodTree& tree = body.tree();
+  levels.resize(tree.leaf_count());
+  for (int i = 0; i < body.node_count(); ++i) {
+    const TreeId id = body.tree_id(i);
+    if (!body.committed(id)) continue;  // leaving nodes belong to the old cut
+    const int level = tree.node(id).level;
+    for_each_leaf(tree, id, [&](TreeId leaf) { levels[static_cast<std::size_t>(leaf)] = level; });
+  }
+}
+
 void copy_positions(const btSoftBody& body, std::vector<Eigen::Vector3d>& out) {
   out.resize(static_cast<std::size_t>(body.m_nodes.size()));
   for (int i = 0; i < body.m_nodes.size(); ++i) out[static_cast<std::size_t>(i)] = to_eigen(body.m_nodes[i].m_x);

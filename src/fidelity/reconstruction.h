@@ -31,6 +31,11 @@ void fill_block(const LodTree& tree, TreeId id, const Eigen::Vector3d& x, const 
 /// net's node count. O(N + cut size x degree).
 void reconstruct_leaves(const TcSoftBody& body, std::vector<Eigen::Vector3d>& leaves);
 
+/// Every leaf's LOD level in a TC-SB body: the level of the committed cut's node whose block holds it, the node
+/// reconstruct_leaves() places it by (0 where the leaf itself is simulated). `levels` is resized to the net's node
+/// count. O(N).
+void committed_leaf_levels(const TcSoftBody& body, std::vector<int>& levels);
+
 /// Calls visit(leaf) for every leaf in the block of tree node `id` (the node itself when it is a leaf), row by row.
 template <class Visit>
 void for_each_leaf(const LodTree& tree, TreeId id, Visit visit) {

@@ -19,31 +19,46 @@ nlohmann::ordered_json points_json(const std::vector<Eigen::Vector3d>& points) {
   return out;
 }
 
+nlohmann::ordered_json xyz_json(const std::array<double, 3>& v) {
+  return nlohmann::ordered_json{json_number(v[0]), json_number(v[1]), json_number(v[2])};
+}
+
 }  // namespace
 
-nlohmann::ordered_json frames_json(const Suite& suite, const Context& context, const FigureFrames& f) {
+nlohmann::ordered_json frames_header(const Suite& suite, const Context& context, int schema_version, const char* kind) {
   nlohmann::ordered_json doc;
-  doc["schema_version"] = kFramesSchemaVersion;
+  doc["schema_version"] = schema_version;
   doc["tool"] = "tcsb";
-  doc["kind"] = "frames";
+  doc["kind"] = kind;
   doc["context"] = context_json(context, suite);
   doc["suite"] = suite_json(suite);
+  doc["dt"] = suite.world.dt;
+  return doc;
+}
+
+nlohmann::ordered_json camera_lens_json(const Camera& camera) {
+  return {{"up", xyz_json(camera.up)},
+          {"fov_deg", json_number(camera.fov_deg)},
+          {"image", {camera.width_px, camera.height_px}}};
+}
+
+nlohmann::ordered_json camera_pose_json(const Suite& suite, int steps) {
+  const CameraPose pose = suite.scene.camera->pose_at(static_cast<double>(steps) * suite.world.dt);
+  return {{"position", xyz_json(pose.position)}, {"target", xyz_json(pose.target)}};
+}
+
+nlohmann::ordered_json frames_json(const Suite& suite, const Context& context, const FigureFrames& f) {
+  nlohmann::ordered_json doc = frames_header(suite, context, kFramesSchemaVersion, "frames");
   doc["net"] = {{"name", f.net}, {"width", f.width}, {"height", f.height}, {"extent", json_number(f.extent)}};
   doc["compression"] = f.compression;
   doc["calibrated"] = f.calibrated;
-  doc["dt"] = suite.world.dt;
   doc["status"] = f.diverged_step ? "diverged" : "ok";
   doc["diverged_step"] = json_integer(f.diverged_step);
   doc["diverged_reason"] = f.diverged_reason;
-  const std::optional<Camera>& camera = suite.scene.camera;
-  const auto vector = [](const std::array<double, 3>& v) {
-    return nlohmann::ordered_json{json_number(v[0]), json_number(v[1]), json_number(v[2])};
-  };
+  const bool camera = suite.scene.camera.has_value();
   if (camera) {
     // The camera's lens and image; its pose per frame, where it stood after that many steps.
-    doc["camera"] = {{"up", vector(camera->up)},
-                     {"fov_deg", json_number(camera->fov_deg)},
-                     {"image", {camera->width_px, camera->height_px}}};
+    doc["camera"] = camera_lens_json(*suite.scene.camera);
     doc["uniform_grid"] = {{"width", f.uniform_width}, {"height", f.uniform_height}};
   }
   nlohmann::ordered_json frames = nlohmann::ordered_json::array();
@@ -59,8 +74,7 @@ nlohmann::ordered_json frames_json(const Suite& suite, const Context& context, c
     j["tcsb_links"] = std::move(links);
     j["tcsb_levels"] = frame.tcsb_levels;
     if (camera) {
-      const CameraPose pose = camera->pose_at(static_cast<double>(frame.step) * suite.world.dt);
-      j["camera"] = {{"position", vector(pose.position)}, {"target", vector(pose.target)}};
+      j["camera"] = camera_pose_json(suite, frame.step);
       j["uniform_nodes"] = points_json(frame.uniform_nodes);
     }
     frames.push_back(std::move(j));

@@ -60,6 +60,8 @@ class SceneMember {
   virtual bool resolution_changed() const { return false; }
   /// The surface at the fine net's grid points.
   virtual void reconstruct(std::vector<Eigen::Vector3d>& leaves) = 0;
+  /// The LOD level governing each of the fine net's grid points (WorldStepView::levels).
+  virtual void leaf_levels(std::vector<int>& levels) const = 0;
   virtual const btSoftBody& bullet() const = 0;
   /// The body and its controller, for a world budget: only TC-SB under a budget.
   virtual std::optional<WorldBudgetMember> budget_member() { return std::nullopt; }
@@ -71,6 +73,7 @@ class FullResolutionMember final : public SceneMember {
   explicit FullResolutionMember(Body body) : body_(std::move(body)) {}
   void boundary(int) override {}
   void reconstruct(std::vector<Eigen::Vector3d>& leaves) override { copy_positions(*body_.bullet, leaves); }
+  void leaf_levels(std::vector<int>& levels) const override { levels.assign(body_.net->node_count(), 0); }
   const btSoftBody& bullet() const override { return *body_.bullet; }
 
  private:
@@ -103,6 +106,7 @@ class TreeCutMember final : public SceneMember {
     morph_pending_ = false;
     morph_.reconstruct(tc_, leaves);
   }
+  void leaf_levels(std::vector<int>& levels) const override { committed_leaf_levels(tc_, levels); }
   const btSoftBody& bullet() const override { return tc_; }
   std::optional<WorldBudgetMember> budget_member() override {
     if (!body_.controller) return std::nullopt;
@@ -154,6 +158,7 @@ class DiscreteLodMember final : public SceneMember {
     leaves.resize(fine_->node_count());
     resample_bilinear(grid_size_of(*body_.net), x_, grid_size_of(*fine_), leaves);
   }
+  void leaf_levels(std::vector<int>& levels) const override { levels.assign(fine_->node_count(), level_); }
   const btSoftBody& bullet() const override { return *body_.bullet; }
 
  private:
@@ -196,6 +201,7 @@ class WorldTrack {
     nets_.push_back(std::move(net));
   }
   bool alive() const { return result.status == "ok"; }
+  void set_observer(WorldObserver* observer) { observer_ = observer; }
 
   /// Steps [first, last). With `record` (the reference), writes its surfaces into `reference`; else compares with it.
   void run_block(int first, int last, WorldReferenceBlock& reference, bool record) {
@@ -204,6 +210,7 @@ class WorldTrack {
       surfaces_.resize(bodies);
       body_nodes_.resize(bodies);
       for (std::size_t b = 0; b < bodies; ++b) members_[b]->reconstruct(surfaces_[b]);
+      show_observer(0);
     }
     if (record) {
       reference.first_step = first;
@@ -227,6 +234,7 @@ class WorldTrack {
           return;
         }
       for (std::size_t b = 0; b < bodies; ++b) members_[b]->reconstruct(surfaces_[b]);
+      show_observer(s + 1);
       if (s < suite_.warmup_steps) continue;
       step_ms_.push_back(ms_between(t0, t1) + ms_between(t2, t3));
       double nodes = 0;
@@ -294,6 +302,18 @@ class WorldTrack {
     }
   }
 
+  /// Outside the timed intervals, from the surfaces the step reconstructed anyway.
+  void show_observer(int steps) {
+    if (!observer_ || !observer_->wants(result.method, steps)) return;
+    levels_.resize(members_.size());
+    int nodes = 0;
+    for (std::size_t b = 0; b < members_.size(); ++b) {
+      members_[b]->leaf_levels(levels_[b]);
+      nodes += members_[b]->bullet().m_nodes.size();
+    }
+    observer_->observe({result.method, result.budget, steps, surfaces_, levels_, nodes});
+  }
+
   void share_budget() {
     budget_members_.clear();
     for (auto& m : members_)
@@ -326,6 +346,8 @@ class WorldTrack {
   std::vector<double> step_ms_, nodes_, p95_, scratch_;
   std::vector<std::vector<double>> body_nodes_;
   std::optional<DepthBuffer> depth_;
+  WorldObserver* observer_ = nullptr;
+  std::vector<std::vector<int>> levels_;  // per body, for the observer
 };
 
 /// Camera to each body's rest centre at the end of every step (the camera's view of that step), step-major: what a
@@ -387,7 +409,7 @@ std::unique_ptr<WorldTrack> full_resolution_track(const Suite& suite, const char
 
 }  // namespace
 
-WorldResult run_world(const Suite& suite) {
+WorldResult run_world(const Suite& suite, WorldObserver* observer) {
   const StepClock::time_point start = StepClock::now();
   const std::vector<NetSpec> placed = scene_body_nets(suite);
   std::vector<std::shared_ptr<const Net>> nets;
@@ -443,6 +465,7 @@ WorldResult run_world(const Suite& suite) {
       tracks.push_back(full_resolution_track(suite, "full_resolution", d, false, nets));
   }
 
+  for (auto& t : tracks) t->set_observer(observer);
   // Full resolution first in each block: the others are measured against the frames it records.
   WorldReferenceBlock frames;
   WorldTrack& full = *tracks.front();

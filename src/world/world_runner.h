@@ -17,11 +17,13 @@
 #pragma once
 
 #include "suite/suite.h"
+#include "world/world_observer.h"
 #include "world/world_result.h"
 
 namespace tcsb {
 
-/// Runs the world pass of `suite` (is_world_suite). Deterministic but for the times.
-WorldResult run_world(const Suite& suite);
+/// Runs the world pass of `suite` (is_world_suite). Deterministic but for the times. An `observer` sees every method's
+/// scene after each step it wants (world_observer.h), and the initial state as after 0 steps.
+WorldResult run_world(const Suite& suite, WorldObserver* observer = nullptr);
 
 }  // namespace tcsb

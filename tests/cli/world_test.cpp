@@ -1,5 +1,6 @@
 // A scene of many bodies end to end through the executable: its run writes the world pass's block, which the
-// result's schema takes, and a bad scene exits 2 with one line naming the field.
+// result's schema takes, and a bad scene exits 2 with one line naming the field; its frames are the world pass's
+// (the fly-by), and what they cannot be asked for exits 2 with one line naming the option.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -70,6 +71,51 @@ TEST_F(Cli, OverlappingBodiesExitTwoNamingTheField) {
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_EQ(count_lines(o.err), 1) << o.err;
   EXPECT_NE(o.err.find("scene.bodies[1].position"), std::string::npos) << o.err;
+}
+
+TEST_F(Cli, AWorldSuitesFramesAreTheWorldPasssEveryKthStep) {
+  write_file(dir_ / "row.json", testing::world_suite_json().dump());
+  const Outcome o = tcsb("frames --suite row.json --compression 0.3 --every 15 --out frames.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const json doc = json::parse(read_file(dir_ / "frames.json"));
+  EXPECT_EQ(doc["kind"], "world_frames");
+  EXPECT_EQ(doc["compression"], 0.3);
+  ASSERT_EQ(doc["bodies"].size(), 3u);
+  ASSERT_EQ(doc["methods"].size(), 2u);
+  EXPECT_EQ(doc["methods"][0]["method"], "tcsb_world");
+  EXPECT_EQ(doc["methods"][1]["method"], "discrete_lod");
+  ASSERT_EQ(doc["frames"].size(), 5u);  // steps 0, 15, 30, 45, 60 of 20 warm-up and 40 measured
+  EXPECT_EQ(doc["frames"][4]["step"], 60);
+  for (const json& frame : doc["frames"]) {
+    EXPECT_EQ(frame["camera"]["position"].size(), 3u);
+    ASSERT_EQ(frame["scenes"].size(), 2u);
+    for (const json& scene : frame["scenes"]) {
+      ASSERT_EQ(scene["bodies"].size(), 3u);
+      for (const json& body : scene["bodies"]) {
+        EXPECT_EQ(body["xyz"].size(), 3u * 81u);
+        EXPECT_EQ(body["levels"].size(), 81u);
+      }
+    }
+  }
+  const Outcome read = tcsb("compare frames.json frames.json");  // not a run result
+  EXPECT_EQ(read.exit_code, 2) << read.err;
+}
+
+TEST_F(Cli, AWorldSuitesFramesRefuseWhatTheyCannotHoldInOneLine) {
+  write_file(dir_ / "row.json", testing::world_suite_json().dump());
+  for (const auto& [flags, needle] :
+       std::vector<std::pair<std::string, std::string>>{{"--net b9", "--net"},
+                                                        {"--calibrated", "--calibrated"},
+                                                        {"--compression 1", "--compression"},
+                                                        {"--steps 0,61", "ends after 60 steps"},
+                                                        {"--every 0", "--every"},
+                                                        {"--every 5 --steps 5", "--every"}}) {
+    const Outcome o = tcsb("frames --suite row.json --out frames.json " + flags);
+    EXPECT_EQ(o.exit_code, 2) << flags << ": " << o.err;
+    EXPECT_EQ(count_lines(o.err), 1) << flags << ": " << o.err;
+    EXPECT_NE(o.err.find(needle), std::string::npos) << flags << ": " << o.err;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "frames.json")) << flags;
+  }
 }
 
 }  // namespace
