@@ -110,6 +110,7 @@ TEST(ResultSchema, EverySettingWrittenOnlyWhenItMattersConforms) {
   r.suite.tcsb.start_level = 2;
   FeedbackSettings& f = r.suite.feedback;
   f.popping_charge = f.interface_charge = f.interface_tension = f.pin_level_pull = f.contact_saliency = 0.5;
+  f.view_offscreen_share = 0.5;
   f.view = true;
   f.budget_scope = BudgetScope::kWorld;
   const ojson doc = testing::native_json_of(r);
