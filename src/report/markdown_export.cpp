@@ -493,6 +493,7 @@ std::string world_section(const ojson& doc) {
                                     {"budget", [](const ojson& row) { return compression_text(at(row, "budget")); }},
                                     field("mean nodes", "mean_nodes"),
                                     field("step ms", "step_ms"),
+                                    field("boundary ms", "boundary_ms"),
                                     field("time / full", "step_ratio"),
                                     field("p95 px", "p95_px"),
                                     field("pop max px", "popping_px"),

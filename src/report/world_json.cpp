@@ -49,6 +49,7 @@ void add_world_json(const RunResult& result, nlohmann::ordered_json& doc) {
                  {"mean_nodes", json_number(m.mean_nodes)},
                  {"body_mean_nodes", std::move(body_nodes)},
                  {"step_ms", json_number(m.step_ms)},
+                 {"boundary_ms", json_number(m.boundary_ms)},
                  {"step_ratio", json_number(m.step_ratio)},
                  {"p95_px", json_number(m.p95_px)},
                  {"popping_px", json_number(m.popping_px)},

@@ -22,7 +22,10 @@ struct WorldMethodResult {
   double mean_nodes = 0;                ///< simulated nodes of every body, summed, mean over the measured steps
   std::vector<double> body_mean_nodes;  ///< per body (scene order), mean over the measured steps
   double step_ms = 0;                   ///< mean step of the whole scene, milliseconds
-  std::vector<double> block_step_ms;    ///< per block of measured steps, its mean step
+  /// The part of step_ms spent before the world steps: TC-SB's blends, feedback and operations (and the world
+  /// budget's split), discrete LOD's switches; the rest is Bullet's step and the controllers' after_step.
+  double boundary_ms = 0;
+  std::vector<double> block_step_ms;  ///< per block of measured steps, its mean step
   /// Median over blocks of this method's block mean over full resolution's of the same block (same run).
   double step_ratio = 1.0;
   /// Per measured step the 95th percentile over every visible reference point of every body of the distance on the

@@ -237,6 +237,7 @@ class WorldTrack {
       show_observer(s + 1);
       if (s < suite_.warmup_steps) continue;
       step_ms_.push_back(ms_between(t0, t1) + ms_between(t2, t3));
+      boundary_ms_.push_back(ms_between(t0, t1));
       double nodes = 0;
       for (std::size_t b = 0; b < bodies; ++b) {
         body_nodes_[b].push_back(members_[b]->bullet().m_nodes.size());
@@ -277,6 +278,7 @@ class WorldTrack {
     result.mean_nodes = mean(nodes_);
     for (const std::vector<double>& n : body_nodes_) result.body_mean_nodes.push_back(mean(n));
     result.step_ms = mean(step_ms_);
+    result.boundary_ms = mean(boundary_ms_);
     result.p95_px = mean(p95_);
     std::vector<double> ratios;
     for (std::size_t k = 0; k < std::min(reference_blocks.size(), result.block_step_ms.size()); ++k)
@@ -343,7 +345,7 @@ class WorldTrack {
   std::vector<WorldBudgetMember> budget_members_;
   std::vector<std::vector<Eigen::Vector3d>> surfaces_;  // per body, after the last step ("before" a boundary)
   std::vector<Eigen::Vector3d> after_, all_;
-  std::vector<double> step_ms_, nodes_, p95_, scratch_;
+  std::vector<double> step_ms_, boundary_ms_, nodes_, p95_, scratch_;
   std::vector<std::vector<double>> body_nodes_;
   std::optional<DepthBuffer> depth_;
   WorldObserver* observer_ = nullptr;
