@@ -39,18 +39,12 @@ namespace {
 /// bit. True: each link's lambda summed over the small step's passes in p.link_lambda, and alpha~ the part of m_c0
 /// that is not the endpoints' inverse masses (compliance_in_constant), so the passes converge to the implicit Euler
 /// step of the material's springs instead of to a stiffer cloth or a softer one.
-///
-/// kPerLinkPasses (CompliantMaterial::softness_per_pass): pass `pass` solves only the links with more passes than
-/// that in p.link_passes.
-template <bool kAccumulateLambda, bool kPerLinkPasses>
-void solve_links(const btSoftBody& body, SubstepPositions& p, int pass) {
+template <bool kAccumulateLambda>
+void solve_links(const btSoftBody& body, SubstepPositions& p) {
   const btSoftBody::Node* base = &body.m_nodes[0];
   for (int i = 0; i < body.m_links.size(); ++i) {
     const btSoftBody::Link& l = body.m_links[i];
     if (!(l.m_c0 > 0)) continue;
-    if constexpr (kPerLinkPasses) {
-      if (p.link_passes[static_cast<std::size_t>(i)] <= pass) continue;
-    }
     const auto a = static_cast<std::size_t>(l.m_n[0] - base), b = static_cast<std::size_t>(l.m_n[1] - base);
     const Eigen::Vector3d del = p.x[b] - p.x[a];
     const double length = del.norm();
@@ -91,22 +85,6 @@ void run_bullet_solver(btSoftBody& body, btSoftBody::ePSolver::_ solver, btScala
 }
 
 }  // namespace
-
-int assign_link_passes(const btSoftBody& body, const CompliantMaterial& material, std::vector<int>& passes) {
-  passes.resize(static_cast<std::size_t>(body.m_links.size()));
-  int most = material.passes;
-  for (int i = 0; i < body.m_links.size(); ++i) {
-    const btSoftBody::Link& l = body.m_links[i];
-    const double w = static_cast<double>(l.m_n[0]->m_im) + static_cast<double>(l.m_n[1]->m_im);
-    const double alpha_tilde = compliance_in_constant(static_cast<double>(l.m_c0), w);
-    const int n = alpha_tilde > 0
-                      ? link_passes_for_softness(w / alpha_tilde, material.softness_per_pass, material.passes)
-                      : material.passes;
-    passes[static_cast<std::size_t>(i)] = n;
-    most = std::max(most, n);
-  }
-  return most;
-}
 
 void solve_in_substeps(btSoftBody& body, const SolverSettings& solver, SubstepPositions& p,
                        const std::function<void(SubstepPositions&)>& after_links) {
@@ -154,9 +132,8 @@ void solve_in_substeps(btSoftBody& body, const SolverSettings& solver, SubstepPo
     for (int i = 0; i < body.m_nodes.size(); ++i) f(&body.m_nodes[i]);
   };
   // One pass: lambda = 0 in it, nothing to keep. More: lambda summed over the passes of each small step.
-  const bool per_link = solver.compliant.softness_per_pass > 0;
-  const int passes = per_link ? assign_link_passes(body, solver.compliant, p.link_passes) : solver.compliant.passes;
-  const bool accumulate = solver.compliant.keeps_lambda();
+  const int passes = solver.compliant.passes;
+  const bool accumulate = passes > 1;
   p.link_lambda.resize(accumulate ? static_cast<std::size_t>(body.m_links.size()) : 0);
   for (int s = 0; s < n; ++s) {
     for (std::size_t i = 0; i < count; ++i) {
@@ -174,12 +151,10 @@ void solve_in_substeps(btSoftBody& body, const SolverSettings& solver, SubstepPo
       for (int k = 0; k < body.m_cfg.m_psequence.size(); ++k) {
         const btSoftBody::ePSolver::_ which = body.m_cfg.m_psequence[k];
         if (which == btSoftBody::ePSolver::Linear) {
-          if (per_link)
-            solve_links<true, true>(body, p, pass);
-          else if (accumulate)
-            solve_links<true, false>(body, p, pass);
+          if (accumulate)
+            solve_links<true>(body, p);
           else
-            solve_links<false, false>(body, p, pass);
+            solve_links<false>(body, p);
           continue;
         }
         // Anchors and contacts once a small step: their hardness is the small step's share of the step's, and

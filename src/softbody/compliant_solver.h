@@ -42,9 +42,6 @@ struct SubstepPositions {
   /// steps need nothing kept. Empty with one pass, whose lambda is 0.
   std::vector<double> link_lambda;
   std::vector<double> constraint_lambda;
-  /// With CompliantMaterial::softness_per_pass, each link's passes a small step (index as in m_links), from its
-  /// constant at the step's start; empty otherwise.
-  std::vector<int> link_passes;
 };
 
 /// The small steps of a compliant body (after predictMotion and the world's collision detection): what
@@ -54,11 +51,6 @@ struct SubstepPositions {
 /// O(substeps x (N + passes x L + contacts)).
 void solve_in_substeps(btSoftBody& body, const SolverSettings& solver, SubstepPositions& positions,
                        const std::function<void(SubstepPositions&)>& after_links);
-
-/// Each of `body`'s links' passes a small step under `material` (index as in m_links), the most of them returned:
-/// `material.passes`, or with CompliantMaterial::softness_per_pass more where a link's one-pass softness term
-/// k h^2 w (w / alpha~: its endpoints' inverse masses over the compliance its constant stands for) is large. O(L).
-int assign_link_passes(const btSoftBody& body, const CompliantMaterial& material, std::vector<int>& passes);
 
 /// Bullet's per-step anchor constants (btSoftBody::solveConstraints' "prepare anchors", for m_sst.sdt): what every
 /// constraint loop of ours runs before its position solvers.

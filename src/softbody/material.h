@@ -12,9 +12,6 @@
 //    precision).
 #pragma once
 
-#include <algorithm>
-#include <cmath>
-
 namespace tcsb {
 
 /// Which material model a suite's bodies use.
@@ -39,20 +36,7 @@ struct CompliantMaterial {
   /// endpoints' inverse masses), softer than the material where k h^2 w is not small; more accumulate each link's
   /// lambda over the small step's passes, which converges to the implicit Euler step, whose rest is the material's.
   int passes = 1;
-  /// Per-link passes (0: off, every link takes `passes`). Otherwise a link whose one-pass softness term k h^2 w is
-  /// above this bound takes ceil(k h^2 w / bound) passes (at least `passes`), so the finest level, whose light nodes
-  /// make it the softest, converges further in a small step while the coarse levels keep one pass.
-  double softness_per_pass = 0.0;
-  /// Whether a small step may run more than one pass over some link, so XPBD's lambda has to be kept over them.
-  bool keeps_lambda() const { return passes > 1 || softness_per_pass > 0; }
 };
-
-/// The link passes a small step that CompliantMaterial::softness_per_pass gives a link whose one-pass softness term
-/// k h^2 w is `softness`: at least `passes`, at most kMaxLinkPasses.
-inline int link_passes_for_softness(double softness, double softness_per_pass, int passes) {
-  const double wanted = std::ceil(softness / softness_per_pass);
-  return wanted > passes ? static_cast<int>(std::min(wanted, static_cast<double>(kMaxLinkPasses))) : passes;
-}
 
 /// Whose stiffness a link of the compliant model carries: the membrane stiffness times the area of the cells on
 /// either side of it over twice its squared length, N/m (the 2D rule; a link inside a regular grid carries Y, a

@@ -35,8 +35,6 @@ void check_solver_settings(const SolverSettings& s) {
   if (c.substeps < 1 || c.substeps > 4096) refuse("compliant.substeps", "in [1, 4096]", c.substeps);
   if (c.passes < 1 || c.passes > kMaxLinkPasses)
     refuse("compliant.passes", "in [1, " + std::to_string(kMaxLinkPasses) + "]", c.passes);
-  if (!(std::isfinite(c.softness_per_pass) && c.softness_per_pass >= 0))
-    refuse("compliant.softness_per_pass", "a finite number >= 0", c.softness_per_pass);
 }
 
 }  // namespace tcsb

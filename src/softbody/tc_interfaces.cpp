@@ -248,7 +248,7 @@ void TcSoftBody::Impl::project_interfaces(SubstepPositions& x) {
 void TcSoftBody::Impl::solve_constraints() {
   if (solver_.compliant_model()) {  // the compliant material's small steps, the interfaces in every one of them
     prepare_interfaces();
-    substep_positions_.constraint_lambda.resize(solver_.compliant.keeps_lambda() ? prepared_interfaces_.size() : 0);
+    substep_positions_.constraint_lambda.resize(solver_.compliant.passes > 1 ? prepared_interfaces_.size() : 0);
     solve_in_substeps(body_, solver_, substep_positions_, [this](SubstepPositions& x) { project_interfaces(x); });
     return;
   }

@@ -17,13 +17,12 @@ const char* material_model_name(MaterialModel model) {
 void parse_material(const Reader& r, const Object& root, const nlohmann::json& nets, Suite& s) {
   const json* j = root.find("material");
   if (!j) return;
-  const Object m(r, *j, "material",
-                 {"model", "stretch_stiffness", "density", "damping", "substeps", "passes", "softness_per_pass"});
+  const Object m(r, *j, "material", {"model", "stretch_stiffness", "density", "damping", "substeps", "passes"});
   SolverSettings& solver = s.solver;
   solver.model = r.choice<MaterialModel>(
       m.need("model"), m.at("model"), {{"bullet", MaterialModel::kBullet}, {"compliant", MaterialModel::kCompliant}});
   if (solver.model == MaterialModel::kBullet) {
-    for (const char* key : {"stretch_stiffness", "density", "damping", "substeps", "passes", "softness_per_pass"})
+    for (const char* key : {"stretch_stiffness", "density", "damping", "substeps", "passes"})
       if (m.find(key))
         r.fail(m.at(key), "is a setting of the compliant model; the bullet model takes its stiffness from solver");
     return;
@@ -33,8 +32,7 @@ void parse_material(const Reader& r, const Object& root, const nlohmann::json& n
   m.read("density", c.density, kSceneQuantity, true);
   m.read("damping", c.damping, kSceneNonNegative);
   m.read("substeps", c.substeps, 1, kMaxSubsteps, true);
-  m.read("passes", c.passes, 1, kMaxLinkPasses);                        // (optional: one pass, as before the field)
-  m.read("softness_per_pass", c.softness_per_pass, kSceneNonNegative);  // (optional: 0, every link `passes`)
+  m.read("passes", c.passes, 1, kMaxLinkPasses);  // (optional: one pass, as before the field)
   // One material for every body: the nets' masses are its density's, lumped by area.
   for (std::size_t i = 0; i < s.nets.size(); ++i) {
     if (nets[i].contains("mass"))

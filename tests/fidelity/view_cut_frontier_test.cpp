@@ -23,7 +23,6 @@
 #include "fidelity/screen_error.h"
 #include "scene/scene_world.h"
 #include "softbody/bullet_setup.h"
-#include "softbody/compliant_solver.h"
 #include "softbody/plain_softbody.h"
 #include "softbody/tc_softbody.h"
 #include "suite/suite.h"
@@ -75,18 +74,7 @@ ReferenceRun run_reference(const Suite& suite, const std::shared_ptr<const Net>&
 struct BodyError {
   int nodes = 0;
   double p95_px = 0, rms_pct = 0;
-  int links = 0;
-  int link_passes = 0;  ///< under the compliant material, the links' passes a small step at the first step, summed
 };
-
-/// The body's links and their passes a small step (compliant_solver.h's assign_link_passes), into `e`.
-void count_link_passes(const Suite& suite, const btSoftBody& body, BodyError& e) {
-  e.links = body.m_links.size();
-  if (!suite.solver.compliant_model()) return;
-  std::vector<int> passes;
-  assign_link_passes(body, suite.solver.compliant, passes);
-  for (const int n : passes) e.link_passes += n;
-}
 
 /// Runs a body through the suite's steps (`step(s)` advances it by one, `reconstruct` gives its surface) and measures
 /// it against the reference on the measured ones.
@@ -163,7 +151,6 @@ BodyError fixed_cut(const Suite& suite, const std::shared_ptr<const Net>& net, c
       suite, *net, reference, [&](int) { world.step(static_cast<btScalar>(suite.world.dt)); },
       [&](std::vector<Eigen::Vector3d>& surface) { reconstruct_leaves(body, surface); });
   e.nodes = body.node_count();
-  count_link_passes(suite, body, e);
   return e;
 }
 
@@ -184,7 +171,6 @@ BodyError uniform_grid(Suite suite, const std::shared_ptr<const Net>& net, const
       },
       [&](std::vector<Eigen::Vector3d>& surface) { grid->reconstruct(surface); });
   e.nodes = grid->bullet().m_nodes.size();
-  count_link_passes(suite, grid->bullet(), e);
   return e;
 }
 
@@ -210,15 +196,13 @@ TEST(FixedViewCuts, DISABLED_Frontier) {
   // Under the compliant material there is no stiffness to move by 1 %: one row of each.
   const std::vector<double> scales = compliant ? std::vector<double>{1.0} : std::vector<double>{1.0, 0.99, 1.01};
   const std::string grid_name = compliant ? "uniform grid at 30 %" : "calibrated uniform grid at 30 %";
-  std::printf(
-      "| net | body | nodes | p95 px | RMS %% | links | link passes a small step |\n|---|---|---|---|---|---|---|\n");
+  std::printf("| net | body | nodes | p95 px | RMS %% |\n|---|---|---|---|---|\n");
   for (const NetSpec& spec : suite.nets) {
     const auto net = std::make_shared<const Net>(spec);
     const ReferenceRun reference = run_reference(suite, net);
     const auto row = [&](const std::string& body, const BodyError& e) {
-      std::printf("| %s | %s | %d (%.1f %%) | %.3f | %.3f | %d | %d |\n", spec.name.c_str(), body.c_str(), e.nodes,
-                  100.0 * e.nodes / static_cast<double>(net->node_count()), e.p95_px, e.rms_pct, e.links,
-                  e.link_passes);
+      std::printf("| %s | %s | %d (%.1f %%) | %.3f | %.3f |\n", spec.name.c_str(), body.c_str(), e.nodes,
+                  100.0 * e.nodes / static_cast<double>(net->node_count()), e.p95_px, e.rms_pct);
     };
     for (const double scale : scales)
       row(grid_name + ", stiffness x " + std::to_string(scale).substr(0, 4),

@@ -312,14 +312,12 @@ class HangingNetLevels {
   }
 
   /// RMS % of the extent per cut: whole levels 0, 1, 2 and kMixedCut, at `substeps` small steps of `passes` passes.
-  std::map<int, double> errors(int substeps, int passes, double softness_per_pass = 0) const {
+  std::map<int, double> errors(int substeps, int passes) const {
     std::map<int, double> error;
     for (const int cut : {0, 1, 2, kMixedCut}) {
       SCOPED_TRACE("cut " + std::to_string(cut));
       SceneWorld world({});
-      SolverSettings settings = solver(substeps, passes);
-      settings.compliant.softness_per_pass = softness_per_pass;
-      TcSoftBody tc(world.info(), net_, settings, cut_settings());
+      TcSoftBody tc(world.info(), net_, solver(substeps, passes), cut_settings());
       if (cut >= 0) {
         tc.coarsen_to_level(cut);
       } else {
@@ -433,21 +431,6 @@ TEST(CompliantMaterial, DISABLED_LevelErrorsAtEqualCost) {
     std::map<int, double> error = levels.errors(substeps, passes);
     std::printf("%d | %d x %d | %.3f | %.3f | %.3f | %.3f\n", substeps * passes, substeps, passes, error[0], error[1],
                 error[2], error[HangingNetLevels::kMixedCut]);
-  }
-}
-
-TEST(CompliantMaterial, DISABLED_LevelErrorsWithPerLinkPasses) {
-  // The measurement behind docs/investigations/compliant-material.md, "Per-link passes": the level-consistency
-  // errors at the twins' 24 small steps with material.softness_per_pass, which gives the links whose k h^2 w is large
-  // (the finest level's) more passes a small step.
-  // Run: build/tests_softbody --gtest_also_run_disabled_tests
-  // --gtest_filter='CompliantMaterial.DISABLED_LevelErrorsWith*'
-  const HangingNetLevels levels;
-  std::printf("softness_per_pass | level 0 | level 1 | level 2 | mixed 0/1  (RMS %% of the extent, 24 small steps)\n");
-  for (const double softness : {0.0, 0.4, 0.2, 0.1, 0.05}) {
-    std::map<int, double> error = levels.errors(24, 1, softness);
-    std::printf("%.2f | %.3f | %.3f | %.3f | %.3f\n", softness, error[0], error[1], error[2],
-                error[HangingNetLevels::kMixedCut]);
   }
 }
 
