@@ -172,6 +172,43 @@ TEST(CompliantMaterial, PassesThatKeepLambdaHoldThroughBlendsAndInterfaces) {
   EXPECT_LT(farthest, 0.05);  // measured 0.024 m on the 4 m net: one pass's softness at k h^2 w = 0.12
 }
 
+TEST(CompliantMaterial, AWholeLevelCutHangsAsThePlainGridOfItsNodes) {
+  // A whole-level cut rests on an evenly spaced sub-grid of the leaves, with the masses of its own cells and the
+  // membrane rule of its own links: the plain uniform grid of its nodes, so it errs against the fine cloth by that
+  // grid's resolution and nothing more (docs/investigations/compliant-material.md, "Level 2 is the resolution"),
+  // one second after release, still moving.
+  const auto net = compliant_net(33);
+  for (const int level : {1, 2}) {
+    SCOPED_TRACE("level " + std::to_string(level));
+    const int stride = 1 << level, width = 32 / stride + 1;
+    const auto grid_net = compliant_net(width);
+    SolverSettings solver = compliant_solver(8);
+    solver.compliant.damping = 4.0;
+    SceneWorld grid_world({}), tc_world({});
+    const auto grid = make_plain_softbody(grid_world.info(), *grid_net, solver);
+    TcSettings settings = cut_settings();
+    settings.exact_order = true;  // the plain grid's link order, so Gauss-Seidel sweeps them alike
+    TcSoftBody tc(tc_world.info(), net, solver, settings);
+    tc.coarsen_to_level(level);
+    ASSERT_EQ(tc.node_count(), width * width);
+    const auto a = grid_world.attach(*grid);
+    const auto b = tc_world.attach(tc);
+    for (int s = 0; s < 60; ++s) {
+      grid_world.step(testing::kDt);
+      tc_world.step(testing::kDt);
+    }
+    double farthest = 0;
+    for (int i = 0; i < tc.node_count(); ++i) {
+      const TreeId leaf = net->lod().rest_leaf(tc.tree_id(i));
+      const int g = grid_net->index(leaf % 33 / stride, leaf / 33 / stride);
+      farthest = std::max(farthest, static_cast<double>((tc.m_nodes[i].m_x - grid->m_nodes[g].m_x).length()));
+    }
+    // Measured: under 1e-9 m in this build. Ten float ulps at 8 m leave room for another build's rounding; the same
+    // cut swept in its own link order (without exact_order) ends 1 to 4 mm away.
+    EXPECT_LT(farthest, 1e-5) << "m, on a 4 m net";
+  }
+}
+
 /// The sag at rest of the middle of a 17 x 17 net hanging from its corners (4 x 4 m, 50 N/m, 0.1 kg/m^2, damped to
 /// rest in two seconds), metres below the corners, at `substeps` small steps of `passes` link passes.
 double sag_at_rest(int substeps, int passes) {
@@ -273,12 +310,42 @@ class HangingNetLevels {
   static constexpr int kSteps = 120;
   static constexpr int kMixedCut = -1;  ///< level 1 on the half x < 4 m, level 0 on the rest
 
-  HangingNetLevels() : net_(make_net()) {
+  /// One body's error against the reference, % of the extent (RMS over its nodes, each against the grid node it
+  /// rests on), as a whole and split by rest distance from the nearest pinned corner.
+  struct ErrorMap {
+    double all = 0;
+    double near_pins = 0;  ///< nodes within kPinNeighbourhood of a pinned corner
+    double elsewhere = 0;
+    double centre_height = 0;  ///< the middle node's height minus the reference's, m (< 0: it sags more)
+    int near_count = 0;
+    int far_count = 0;
+  };
+  /// The pins' neighbourhood: an eighth of the 8 m net, two cells of a 17 x 17 grid, eight of the 65 x 65 one.
+  static constexpr double kPinNeighbourhood = 1.0;
+
+  HangingNetLevels() : net_(make_net(kWidth)), reference_(hang_plain(*net_, 8 * 24)) {}
+
+  /// A plain uniform `width` x `width` net of the same material (its nodes on every (64 / (width - 1))-th grid node
+  /// of the reference's), hung at `substeps` small steps of one pass, against the reference.
+  ErrorMap plain_grid_error(int width, int substeps) const {
+    const auto coarse = make_net(width);
+    const std::vector<btVector3> positions = hang_plain(*coarse, substeps);
+    const int stride = (kWidth - 1) / (width - 1);
+    std::vector<std::pair<std::size_t, btVector3>> nodes;
+    for (int i = 0; i < static_cast<int>(positions.size()); ++i)
+      nodes.emplace_back(static_cast<std::size_t>(net_->index(i % width * stride, i / width * stride)),
+                         positions[static_cast<std::size_t>(i)]);
+    return error_map(nodes);
+  }
+
+  /// The whole-level cut `level` of TC-SB at `substeps` small steps of one pass, against the reference.
+  ErrorMap level_error(int level, int substeps) const {
     SceneWorld world({});
-    const auto body = make_plain_softbody(world.info(), *net_, solver(8 * 24, 1));
-    const auto attached = world.attach(*body);
+    TcSoftBody tc(world.info(), net_, solver(substeps, 1), cut_settings());
+    tc.coarsen_to_level(level);
+    const auto attached = world.attach(tc);
     for (int s = 0; s < kSteps; ++s) world.step(testing::kDt);
-    for (int i = 0; i < body->m_nodes.size(); ++i) reference_.push_back(body->m_nodes[i].m_x);
+    return error_map(rest_leaves(tc));
   }
 
   /// RMS % of the extent per cut: whole levels 0, 1, 2 and kMixedCut, at `substeps` small steps of `passes` passes.
@@ -301,19 +368,28 @@ class HangingNetLevels {
       const auto attached = world.attach(tc);
       for (int s = 0; s < kSteps; ++s) world.step(testing::kDt);
       EXPECT_TRUE(tc.validate().ok()) << tc.validate().summary();
-      error[cut] = rms_pct(tc);
+      error[cut] = error_map(rest_leaves(tc)).all;
     }
     return error;
   }
 
  private:
-  static std::shared_ptr<const Net> make_net() {
+  static std::shared_ptr<const Net> make_net(int width) {
     NetSpec spec;
     spec.name = "hanging";
-    spec.width = spec.height = kWidth;
+    spec.width = spec.height = width;
     spec.mass_mode = MassMode::kDensity;
     spec.mass = 1.0 / 64;
     return std::make_shared<const Net>(spec, RestPlacement::kVertex);
+  }
+  static std::vector<btVector3> hang_plain(const Net& net, int substeps) {
+    SceneWorld world({});
+    const auto body = make_plain_softbody(world.info(), net, solver(substeps, 1));
+    const auto attached = world.attach(*body);
+    for (int s = 0; s < kSteps; ++s) world.step(testing::kDt);
+    std::vector<btVector3> positions;
+    for (int i = 0; i < body->m_nodes.size(); ++i) positions.push_back(body->m_nodes[i].m_x);
+    return positions;
   }
   static SolverSettings solver(int substeps, int passes) {
     SolverSettings s = compliant_solver(substeps);
@@ -322,13 +398,37 @@ class HangingNetLevels {
     s.compliant.damping = 4.0;  // to rest in the two seconds
     return s;
   }
-  double rms_pct(const TcSoftBody& tc) const {
-    double sum = 0;
-    for (int i = 0; i < tc.node_count(); ++i) {
-      const auto leaf = static_cast<std::size_t>(net_->lod().rest_leaf(tc.tree_id(i)));
-      sum += static_cast<double>((tc.m_nodes[i].m_x - reference_[leaf]).length2());
+  std::vector<std::pair<std::size_t, btVector3>> rest_leaves(const TcSoftBody& tc) const {
+    std::vector<std::pair<std::size_t, btVector3>> nodes;
+    for (int i = 0; i < tc.node_count(); ++i)
+      nodes.emplace_back(static_cast<std::size_t>(net_->lod().rest_leaf(tc.tree_id(i))), tc.m_nodes[i].m_x);
+    return nodes;
+  }
+  /// `nodes`: each node's reference grid node and position.
+  ErrorMap error_map(const std::vector<std::pair<std::size_t, btVector3>>& nodes) const {
+    const int last = kWidth - 1;
+    const double cell = net_->extent() / last;
+    double all = 0, near = 0, far = 0;
+    ErrorMap map;
+    for (const auto& [leaf, x] : nodes) {
+      const double e = static_cast<double>((x - reference_[leaf]).length2());
+      const int gx = static_cast<int>(leaf) % kWidth, gz = static_cast<int>(leaf) / kWidth;
+      const double to_corner = cell * std::hypot(std::min(gx, last - gx), std::min(gz, last - gz));
+      all += e;
+      if (to_corner <= kPinNeighbourhood) {
+        near += e;
+        ++map.near_count;
+      } else {
+        far += e;
+        ++map.far_count;
+      }
+      if (gx == last / 2 && gz == last / 2) map.centre_height = static_cast<double>(x.y() - reference_[leaf].y());
     }
-    return 100.0 * std::sqrt(sum / tc.node_count()) / net_->extent();
+    const auto pct = [&](double sum, int count) { return 100.0 * std::sqrt(sum / count) / net_->extent(); };
+    map.all = pct(all, static_cast<int>(nodes.size()));
+    map.near_pins = pct(near, map.near_count);
+    map.elsewhere = pct(far, map.far_count);
+    return map;
   }
 
   std::shared_ptr<const Net> net_;
@@ -337,8 +437,8 @@ class HangingNetLevels {
 
 TEST(CompliantMaterial, WholeLevelsAndAMixedCutHangAsTheConvergedCloth) {
   // At the twins' 24 small steps of one pass: measured 0.88, 0.40, 1.30 and 0.64 %. Level 2 (17 x 17 nodes) misses
-  // the 1 % by its spatial resolution, and the mixed cut errs less than the worse of its two levels, so the
-  // levels compose.
+  // the 1 % by its spatial resolution (the plain 17 x 17 grid errs as much: DISABLED_LevelTwo* below), and the
+  // mixed cut errs less than the worse of its two levels, so the levels compose.
 #ifdef __SANITIZE_ADDRESS__
   // A measurement of the physics, not of memory: 8 minutes at -O0 under the sanitizers (482 s in CI's sanitized
   // tree), 3 s in Release. The sanitized tree runs the compliant solver through the other tests here.
@@ -368,6 +468,29 @@ TEST(CompliantMaterial, DISABLED_LevelErrorsAtEqualCost) {
     std::map<int, double> error = levels.errors(substeps, passes);
     std::printf("%d | %d x %d | %.3f | %.3f | %.3f | %.3f\n", substeps * passes, substeps, passes, error[0], error[1],
                 error[2], error[HangingNetLevels::kMixedCut]);
+  }
+}
+
+TEST(CompliantMaterial, DISABLED_LevelTwoAgainstThePlainGridOfItsNodes) {
+  // The measurement behind docs/investigations/compliant-material.md, "Level 2 is the resolution": each whole-level
+  // cut beside the plain uniform grid of its nodes (the same material, masses and membrane rule of its own cells), at
+  // the twins' 24 small steps and converged (192), against the reference, with the error split between the pins'
+  // neighbourhood and the rest of the net.
+  // Run: build/tests_softbody --gtest_also_run_disabled_tests --gtest_filter='CompliantMaterial.DISABLED_LevelTwo*'
+  const HangingNetLevels levels;
+  std::printf(
+      "body | small steps | RMS %% | near the pins (nodes) | elsewhere (nodes) | centre height - reference, mm\n");
+  const auto print = [](const char* body, int substeps, const HangingNetLevels::ErrorMap& e) {
+    std::printf("%s | %d | %.3f | %.3f (%d) | %.3f (%d) | %.1f\n", body, substeps, e.all, e.near_pins, e.near_count,
+                e.elsewhere, e.far_count, 1000.0 * e.centre_height);
+  };
+  for (const int substeps : {24, 192}) {
+    print("level 1 cut", substeps, levels.level_error(1, substeps));
+    print("plain 33 x 33", substeps, levels.plain_grid_error(33, substeps));
+    print("level 2 cut", substeps, levels.level_error(2, substeps));
+    print("plain 17 x 17", substeps, levels.plain_grid_error(17, substeps));
+    print("level 3 cut", substeps, levels.level_error(3, substeps));
+    print("plain 9 x 9", substeps, levels.plain_grid_error(9, substeps));
   }
 }
 
