@@ -70,10 +70,11 @@ WorldFrames record_world_frames(const Suite& suite, double compression, const st
     if (steps[i] < 0 || steps[i] > total || (i > 0 && steps[i] <= steps[i - 1]))
       throw std::invalid_argument("record_world_frames: steps must be ascending, distinct and within the run");
   }
-  // The pass at this one budget alone: each budget's methods step in worlds of their own, so the others change
-  // nothing of these.
+  // The pass at this one budget alone, without the curves' budgets and passes: each budget's methods step in worlds
+  // of their own, so the others change nothing of these (and two budgets' scenes would share a method's name).
   Suite one_budget = suite;
   one_budget.compression = {compression};
+  one_budget.fidelity.curves.reset();
   const std::vector<std::string> methods = world_frame_methods(suite);
   WorldFrameRecorder recorder(methods, steps);
   const WorldResult result = run_world(one_budget, &recorder);

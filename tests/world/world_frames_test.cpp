@@ -108,6 +108,23 @@ TEST_F(WorldFramesOfTwoBanners, RecordingChangesNoneOfThePassFigures) {
   }
 }
 
+TEST(WorldFrames, OfASuiteWithCurvesHoldTheOneBudgetOnly) {
+  // The street asks for curves: their budgets' scenes carry the same methods' names and must not be recorded.
+  nlohmann::json j = testing::world_suite_json();
+  j["scene"]["bodies"].erase(2);
+  j["compression"] = {1.0, 0.3};
+  j["steps"] = 20;
+  j["fidelity"] = {{"curves", {{"budgets", {0.5}}, {"solver_divisors", {2}}}}};
+  const WorldFrames with_curves = record_world_frames(parse_suite_text(j.dump(), "curves.json"), 0.3, {0, 40});
+  ASSERT_EQ(with_curves.methods.size(), 2u);
+  const WorldFrames without = record_world_frames(two_banners(), 0.3, {0, 40});
+  for (std::size_t m = 0; m < 2; ++m) {
+    EXPECT_EQ(with_curves.methods[m].budget, 0.3);
+    EXPECT_EQ(with_curves.methods[m].mean_nodes, without.methods[m].mean_nodes);
+    EXPECT_EQ(with_curves.frames.back().scenes[m].nodes, without.frames.back().scenes[m].nodes);
+  }
+}
+
 TEST(WorldFrames, RefuseASuiteWithoutBodiesAndBadRequests) {
   nlohmann::json single = testing::world_suite_json();
   single["scene"].erase("bodies");
