@@ -172,7 +172,9 @@ TEST(SaliencyView, TheStaticShareWeighsApparentSizeAgainstMotion) {
   for (int i = 0; i < 81; ++i) {
     SCOPED_TRACE(i);
     EXPECT_NEAR(small[static_cast<std::size_t>(i)], 0.001f * size_only[static_cast<std::size_t>(i)], 1e-9f);
-    if (i % 9 > 3) EXPECT_GT(small[static_cast<std::size_t>(i)], 0.0f);
+    if (i % 9 > 3) {
+      EXPECT_GT(small[static_cast<std::size_t>(i)], 0.0f);
+    }
   }
 }
 

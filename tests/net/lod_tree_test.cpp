@@ -397,7 +397,9 @@ TEST(LodTree, VertexBlocksRestOnTheirFirstLeafOrOnTheLastBorder) {
         ASSERT_EQ(tree.node(id).anchor_leaf, centroid_net->lod().node(id).anchor_leaf);
         ASSERT_EQ(tree.centroid(id), centroid_net->lod().centroid(id));
         ASSERT_EQ(tree.spatial_rank(id), centroid_net->lod().spatial_rank(id));
-        if (tree.node(id).is_leaf()) ASSERT_EQ(tree.rest(id), centroid_net->lod().rest(id));
+        if (tree.node(id).is_leaf()) {
+          ASSERT_EQ(tree.rest(id), centroid_net->lod().rest(id));
+        }
       }
     }
 }
