@@ -37,7 +37,7 @@ constexpr int kBlockSteps = 20;
 /// The scene's camera as it saw the end of step `step` (at (step + 1) x dt), when the scene has one.
 std::optional<ScreenProjection> camera_view(const Suite& suite, int step) {
   if (!suite.scene.camera) return std::nullopt;
-  return ScreenProjection(*suite.scene.camera, static_cast<double>(step + 1) * suite.world.dt);
+  return view_after_steps(*suite.scene.camera, step + 1, suite.world.dt);
 }
 
 /// The reference's trajectory over one block of steps. Positions are Bullet's floats, kept as floats.

@@ -63,4 +63,10 @@ class ScreenProjection {
   double degrees_per_pixel_ = 1;
 };
 
+/// The camera as it stands after `steps` steps of `dt` seconds, at steps x dt: the image the state after those steps
+/// is seen in (the end of step s is s + 1 steps). One rule for the fidelity pass, the world pass and their tests.
+inline ScreenProjection view_after_steps(const Camera& camera, int steps, double dt) {
+  return ScreenProjection(camera, static_cast<double>(steps) * dt);
+}
+
 }  // namespace tcsb

@@ -246,7 +246,7 @@ class WorldTrack {
       nodes_.push_back(nodes);
       gather(surfaces_, all_);
       const std::size_t f = static_cast<std::size_t>(s - first);
-      const ScreenProjection view(*suite_.scene.camera, static_cast<double>(s + 1) * suite_.world.dt);
+      const ScreenProjection view = view_after_steps(*suite_.scene.camera, s + 1, suite_.world.dt);
       if (record) {
         reference.surfaces[f] = all_;
         if (suite_.scene.camera->occlusion_cell_px > 0) see_through_camera(view, reference.seen[f]);
@@ -293,7 +293,7 @@ class WorldTrack {
  private:
   /// Before the world moves, nothing but the method's own change can move a surface: its jump is pure popping.
   void record_popping(int step) {
-    const ScreenProjection view(*suite_.scene.camera, static_cast<double>(step) * suite_.world.dt);
+    const ScreenProjection view = view_after_steps(*suite_.scene.camera, step, suite_.world.dt);
     for (std::size_t b = 0; b < members_.size(); ++b) {
       if (!members_[b]->resolution_changed()) continue;
       ++result.resolution_changes;

@@ -37,7 +37,7 @@ struct ReferenceRun {
 };
 
 ScreenProjection view_at(const Suite& suite, int step) {
-  return ScreenProjection(*suite.scene.camera, static_cast<double>(step + 1) * suite.world.dt);
+  return view_after_steps(*suite.scene.camera, step + 1, suite.world.dt);
 }
 
 /// Under the compliant material, the reference's small steps and the mixed cut's second run's: 8 x the suite's.
