@@ -10,6 +10,7 @@
 #include "suite/case_plan.h"
 #include "suite/fidelity_plan.h"
 #include "suite/suite_axes.h"
+#include "suite/world_plan.h"
 
 namespace tcsb {
 namespace {
@@ -44,6 +45,10 @@ constexpr double kTreeNodeBytes = 116, kTreeNodesPerLeaf = 4.0 / 3.0;
 constexpr double kTcBookkeepingBytes = 200, kTcLinkFactor = 3;
 constexpr double kSampleBytes = 3 * 8 + 3 * 4;
 constexpr double kSubstepNodeBytes = 2 * 24 + 8;
+constexpr double kPointBytes = 24;  // a grid point of a reconstructed surface: Eigen::Vector3d
+// A world-pass track's copies of its bodies' grid points: the surfaces after the last step, the gathered scene, and
+// the jump's "after" at a change (world_runner.cpp).
+constexpr double kWorldSurfaceCopies = 3;
 
 // A scene with colliders gives every body a btSoftRigidDynamicsWorld of its own (scene/scene_world.h). Measured with
 // mallinfo2 (uordblks + hblkhd) on Bullet 3.24: 4 672 144 B for the world, nearly all of it its collision
@@ -79,20 +84,52 @@ std::array<double, 3> sdf_query_half_extents(const Collider& c, double pad) {
   return half;
 }
 
-/// Peak bytes while cases of net `spec` run: the shared net, one body per method (per case side by side); or, in the
-/// fidelity pass, which runs afterwards, the reference and every subject at once (each counted as a TC-SB body, the
-/// largest kind).
-double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
+/// One net's bytes: what its cases share (the net and its LOD tree) and one body of each kind.
+struct NetBytes {
+  double shared = 0;
+  double plain = 0;
+  double tcsb = 0;
+};
+
+NetBytes net_bytes(const Suite& suite, const NetSpec& spec) {
   const double n = static_cast<double>(spec.node_count());
   const double l = static_cast<double>(expected_link_count(spec));
   const double tree = kTreeNodesPerLeaf * n;
   const double faces = suite.scene.wind ? 2.0 * (spec.width - 1) * (spec.height - 1) * kWindFaceBytes : 0.0;
   const double world = scene_world_bytes(suite.scene);  // every body has a world of its own
   const double substeps = suite.solver.compliant_model() ? kSubstepNodeBytes : 0.0;
-  const double plain = n * (kBulletNodeBytes + substeps) + l * kBulletLinkBytes + faces + world;
-  const double tcsb_body =
+  NetBytes b;
+  b.plain = n * (kBulletNodeBytes + substeps) + l * kBulletLinkBytes + faces + world;
+  b.tcsb =
       tree * (kBulletNodeBytes + kTcBookkeepingBytes + substeps) + kTcLinkFactor * l * kBulletLinkBytes + faces + world;
-  const double shared = n * kNetNodeBytes + l * kNetLinkBytes + tree * kTreeNodeBytes;
+  b.shared = n * kNetNodeBytes + l * kNetLinkBytes + tree * kTreeNodeBytes;
+  return b;
+}
+
+/// Peak bytes of the world pass (world/world_runner.h), which runs after the cases: every track's bodies alive at
+/// once (world_tracks), each body with a net of its own, and per track the surfaces it reconstructs, compares and
+/// keeps for popping (kWorldSurfaceCopies of every body's grid points), with the reference's block of them.
+double world_peak_bytes(const Suite& suite) {
+  const WorldTracks tracks = world_tracks(suite);
+  if (tracks.tcsb + tracks.plain == 0) return 0;
+  // Every body is of the first body's net (the suite's reader refuses others).
+  const auto spec = std::find_if(suite.nets.begin(), suite.nets.end(),
+                                 [&](const NetSpec& n) { return n.name == suite.scene.bodies.front().net; });
+  if (spec == suite.nets.end()) return 0;
+  const NetBytes b = net_bytes(suite, *spec);
+  const double bodies = static_cast<double>(suite.scene.bodies.size());
+  const double points = bodies * static_cast<double>(spec->node_count());
+  const double surfaces = (tracks.tcsb + tracks.plain) * kWorldSurfaceCopies * points * kPointBytes +
+                          kWorldBlockSteps * points * (kPointBytes + 1);  // the reference's block, with its mask
+  return bodies * (b.shared + tracks.tcsb * b.tcsb + tracks.plain * b.plain) + surfaces;
+}
+
+/// Peak bytes while cases of net `spec` run: the shared net, one body per method (per case side by side); or, in the
+/// fidelity pass, which runs afterwards, the reference and every subject at once (each counted as a TC-SB body, the
+/// largest kind).
+double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
+  const NetBytes b = net_bytes(suite, spec);
+  const double shared = b.shared, plain = b.plain, tcsb_body = b.tcsb;
   double bytes = shared;
   const auto body_bytes = [&](Method m) {
     switch (m) {
@@ -181,6 +218,7 @@ std::uint64_t estimate_peak_bytes(const Suite& suite) {
     const double net = net_peak_bytes(suite, suite.nets[i]);
     peak = suite.interleave_across_nets ? peak + net : std::max(peak, net);
   }
+  peak = std::max(peak, world_peak_bytes(suite));  // the world pass runs after the cases, alone
   const double bytes = std::ceil(peak + recorder_peak_bytes(suite));
   constexpr double kMax = 1.8e19;  // just under 2^64: saturate rather than overflow
   return bytes >= kMax ? std::numeric_limits<std::uint64_t>::max() : static_cast<std::uint64_t>(bytes);

@@ -24,15 +24,12 @@
 #include "suite/case_plan.h"
 #include "suite/fidelity_plan.h"
 #include "suite/scene_bodies.h"
+#include "suite/world_plan.h"
 #include "view/depth_buffer.h"
 
 namespace tcsb {
 
 namespace {
-
-/// Steps per block of the round-robin, as in the fidelity pass (fidelity_runner.cpp): a body's cache-cold first step
-/// after the other methods ran is 1 in 20, and machine drift hits every method alike.
-constexpr int kWorldBlockSteps = 20;
 
 /// Discrete LOD's grids: the net, then each level about a quarter of the one before (every second grid line), as a
 /// game's precomputed levels are; four levels span 1/64 of the nodes, below what any budget here asks.
@@ -377,19 +374,6 @@ std::vector<double> lod_level_compressions(const Net& net, std::vector<int>& lev
     level_nodes.push_back(nodes);
   }
   return compressions;
-}
-
-/// The budgets every method but full resolution runs at: the suite's targets below 1 in the suite's order; with
-/// fidelity.curves, those and the curve budgets, ascending.
-std::vector<double> world_budgets(const Suite& suite) {
-  std::vector<double> budgets;
-  for (const double c : suite.compression)
-    if (c < 1.0) budgets.push_back(c);
-  if (!suite.fidelity.curves) return budgets;
-  budgets.insert(budgets.end(), suite.fidelity.curves->budgets.begin(), suite.fidelity.curves->budgets.end());
-  std::sort(budgets.begin(), budgets.end());
-  budgets.erase(std::unique(budgets.begin(), budgets.end()), budgets.end());
-  return budgets;
 }
 
 /// Every body plain at full resolution with the suite's passes divided by `solver_divisor`; with `perturbed`, each

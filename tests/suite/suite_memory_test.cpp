@@ -2,12 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include <malloc.h>
-
 #include <algorithm>
 #include <fstream>
 
 #include "case/case_body.h"
+#include "heap_in_use.h"
 #include "scene/scene_world.h"
 
 namespace tcsb {
@@ -140,11 +139,7 @@ TEST(SuiteMemory, ShortfallSaysWhenTheRecorderIsTheCause) {
   EXPECT_TRUE(shortfall->recorder);
 }
 
-/// Heap bytes in use now (malloc's chunks, headers included, and its mmapped blocks): what the estimate models.
-std::size_t heap_in_use() {
-  const struct mallinfo2 m = mallinfo2();
-  return m.uordblks + m.hblkhd;
-}
+using testing::heap_in_use;  // malloc's chunks, headers included, and its mmapped blocks: what the estimate models
 
 // Issue 23: the estimate was 10-14 % low for plain-only nets (peak RSS of 257^2 to 725^2 runs). It missed Bullet's
 // m_X copy of the rest positions and the allocator's cost of a DBVT node (96 B, not 64 B). The model must now be at
