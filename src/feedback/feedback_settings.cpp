@@ -54,6 +54,7 @@ void check_feedback_settings(const FeedbackSettings& s) {
   positive("view_detail_px", s.view_detail_px);
   unit("view_static_share", s.view_static_share);
   unit("view_offscreen_share", s.view_offscreen_share);
+  non_negative("view_lookahead_s", s.view_lookahead_s);
 }
 
 }  // namespace tcsb

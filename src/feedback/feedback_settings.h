@@ -77,6 +77,11 @@ struct FeedbackSettings {
   /// passed, or may turn to, keeps detail by its distance, so it does not come into view from its coarsest cut with
   /// the motion of a coarse cloth (docs/investigations/unseen-detail.md).
   double view_offscreen_share = 0.0;
+  /// With view: also see the cloth as the spectator will this many seconds later (the camera's path then), a node
+  /// worth the larger of the two (hidden nodes judged by the view now only). 0, the default: now only. A camera that
+  /// is known to move — a scripted fly-by, a game's camera following its player — shows cloth coming into view
+  /// before it does, so it is refined before it is seen (docs/investigations/unseen-detail.md).
+  double view_lookahead_s = 0.0;
   /// Per body, or one budget for a scene of many bodies (a suite's scene.bodies; docs/design.md, "Scenes of many
   /// bodies"). Body: every single-cloth run, bit for bit.
   BudgetScope budget_scope = BudgetScope::kBody;

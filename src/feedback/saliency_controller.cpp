@@ -57,6 +57,15 @@ void SaliencyController::evaluate() {
     local_motion(snapshot_, sums_, 0, n, saliency_, seen);
   }
   finish_saliency(snapshot_, settings_, saliency_, seen, visible);
+  if (view && settings_.view_lookahead_s > 0) {
+    // The cloth as the spectator will see it: a node is worth the larger of now and then.
+    const ScreenProjection then(spectator_->camera,
+                                static_cast<double>(snapshot_.step) * spectator_->dt + settings_.view_lookahead_s);
+    ahead_.resize(n);
+    local_motion(snapshot_, sums_, 0, n, ahead_, &then);
+    finish_saliency(snapshot_, settings_, ahead_, &then, {});
+    for (std::size_t i = 0; i < n; ++i) saliency_[i] = std::max(saliency_[i], ahead_[i]);
+  }
   JumpCharge charge;
   if (settings_.popping_charge > 0) {
     cut_neighbours(snapshot_.cut, neighbours_);

@@ -74,6 +74,7 @@ class SaliencyController final : public Controller {
   std::vector<float> interface_weights_;  // per tree node, when the interface charge weighs the pins' tension
   int budget_level_ = 0;                  // the level most of the cloth takes under the budget, for the pull
   std::vector<float> saliency_;
+  std::vector<float> ahead_;    ///< with view_lookahead_s: the saliency as the spectator will see the cloth
   SurfaceOcclusion occlusion_;  // when the spectator's camera models occlusion: its depth buffer, kept between steps
   Evaluation evaluation_;
   bool evaluation_ready_ = false;

@@ -191,6 +191,8 @@ constexpr SuiteSetting kSettings[] = {
      number_range(kUnit), 28, false, Written::kWithView},
     {"feedback.view_offscreen_share", setting_member<&Suite::feedback, &FeedbackSettings::view_offscreen_share>(),
      number_range(kUnit), kNoAxis, false, Written::kUnlessDefault},
+    {"feedback.view_lookahead_s", setting_member<&Suite::feedback, &FeedbackSettings::view_lookahead_s>(),
+     number_range(kNonNegative), kNoAxis, false, Written::kUnlessDefault},
     {"feedback.budget_scope", setting_member<&Suite::feedback, &FeedbackSettings::budget_scope>(),
      choice_range(kBudgetScopes), kNoAxis, false, Written::kUnlessDefault},
 };

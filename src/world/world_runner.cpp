@@ -114,10 +114,14 @@ class TreeCutMember final : public SceneMember {
   /// The camera as a game moves it: each frame the application tells the controller where the spectator stands now
   /// (Controller::set_spectator, the library's call), not a path known in advance. Boundary b sees the state at b x dt,
   /// where the suite's path puts the camera then, so the view terms see what they saw from the path, bit for bit.
+  /// With feedback.view_lookahead_s the game also tells where the camera will be then: a path of two keyframes.
   void tell_spectator(int step) {
     Spectator now{*suite_.scene.camera, suite_.world.dt};
-    now.camera.pose = now.camera.pose_at(static_cast<double>(step) * suite_.world.dt);
+    const double t = static_cast<double>(step) * suite_.world.dt;
+    now.camera.pose = now.camera.pose_at(t);
     now.camera.path.clear();
+    if (const double ahead = suite_.feedback.view_lookahead_s; ahead > 0)
+      now.camera.path = {{t, now.camera.pose}, {t + ahead, suite_.scene.camera->pose_at(t + ahead)}};
     body_.controller->set_spectator(now);
   }
 

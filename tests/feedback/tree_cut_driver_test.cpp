@@ -407,6 +407,37 @@ TEST(TreeCutDriver, TheCameraMovesWhileTheWorldRuns) {
   app.world.removeSoftBody(body.get());
 }
 
+TEST(TreeCutDriver, ALookAheadRefinesWhereTheCameraIsGoing) {
+  // The camera's path takes it from the left half of a sheet on the ground to the right half in 10 s. Within the
+  // first second, without a look-ahead the detail stays on the left; seeing also where the camera will be in 10 s
+  // (feedback.view_lookahead_s), the right half gets its share before the camera arrives.
+  const auto finest_x_after_a_second = [](double lookahead_s) {
+    AppWorld app;
+    const Ground ground(app, 5);
+    auto body = sheet_body(app, 17);
+    app.world.addSoftBody(body.get());
+    FeedbackSettings feedback;
+    feedback.view = true;
+    feedback.view_lookahead_s = lookahead_s;
+    Spectator camera;
+    camera.camera.fov_deg = 40;
+    camera.camera.width_px = 320;
+    camera.camera.height_px = 240;
+    camera.camera.path = {{0.0, {{-0.6, 1.0, 0.8}, {-0.6, 0, 0}}}, {10.0, {{0.6, 1.0, 0.8}, {0.6, 0, 0}}}};
+    TreeCutDriver driver(app.world);
+    driver.drive(*body, make_controller(feedback, 120, 1, camera));
+    for (int f = 0; f < 60; ++f) frame(app);
+    EXPECT_TRUE(body->validate().ok()) << body->validate().summary();
+    const double x = finest_mean_x(*body);
+    app.world.removeSoftBody(body.get());
+    return x;
+  };
+  const double now_only = finest_x_after_a_second(0.0);
+  const double ahead = finest_x_after_a_second(10.0);
+  EXPECT_LT(now_only, -0.1);
+  EXPECT_GT(ahead, now_only + 0.1);
+}
+
 TEST(TreeCutDriver, AWorldBudgetGoesToTheBodyTheCameraSeesClosest) {
   // Two sheets on the ground, one under a close-up camera, one 60 m behind it; one budget of 200 nodes for both
   // (each alone would take 200 of its 289): the near sheet gets most of it (153 against 32 when written: the far
