@@ -7,13 +7,13 @@
 
 namespace tcsb {
 
-namespace {
-
 const NetSpec* net_named(const Suite& suite, const std::string& name) {
   for (const NetSpec& n : suite.nets)
     if (n.name == name) return &n;
   return nullptr;
 }
+
+namespace {
 
 /// Whether two placed nets' rest rectangles share area, at heights within `margin` of each other.
 bool rest_rectangles_overlap(const NetSpec& a, const NetSpec& b, double margin) {

@@ -3,6 +3,7 @@
 // from scene_body_nets().
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "net/net_spec.h"
@@ -13,6 +14,9 @@ namespace tcsb {
 
 /// Whether `suite` is a scene of many bodies: then its run is the world pass.
 inline bool is_world_suite(const Suite& suite) { return !suite.scene.bodies.empty(); }
+
+/// The suite's net of that name, or nullptr.
+const NetSpec* net_named(const Suite& suite, const std::string& name);
 
 /// Each body's net, in scene order: the named net's spec with its rest rectangle centred on the body's position
 /// (x, z) at the position's height. Throws std::invalid_argument for a name the suite has no net of (the parser has

@@ -9,6 +9,7 @@
 #include "net/net.h"
 #include "suite/case_plan.h"
 #include "suite/fidelity_plan.h"
+#include "suite/scene_bodies.h"
 #include "suite/suite_axes.h"
 #include "suite/world_plan.h"
 
@@ -113,9 +114,8 @@ double world_peak_bytes(const Suite& suite) {
   const WorldTracks tracks = world_tracks(suite);
   if (tracks.tcsb + tracks.plain == 0) return 0;
   // Every body is of the first body's net (the suite's reader refuses others).
-  const auto spec = std::find_if(suite.nets.begin(), suite.nets.end(),
-                                 [&](const NetSpec& n) { return n.name == suite.scene.bodies.front().net; });
-  if (spec == suite.nets.end()) return 0;
+  const NetSpec* spec = net_named(suite, suite.scene.bodies.front().net);
+  if (!spec) return 0;
   const NetBytes b = net_bytes(suite, *spec);
   const double bodies = static_cast<double>(suite.scene.bodies.size());
   const double points = bodies * static_cast<double>(spec->node_count());
