@@ -44,25 +44,26 @@ void SaliencyController::evaluate() {
   const std::span<const std::uint8_t> visible = view && occlusion_cell_px() > 0
                                                     ? occlusion_.seen(snapshot_, *view, occlusion_cell_px())
                                                     : std::span<const std::uint8_t>{};
+  // The local motion as `through` sees it, into `out`: in chunks on the workers when there are several (chunks write
+  // disjoint ranges; the normalisation and ranking run after the join: same numbers for any split).
   const int threads = workers_ ? workers_->threads() : 1;
-  if (threads > 1) {
-    // Chunks write disjoint ranges; the normalisation and ranking run after the join: same numbers for any split.
+  const auto motion_through = [&](const ScreenProjection* through, std::vector<float>& out) {
+    if (threads <= 1) return local_motion(snapshot_, sums_, 0, n, out, through);
     const int chunks = threads * 4;
     workers_->parallel_for(chunks, [&](int c) {
       const std::size_t begin = n * static_cast<std::size_t>(c) / static_cast<std::size_t>(chunks);
       const std::size_t end = n * static_cast<std::size_t>(c + 1) / static_cast<std::size_t>(chunks);
-      local_motion(snapshot_, sums_, begin, end, saliency_, seen);
+      local_motion(snapshot_, sums_, begin, end, out, through);
     });
-  } else {
-    local_motion(snapshot_, sums_, 0, n, saliency_, seen);
-  }
+  };
+  motion_through(seen, saliency_);
   finish_saliency(snapshot_, settings_, saliency_, seen, visible);
   if (view && settings_.view_lookahead_s > 0) {
     // The cloth as the spectator will see it: a node is worth the larger of now and then.
     const ScreenProjection then(spectator_->camera,
                                 static_cast<double>(snapshot_.step) * spectator_->dt + settings_.view_lookahead_s);
     ahead_.resize(n);
-    local_motion(snapshot_, sums_, 0, n, ahead_, &then);
+    motion_through(&then, ahead_);
     finish_saliency(snapshot_, settings_, ahead_, &then, {});
     for (std::size_t i = 0; i < n; ++i) saliency_[i] = std::max(saliency_[i], ahead_[i]);
   }
