@@ -53,24 +53,29 @@ TEST_F(Cli, AWorldSuiteWithCurvesWritesItsSpeedUpAtEqualError) {
   EXPECT_NE(read.out.find("Many bodies: speed-up at equal error"), std::string::npos);
 }
 
-TEST_F(Cli, AWorldCurveBudgetOfEveryNodeExitsTwoNamingTheField) {
+class WorldCli : public Cli {
+ protected:
+  /// `tcsb run` of the suite refuses it: exit 2, one line naming `field`, no result written.
+  void expect_run_refused(const json& suite, const std::string& field) {
+    write_file(dir_ / "row.json", suite.dump());
+    const Outcome o = tcsb("run row.json --quiet --out result.json");
+    EXPECT_EQ(o.exit_code, 2);
+    EXPECT_EQ(count_lines(o.err), 1) << o.err;
+    EXPECT_NE(o.err.find(field), std::string::npos) << o.err;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "result.json"));
+  }
+};
+
+TEST_F(WorldCli, AWorldCurveBudgetOfEveryNodeExitsTwoNamingTheField) {
   json j = testing::world_suite_json();
   j["fidelity"] = {{"curves", {{"budgets", {0.25, 1.0}}, {"solver_divisors", {2}}}}};
-  write_file(dir_ / "row.json", j.dump());
-  const Outcome o = tcsb("run row.json --quiet --out result.json");
-  EXPECT_EQ(o.exit_code, 2);
-  EXPECT_EQ(count_lines(o.err), 1) << o.err;
-  EXPECT_NE(o.err.find("fidelity.curves.budgets[1]"), std::string::npos) << o.err;
+  expect_run_refused(j, "fidelity.curves.budgets[1]");
 }
 
-TEST_F(Cli, OverlappingBodiesExitTwoNamingTheField) {
+TEST_F(WorldCli, OverlappingBodiesExitTwoNamingTheField) {
   json j = testing::world_suite_json();
   j["scene"]["bodies"][1]["position"] = {-2.5, 2.0, 0.0};
-  write_file(dir_ / "row.json", j.dump());
-  const Outcome o = tcsb("run row.json --quiet --out result.json");
-  EXPECT_EQ(o.exit_code, 2);
-  EXPECT_EQ(count_lines(o.err), 1) << o.err;
-  EXPECT_NE(o.err.find("scene.bodies[1].position"), std::string::npos) << o.err;
+  expect_run_refused(j, "scene.bodies[1].position");
 }
 
 TEST_F(Cli, AWorldSuitesFramesAreTheWorldPasssEveryKthStep) {

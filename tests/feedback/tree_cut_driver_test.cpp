@@ -372,6 +372,19 @@ double finest_mean_x(const TcSoftBody& body) {
   return count > 0 ? sum / count : 0;
 }
 
+/// A close-up camera 1 m above the sheet's line x (the sheets of these tests lie on the ground, 2 m wide): at x = -0.6
+/// it sees the left half, at 0.6 the right.
+CameraPose close_up_over(double x) { return {{x, 1.0, 0.8}, {x, 0, 0}}; }
+
+Spectator close_up_spectator(double x) {
+  Spectator s;
+  s.camera.pose = close_up_over(x);
+  s.camera.fov_deg = 40;
+  s.camera.width_px = 320;
+  s.camera.height_px = 240;
+  return s;
+}
+
 TEST(TreeCutDriver, TheCameraMovesWhileTheWorldRuns) {
   // A close-up camera on one half of a sheet lying on the ground keeps the detail there; moved to the other half,
   // the detail follows it.
@@ -381,13 +394,8 @@ TEST(TreeCutDriver, TheCameraMovesWhileTheWorldRuns) {
   app.world.addSoftBody(body.get());
   FeedbackSettings feedback;
   feedback.view = true;
-  Spectator left;
-  left.camera.pose = {{-0.6, 1.0, 0.8}, {-0.6, 0, 0}};
-  left.camera.fov_deg = 40;
-  left.camera.width_px = 320;
-  left.camera.height_px = 240;
-  Spectator right = left;
-  right.camera.pose = {{0.6, 1.0, 0.8}, {0.6, 0, 0}};
+  const Spectator left = close_up_spectator(-0.6);
+  const Spectator right = close_up_spectator(0.6);
   TreeCutDriver driver(app.world);
   driver.drive(*body, make_controller(feedback, 120, 1, left));
   Controller* controller = driver.controller(*body);
@@ -419,11 +427,8 @@ TEST(TreeCutDriver, ALookAheadRefinesWhereTheCameraIsGoing) {
     FeedbackSettings feedback;
     feedback.view = true;
     feedback.view_lookahead_s = lookahead_s;
-    Spectator camera;
-    camera.camera.fov_deg = 40;
-    camera.camera.width_px = 320;
-    camera.camera.height_px = 240;
-    camera.camera.path = {{0.0, {{-0.6, 1.0, 0.8}, {-0.6, 0, 0}}}, {10.0, {{0.6, 1.0, 0.8}, {0.6, 0, 0}}}};
+    Spectator camera = close_up_spectator(-0.6);
+    camera.camera.path = {{0.0, close_up_over(-0.6)}, {10.0, close_up_over(0.6)}};
     TreeCutDriver driver(app.world);
     driver.drive(*body, make_controller(feedback, 120, 1, camera));
     for (int f = 0; f < 60; ++f) frame(app);
