@@ -38,6 +38,7 @@ RunTables run_tables(const RunResult& result) {
       t.configurations.push_back(table_set(configuration_result(result, c), configuration_cases(result, c)));
   }
   if (result.fidelity) t.fidelity = fidelity_tables(*result.fidelity);
+  if (result.world) t.world_equal_error = world_equal_error(*result.world);
   return t;
 }
 

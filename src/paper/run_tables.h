@@ -10,6 +10,7 @@
 
 #include "paper/fidelity_tables.h"
 #include "paper/paper_tables.h"
+#include "paper/world_equal_error.h"
 #include "run/run_result.h"
 
 namespace tcsb {
@@ -37,6 +38,8 @@ struct RunTables {
   TableSet whole;                          ///< every case; empty tables when the suite has axes
   std::vector<TableSet> configurations;    ///< one per configuration of a suite with axes; none without
   std::optional<FidelityTables> fidelity;  ///< with a fidelity pass
+  /// With a world pass that ran its curves (fidelity.curves): its speed-up at equal error.
+  std::optional<WorldEqualError> world_equal_error;
 };
 
 /// The tables of `result` as it stands.

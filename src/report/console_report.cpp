@@ -210,7 +210,7 @@ void print_console_report(const RunResult& result, const RunTables& tables, std:
   }
   if (result.world) {
     out << '\n';
-    print_world_report(result, out);
+    print_world_report(result, tables, out);
   }
 }
 

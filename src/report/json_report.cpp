@@ -344,7 +344,7 @@ ojson native_json(const RunResult& result, const RunTables& tables) {
   }
   add_fidelity_json(result, tables,
                     doc);  // fidelity, pareto, max_compression (and calibrated): only with a fidelity pass
-  add_world_json(result, doc);
+  add_world_json(result, tables, doc);
   doc["status"] = diverged ? "diverged" : "ok";
   doc["wall_s"] = json_number(result.wall_s);
   return doc;

@@ -50,7 +50,7 @@ void print_world_equal_error(const WorldEqualError& table, std::ostream& out) {
 
 }  // namespace
 
-void print_world_report(const RunResult& result, std::ostream& out) {
+void print_world_report(const RunResult& result, const RunTables& tables, std::ostream& out) {
   if (!result.world) return;
   const WorldResult& w = *result.world;
   using Align = TextTable::Align;
@@ -76,7 +76,7 @@ void print_world_report(const RunResult& result, std::ostream& out) {
          "pop = the largest jump on the image where a body changed its resolution; full_resolution /d: the suite's "
          "passes a step divided by d\n";
   t.print(out);
-  if (const std::optional<WorldEqualError> table = world_equal_error(w)) print_world_equal_error(*table, out);
+  if (tables.world_equal_error) print_world_equal_error(*tables.world_equal_error, out);
 }
 
 }  // namespace tcsb

@@ -36,7 +36,7 @@ void add_world_equal_error(const WorldEqualError& table, ojson& world) {
 
 }  // namespace
 
-void add_world_json(const RunResult& result, nlohmann::ordered_json& doc) {
+void add_world_json(const RunResult& result, const RunTables& tables, nlohmann::ordered_json& doc) {
   if (!result.world) return;
   const WorldResult& w = *result.world;
   ojson methods = ojson::array();
@@ -66,7 +66,7 @@ void add_world_json(const RunResult& result, nlohmann::ordered_json& doc) {
                   {"scene_nodes", w.scene_nodes},
                   {"wall_s", json_number(w.wall_s)},
                   {"methods", std::move(methods)}};
-  if (const std::optional<WorldEqualError> table = world_equal_error(w)) add_world_equal_error(*table, doc["world"]);
+  if (tables.world_equal_error) add_world_equal_error(*tables.world_equal_error, doc["world"]);
 }
 
 }  // namespace tcsb
