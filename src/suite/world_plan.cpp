@@ -1,6 +1,8 @@
 #include "suite/world_plan.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "suite/scene_bodies.h"
 
@@ -25,6 +27,26 @@ WorldTracks world_tracks(const Suite& suite) {
   t.plain = 1 + budgets;
   if (suite.fidelity.curves) t.plain += 1 + static_cast<int>(suite.fidelity.curves->solver_divisors.size());
   return t;
+}
+
+std::vector<double> lod_camera_distances(const Suite& suite, int steps) {
+  const Camera& camera = *suite.scene.camera;
+  const double ahead = suite.feedback.view_lookahead_s;
+  const std::vector<NetSpec> placed = scene_body_nets(suite);
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(steps) * placed.size());
+  for (int s = 0; s < steps; ++s) {
+    const double t = static_cast<double>(s + 1) * suite.world.dt;
+    const std::array<double, 3> now = camera.pose_at(t).position;
+    const std::array<double, 3> then = camera.pose_at(t + ahead).position;
+    for (const NetSpec& n : placed) {
+      const auto distance = [&](const std::array<double, 3>& eye) {
+        return std::hypot(eye[0] - n.centre_x, eye[1] - n.elevation, eye[2] - n.centre_z);
+      };
+      out.push_back(ahead > 0 ? std::min(distance(now), distance(then)) : distance(now));
+    }
+  }
+  return out;
 }
 
 }  // namespace tcsb

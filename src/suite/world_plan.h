@@ -27,4 +27,10 @@ struct WorldTracks {
 };
 WorldTracks world_tracks(const Suite& suite);
 
+/// What discrete LOD switches on (fidelity/discrete_lod.h), step-major over the first `steps` steps: the camera's
+/// distance to each body's placed position (scene_body_nets) at the end of the step, which a game knows in advance from
+/// its camera's path. With feedback.view_lookahead_s the game anticipates for its LOD as TC-SB's view terms do, and a
+/// body's distance is the nearer of the camera's now and that many seconds later: both methods see the same future.
+std::vector<double> lod_camera_distances(const Suite& suite, int steps);
+
 }  // namespace tcsb

@@ -353,19 +353,6 @@ class WorldTrack {
   std::vector<std::vector<int>> levels_;  // per body, for the observer
 };
 
-/// Camera to each body's rest centre at the end of every step (the camera's view of that step), step-major: what a
-/// game's LOD selection reads, known in advance from the camera's path.
-std::vector<double> camera_distances(const Suite& suite, const std::vector<NetSpec>& placed, int steps) {
-  std::vector<double> out;
-  out.reserve(static_cast<std::size_t>(steps) * placed.size());
-  for (int s = 0; s < steps; ++s) {
-    const std::array<double, 3> eye = suite.scene.camera->pose_at(static_cast<double>(s + 1) * suite.world.dt).position;
-    for (const NetSpec& n : placed)
-      out.push_back(std::hypot(eye[0] - n.centre_x, eye[1] - n.elevation, eye[2] - n.centre_z));
-  }
-  return out;
-}
-
 /// Level k's share of the net's nodes: 4^-k, as long as the grid still shrinks.
 std::vector<double> lod_level_compressions(const Net& net, std::vector<int>& level_nodes) {
   std::vector<double> compressions{1.0};
@@ -413,7 +400,7 @@ WorldResult run_world(const Suite& suite, WorldObserver* observer) {
   tracks.push_back(full_resolution_track(suite, "full_resolution", 1, false, nets));
   std::vector<int> level_nodes;
   const std::vector<double> level_compressions = lod_level_compressions(*nets.front(), level_nodes);
-  const std::vector<double> distances = camera_distances(suite, placed, total);
+  const std::vector<double> distances = lod_camera_distances(suite, total);
   const std::size_t first_measured = static_cast<std::size_t>(suite.warmup_steps) * nets.size();
   for (const double c : world_budgets(suite)) {
     const int world_budget = static_cast<int>(std::llround(c * static_cast<double>(result.scene_nodes)));
