@@ -63,7 +63,8 @@ void add_world_json(const RunResult& result, const RunTables& tables, nlohmann::
       row["operations"] = {{"refines", m.churn->refines},
                            {"coarsens", m.churn->coarsens},
                            {"undone", m.churn->undone},
-                           {"reversals", m.churn->reversals}};
+                           {"reversals", m.churn->reversals},
+                           {"nodes_moved", m.churn->nodes_moved}};
     if (m.solver_divisor != 1) row["solver_divisor"] = m.solver_divisor;
     methods.push_back(std::move(row));
   }

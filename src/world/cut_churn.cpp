@@ -20,6 +20,7 @@ void CutChurn::end_boundary(int committed_nodes) {
   committed_ = committed_nodes;
   if (before < 0 || committed_nodes == before) return;
   const int move = committed_nodes > before ? 1 : -1;
+  if (counting()) counts_.nodes_moved += move * (committed_nodes - before);
   if (counting() && last_move_ == -move && recent(last_move_step_)) ++counts_.reversals;
   last_move_ = move;
   last_move_step_ = step_;

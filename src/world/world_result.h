@@ -18,6 +18,10 @@ struct ChurnCounts {
   /// Boundaries at which the body's committed nodes moved against their last move, made within the window: its
   /// share of the detail going up and down.
   long long reversals = 0;
+  /// The committed nodes' changes, |after - before| a boundary, summed: a third of it (a block adds or removes three
+  /// nodes) is the operations that moved detail between bodies or to and from the budget; the rest of the
+  /// operations traded detail within a body.
+  long long nodes_moved = 0;
 };
 
 /// One method over the whole scene.

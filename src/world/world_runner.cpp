@@ -330,6 +330,7 @@ class WorldTrack {
     sum.coarsens += body.coarsens;
     sum.undone += body.undone;
     sum.reversals += body.reversals;
+    sum.nodes_moved += body.nodes_moved;
   }
 
   /// Outside the timed intervals, from the surfaces the step reconstructed anyway.

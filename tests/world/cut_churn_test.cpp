@@ -1,5 +1,5 @@
 // What CutChurn counts: operations begun from the first counted step, those undoing a recent one on the same block,
-// and the body's nodes turning back.
+// the body's nodes turning back, and how far they moved.
 #include "world/cut_churn.h"
 
 #include <gtest/gtest.h>
@@ -38,6 +38,7 @@ TEST(CutChurn, RemembersTheWarmUpButCountsOnlyFromTheFirstStep) {
   EXPECT_EQ(churn.counts().refines, 0);
   EXPECT_EQ(churn.counts().coarsens, 1);
   EXPECT_EQ(churn.counts().undone, 1);
+  EXPECT_EQ(churn.counts().nodes_moved, 3);  // the warm-up's move is not counted
 }
 
 TEST(CutChurn, CountsTheNodesTurningBackWithinTheWindow) {
@@ -54,6 +55,7 @@ TEST(CutChurn, CountsTheNodesTurningBackWithinTheWindow) {
   boundary(11, 100);  // up 5 after: outside the window
   boundary(12, 97);   // down 1 after: a reversal
   EXPECT_EQ(churn.counts().reversals, 2);
+  EXPECT_EQ(churn.counts().nodes_moved, 3 + 3 + 3 + 3 + 3);
 }
 
 }  // namespace
