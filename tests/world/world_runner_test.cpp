@@ -82,6 +82,8 @@ TEST_F(WorldPass, CountsTcsbsOperationsOnly) {
     ASSERT_TRUE(m.churn) << m.method;
     EXPECT_GT(m.churn->refines + m.churn->coarsens, 0) << m.method;
     EXPECT_LE(m.churn->undone, m.churn->refines + m.churn->coarsens) << m.method;
+    // An operation moves a body's committed nodes by at most three (four children for their parent).
+    EXPECT_LE(m.churn->nodes_moved, 3 * (m.churn->refines + m.churn->coarsens)) << m.method;
   }
 }
 
