@@ -63,18 +63,23 @@ void print_world_report(const RunResult& result, const RunTables& tables, std::o
                {"time/full"},
                {"p95 px"},
                {"pop max px"},
-               {"changes"}});
+               {"changes"},
+               {"ops"},
+               {"undone"}});
   for (const WorldMethodResult& m : w.methods)
     t.add_row({world_method_label(m), fixed(m.budget, 2), m.status, fixed(m.mean_nodes, 1), fixed(m.step_ms, 3),
                fixed(m.boundary_ms, 3), fixed(m.step_ratio, 3), fixed(m.p95_px, 2), fixed(m.popping_px, 2),
-               std::to_string(m.resolution_changes)});
+               std::to_string(m.resolution_changes),
+               m.churn ? std::to_string(m.churn->refines + m.churn->coarsens) : std::string(),
+               m.churn ? std::to_string(m.churn->undone) : std::string()});
   out << "World pass: " << w.bodies << " bodies, " << w.scene_nodes
       << " nodes at full resolution; p95 px = the 95th percentile of the pixel error over every point of every body "
          "the camera sees, mean over steps; boundary ms = the part of the step before the world steps (TC-SB's "
          "blends, feedback and operations; discrete LOD's switches); time/full = median over blocks of the step's "
          "ratio to full resolution's; "
-         "pop = the largest jump on the image where a body changed its resolution; full_resolution /d: the suite's "
-         "passes a step divided by d\n";
+         "pop = the largest jump on the image where a body changed its resolution; ops = TC-SB's refines and coarsens "
+         "begun, undone = those that undid one begun on the same block within two evaluations; full_resolution /d: "
+         "the suite's passes a step divided by d\n";
   t.print(out);
   if (tables.world_equal_error) print_world_equal_error(*tables.world_equal_error, out);
 }

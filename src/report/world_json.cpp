@@ -59,6 +59,12 @@ void add_world_json(const RunResult& result, const RunTables& tables, nlohmann::
       row["diverged_reason"] = m.diverged_reason;
     }
     if (m.lod_scale) row["lod_scale_m"] = json_number(*m.lod_scale);
+    if (m.churn)
+      row["operations"] = {{"refines", m.churn->refines},
+                           {"coarsens", m.churn->coarsens},
+                           {"undone", m.churn->undone},
+                           {"reversals", m.churn->reversals},
+                           {"nodes_moved", m.churn->nodes_moved}};
     if (m.solver_divisor != 1) row["solver_divisor"] = m.solver_divisor;
     methods.push_back(std::move(row));
   }

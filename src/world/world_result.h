@@ -8,6 +8,22 @@
 
 namespace tcsb {
 
+/// Operations TC-SB bodies began over the measured steps (world/cut_churn.h), summed over a scene's bodies.
+struct ChurnCounts {
+  long long refines = 0;   ///< refines begun
+  long long coarsens = 0;  ///< coarsens begun
+  /// Of those, the ones that undid the last operation begun on the same block within the window: a coarsen of a
+  /// block refined, or a refine of a block coarsened, within the pass's churn window (two evaluation intervals).
+  long long undone = 0;
+  /// Boundaries at which the body's committed nodes moved against their last move, made within the window: its
+  /// share of the detail going up and down.
+  long long reversals = 0;
+  /// The committed nodes' changes, |after - before| a boundary, summed: a third of it (a block adds or removes three
+  /// nodes) is the operations that moved detail between bodies or to and from the budget; the rest of the
+  /// operations traded detail within a body.
+  long long nodes_moved = 0;
+};
+
 /// One method over the whole scene.
 struct WorldMethodResult {
   /// "full_resolution" (the first row, solver_divisor 1, is the reference), "tcsb_world", "tcsb_body",
@@ -34,8 +50,9 @@ struct WorldMethodResult {
   /// The largest jump on the image of any body's surface at a step boundary where the method changed its resolution
   /// (TC-SB: operations, and the boundaries its geomorph spreads them over; discrete LOD: a switch), pixels.
   double popping_px = 0;
-  int resolution_changes = 0;       ///< those boundaries, counted per body
-  std::optional<double> lod_scale;  ///< discrete LOD: the fitted distance of its first switch, metres
+  int resolution_changes = 0;        ///< those boundaries, counted per body
+  std::optional<double> lod_scale;   ///< discrete LOD: the fitted distance of its first switch, metres
+  std::optional<ChurnCounts> churn;  ///< TC-SB: its operations, and how many undid a recent one
 };
 
 struct WorldResult {

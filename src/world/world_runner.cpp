@@ -26,6 +26,7 @@
 #include "suite/scene_bodies.h"
 #include "suite/world_plan.h"
 #include "view/depth_buffer.h"
+#include "world/cut_churn.h"
 
 namespace tcsb {
 
@@ -38,6 +39,10 @@ constexpr int kLodLevels = 4;
 /// A game's margin against flicker at the thresholds: a body switches coarser beyond 1.1 x its threshold and finer
 /// within 0.9 x it (DiscreteLod::hysteresis).
 constexpr double kLodHysteresis = 0.1;
+
+/// An operation undone, or a body's nodes turned back, by one of the next two evaluations counts as churn: detail
+/// that follows the camera stays for as long as the camera takes to pass a body, many evaluations.
+constexpr int kChurnWindowEvaluations = 2;
 
 /// Seeds of the TC-SB bodies' controllers: past every case index, one per body, the same in both TC-SB methods.
 constexpr std::size_t kWorldSeedIndex = 200000;
@@ -62,6 +67,8 @@ class SceneMember {
   virtual const btSoftBody& bullet() const = 0;
   /// The body and its controller, for a world budget: only TC-SB under a budget.
   virtual std::optional<WorldBudgetMember> budget_member() { return std::nullopt; }
+  /// TC-SB's operations over the measured steps (world/cut_churn.h).
+  virtual std::optional<ChurnCounts> churn() const { return std::nullopt; }
 };
 
 /// A plain body at full resolution.
@@ -80,16 +87,24 @@ class FullResolutionMember final : public SceneMember {
 /// TC-SB with its controller, its surface geomorphed as the fidelity pass shows it (fidelity/surface_morph.h).
 class TreeCutMember final : public SceneMember {
  public:
-  TreeCutMember(const Suite& suite, Body body) : suite_(suite), body_(std::move(body)), tc_(*body_.tc) {
+  TreeCutMember(const Suite& suite, Body body)
+      : suite_(suite), body_(std::move(body)), tc_(*body_.tc),
+        churn_(tc_.tree().size(), kChurnWindowEvaluations * suite.feedback.evaluation_interval, suite.warmup_steps) {
     tc_.impl().set_op_sink(&ops_);
+    tc_.set_cut_listener(&churn_);
   }
-  ~TreeCutMember() override { tc_.impl().set_op_sink(nullptr); }
+  ~TreeCutMember() override {
+    tc_.set_cut_listener(nullptr);
+    tc_.impl().set_op_sink(nullptr);
+  }
   void boundary(int step) override {
     if (body_.controller && suite_.feedback.view) tell_spectator(step);
     const std::int64_t before = ops_.count;
+    churn_.begin_boundary(step);
     tc_.advance_blends(OrderSettling::kByCaller);
     if (body_.controller) body_.controller->before_step(tc_);
     tc_.settle_order();
+    churn_.end_boundary(tc_.committed_count());
     // A geomorphed surface also moves at a boundary without operations while it spreads an earlier jump.
     changed_ = ops_.count != before || morph_.morphing();
     morph_pending_ = changed_;
@@ -109,6 +124,7 @@ class TreeCutMember final : public SceneMember {
     if (!body_.controller) return std::nullopt;
     return WorldBudgetMember{&tc_, body_.controller.get()};
   }
+  std::optional<ChurnCounts> churn() const override { return churn_.counts(); }
 
  private:
   /// The camera as a game moves it: each frame the application tells the controller where the spectator stands now
@@ -130,6 +146,7 @@ class TreeCutMember final : public SceneMember {
   TcSoftBody& tc_;
   SurfaceMorph morph_;
   OpCounter ops_;
+  CutChurn churn_;
   bool changed_ = false;
   bool morph_pending_ = false;
 };
@@ -284,6 +301,8 @@ class WorldTrack {
     std::vector<double> ratios;
     for (std::size_t k = 0; k < std::min(reference_blocks.size(), result.block_step_ms.size()); ++k)
       if (reference_blocks[k] > 0) ratios.push_back(result.block_step_ms[k] / reference_blocks[k]);
+    for (const auto& m : members_)
+      if (const std::optional<ChurnCounts> c = m->churn()) add_churn(*c);
     if (!alive()) result.block_step_ms.clear();  // a part of the blocks would pair with the wrong ones
     result.step_ratio = alive() && !ratios.empty() ? median(ratios) : 0.0;
     return result;
@@ -303,6 +322,15 @@ class WorldTrack {
       result.popping_px = std::max(result.popping_px, jump.max);
       surfaces_[b] = after_;
     }
+  }
+
+  void add_churn(const ChurnCounts& body) {
+    ChurnCounts& sum = result.churn ? *result.churn : result.churn.emplace();
+    sum.refines += body.refines;
+    sum.coarsens += body.coarsens;
+    sum.undone += body.undone;
+    sum.reversals += body.reversals;
+    sum.nodes_moved += body.nodes_moved;
   }
 
   /// Outside the timed intervals, from the surfaces the step reconstructed anyway.

@@ -73,6 +73,20 @@ TEST(WorldPassBudget, GivesTheBannerNearTheCameraMoreNodesThanAFarOne) {
   EXPECT_GT(w.body_mean_nodes[0] - w.body_mean_nodes[2], b.body_mean_nodes[0] - b.body_mean_nodes[2]);
 }
 
+TEST_F(WorldPass, CountsTcsbsOperationsOnly) {
+  for (const WorldMethodResult& m : result_->methods) {
+    if (m.method.rfind("tcsb", 0) != 0) {
+      EXPECT_FALSE(m.churn) << m.method;
+      continue;
+    }
+    ASSERT_TRUE(m.churn) << m.method;
+    EXPECT_GT(m.churn->refines + m.churn->coarsens, 0) << m.method;
+    EXPECT_LE(m.churn->undone, m.churn->refines + m.churn->coarsens) << m.method;
+    // An operation moves a body's committed nodes by at most three (four children for their parent).
+    EXPECT_LE(m.churn->nodes_moved, 3 * (m.churn->refines + m.churn->coarsens)) << m.method;
+  }
+}
+
 TEST_F(WorldPass, DiscreteLodSwitchesAndItsPopsAreMeasured) {
   const WorldMethodResult& lod = world_method(*result_, "discrete_lod");
   ASSERT_TRUE(lod.lod_scale);
