@@ -815,6 +815,7 @@ TEST(SuiteReject, OtherRanges) {
   rejected_edit([](json& j) { j["feedback"] = {{"max_step_ms", -1}}; }, "feedback.max_step_ms");
   rejected_edit([](json& j) { j["feedback"] = {{"popping_charge", -0.5}}; }, "feedback.popping_charge");
   rejected_edit([](json& j) { j["feedback"] = {{"popping_charge", "high"}}; }, "feedback.popping_charge");
+  rejected_edit([](json& j) { j["feedback"] = {{"view_popping_charge", -1}}; }, "feedback.view_popping_charge");
   rejected_edit([](json& j) { j["feedback"] = {{"interface_charge", -1}}; }, "feedback.interface_charge");
   rejected_edit([](json& j) { j["feedback"] = {{"interface_charge", true}}; }, "feedback.interface_charge");
   rejected_edit(
