@@ -80,7 +80,8 @@ class FullResolutionMember final : public SceneMember {
 /// TC-SB with its controller, its surface geomorphed as the fidelity pass shows it (fidelity/surface_morph.h).
 class TreeCutMember final : public SceneMember {
  public:
-  TreeCutMember(const Suite& suite, Body body) : suite_(suite), body_(std::move(body)), tc_(*body_.tc) {
+  TreeCutMember(const Suite& suite, Body body)
+      : suite_(suite), body_(std::move(body)), tc_(*body_.tc), morph_(suite.fidelity.geomorph_boundaries) {
     tc_.impl().set_op_sink(&ops_);
   }
   ~TreeCutMember() override { tc_.impl().set_op_sink(nullptr); }

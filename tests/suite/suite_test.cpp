@@ -1081,5 +1081,14 @@ TEST(SuiteParse, FidelityCurvesAreReadAndBadOnesRefusedNamingTheField) {
   rejected_edit([](json& k) { k["fidelity"] = {{"curves", {{"budgets", {0.1}}}}}; }, "fidelity.curves.solver_divisors");
 }
 
+TEST(SuiteParse, TheGeomorphsLengthIsReadAndBadOnesRefusedNamingTheField) {
+  json j = minimal();
+  EXPECT_FALSE(parse_suite_text(j.dump(), "m.json").fidelity.geomorph_boundaries) << "absent: the blend's own";
+  j["fidelity"] = {{"geomorph_boundaries", 24}};
+  EXPECT_EQ(parse_suite_text(j.dump(), "g.json").fidelity.geomorph_boundaries, 24);
+  rejected_edit([](json& k) { k["fidelity"] = {{"geomorph_boundaries", 0}}; }, "fidelity.geomorph_boundaries");
+  rejected_edit([](json& k) { k["fidelity"] = {{"geomorph_boundaries", 2.5}}; }, "fidelity.geomorph_boundaries");
+}
+
 }  // namespace
 }  // namespace tcsb
