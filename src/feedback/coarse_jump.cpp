@@ -51,7 +51,12 @@ void cut_neighbours(const CutView& cut, CutNeighbours& out) {
   }
 }
 
-double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours, TreeId parent) {
+namespace {
+
+/// The largest `distance(before, after)` over the corners of every child's block of `parent` (coarse_jump.h).
+template <class Distance>
+double largest_corner_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours, TreeId parent,
+                           Distance distance) {
   const LodTree& tree = *snapshot.cut.tree;
   const LodNode& p = tree.node(parent);
   const auto index_of = [&](TreeId id) { return snapshot.cut.index[static_cast<std::size_t>(id)]; };
@@ -112,7 +117,7 @@ double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours,
     const Eigen::Vector3d& xc = child_x[static_cast<std::size_t>(k)];
     const Eigen::Vector3d rc = tree.rest(c);
     if (cn.is_leaf()) {
-      jump = std::max(jump, (xc - (xp + fp * plane(rc - rp))).norm());
+      jump = std::max(jump, distance(xc, Eigen::Vector3d(xp + fp * plane(rc - rp))));
       continue;
     }
     Eigen::Matrix2d crr = Eigen::Matrix2d::Zero();
@@ -129,10 +134,28 @@ double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours,
         const Eigen::Vector3d rl = tree.rest(static_cast<TreeId>(gy * width + gx));
         const Eigen::Vector3d before = xc + fc * plane(rl - rc);
         const Eigen::Vector3d after = xp + fp * plane(rl - rp);
-        jump = std::max(jump, (before - after).norm());
+        jump = std::max(jump, distance(before, after));
       }
   }
   return jump;
+}
+
+}  // namespace
+
+double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours, TreeId parent) {
+  return largest_corner_jump(snapshot, neighbours, parent,
+                             [](const Eigen::Vector3d& before, const Eigen::Vector3d& after) {
+                               return (before - after).norm();
+                             });
+}
+
+double coarse_jump_px(const CutSnapshot& snapshot, const CutNeighbours& neighbours, TreeId parent,
+                      const ScreenProjection& view) {
+  return largest_corner_jump(snapshot, neighbours, parent,
+                             [&view](const Eigen::Vector3d& before, const Eigen::Vector3d& after) {
+                               const ScreenPoint seen = view.project(before);
+                               return seen.in_view ? view.displacement_px(after, seen) : 0.0;
+                             });
 }
 
 }  // namespace tcsb

@@ -11,14 +11,17 @@
 //   after:  x_P + F_P (r_leaf - r_P), x_P where begin_coarse puts P (the children's centre of mass, or its rest
 //           position when it holds a pinned leaf) and F_P the fit over what P is linked to while it arrives: the
 //           children's neighbours outside the block and the children themselves.
-// Reads only the snapshot (positions copied at a step boundary) and the cut's topology, so it can run on a feedback
-// worker while Bullet steps.
+// Measured in metres, or in pixels on the spectator's image (coarse_jump_px): a jump of a centimetre is glaring a
+// metre from the lens and invisible twenty metres away or off-screen, and under one world budget the charge then
+// moves coarsens to where the spectator cannot see them. Reads only the snapshot (positions copied at a step
+// boundary) and the cut's topology, so it can run on a feedback worker while Bullet steps.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "../feedback/cut_snapshot.h"
+#include "../view/screen_projection.h"
 
 namespace tcsb {
 
@@ -36,5 +39,11 @@ void cut_neighbours(const CutView& cut, CutNeighbours& out);
 /// coarsened now (before the geomorph spreads it). `parent`'s children must all be in the snapshot's cut, and the
 /// snapshot must hold positions. O(children x degree).
 double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours, TreeId parent);
+
+/// The same jump as the spectator would see it on `view`'s image, pixels: at every corner whose place before the
+/// coarsen is in view, the distance on the image to its place after (ScreenProjection::displacement_px); corners out
+/// of view or behind the camera show no jump. The snapshot's positions must be in the camera's world frame.
+double coarse_jump_px(const CutSnapshot& snapshot, const CutNeighbours& neighbours, TreeId parent,
+                      const ScreenProjection& view);
 
 }  // namespace tcsb

@@ -77,6 +77,8 @@ void rank_candidates(const CutSnapshot& snapshot, std::span<const float> salienc
     priority *= interface.factor(snapshot.cut, parent);
     if (charge.per_pct > 0)
       priority += charge.per_pct * 100.0 * coarse_jump(snapshot, *charge.neighbours, parent) / charge.extent;
+    if (charge.per_px > 0)
+      priority += charge.per_px * coarse_jump_px(snapshot, *charge.neighbours, parent, *charge.view);
     out.coarse.push_back({priority, parent});
   }
   keep_best(out.refine, limit, higher);

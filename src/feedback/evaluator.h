@@ -36,16 +36,21 @@ struct Evaluation {
 struct JumpCharge {
   double per_pct = 0;  ///< priority added per 1 % of `extent` that the surface would jump; 0 charges nothing
   double extent = 1;   ///< the net's extent, metres
-  const CutNeighbours* neighbours = nullptr;  ///< the snapshot's cut adjacency; required when per_pct > 0
+  const CutNeighbours* neighbours = nullptr;  ///< the snapshot's cut adjacency; required when either charge > 0
+  /// Priority added per pixel the surface would jump on `view`'s image (coarse_jump_px; FeedbackSettings::
+  /// view_popping_charge); 0 charges nothing. Adds to the charge per %.
+  double per_px = 0;
+  const ScreenProjection* view = nullptr;  ///< the spectator's camera; required when per_px > 0
 };
 
 /// Ranks at most `limit` candidates of each kind (ties broken by a hash of the tree id: deterministic, and spread
 /// over the net).
-/// With a charge, each coarse candidate's priority grows by per_pct x its jump in % of the extent (the snapshot must
-/// hold positions). With an interface charge c > 0, every candidate's priority is multiplied by exp(-c w b / 4), where
-/// b is its neighbour_balance (feedback/interface_balance.h) and w its weight there (1, or more near the pins:
-/// feedback/pin_tension.h): coarsens that merge a block into coarser surroundings go sooner, coarsens that leave an
-/// isolated block later, and refines likewise the other way round.
+/// With a charge, each coarse candidate's priority grows by per_pct x its jump in % of the extent and per_px x its
+/// jump in pixels on the view's image (the snapshot must hold positions). With an interface charge c > 0, every
+/// candidate's priority is multiplied by exp(-c w b / 4), where b is its neighbour_balance
+/// (feedback/interface_balance.h) and w its weight there (1, or more near the pins: feedback/pin_tension.h): coarsens
+/// that merge a block into coarser surroundings go sooner, coarsens that leave an isolated block later, and refines
+/// likewise the other way round.
 void rank_candidates(const CutSnapshot& snapshot, std::span<const float> saliency, int limit, Evaluation& out,
                      const JumpCharge& charge = {}, const InterfaceCharge& interface = {});
 

@@ -55,6 +55,7 @@ void check_feedback_settings(const FeedbackSettings& s) {
   unit("view_static_share", s.view_static_share);
   unit("view_offscreen_share", s.view_offscreen_share);
   non_negative("view_lookahead_s", s.view_lookahead_s);
+  non_negative("view_popping_charge", s.view_popping_charge);
 }
 
 }  // namespace tcsb

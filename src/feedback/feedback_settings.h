@@ -82,6 +82,11 @@ struct FeedbackSettings {
   /// is known to move — a scripted fly-by, a game's camera following its player — shows cloth coming into view
   /// before it does, so it is refined before it is seen (docs/investigations/unseen-detail.md).
   double view_lookahead_s = 0.0;
+  /// With view: coarse priority added per pixel that a coarsen would make the reconstructed surface jump on the
+  /// spectator's image now (feedback/coarse_jump.h, coarse_jump_px); 0 disables it. The popping charge as the
+  /// spectator sees it: a block large on the image is coarsened last, one off-screen or far away as if uncharged, and
+  /// under a world budget the nodes come from where a jump is not seen (docs/investigations/street-world-budget.md).
+  double view_popping_charge = 0.0;
   /// Per body, or one budget for a scene of many bodies (a suite's scene.bodies; docs/design.md, "Scenes of many
   /// bodies"). Body: every single-cloth run, bit for bit.
   BudgetScope budget_scope = BudgetScope::kBody;

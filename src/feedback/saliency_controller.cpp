@@ -68,9 +68,14 @@ void SaliencyController::evaluate() {
     for (std::size_t i = 0; i < n; ++i) saliency_[i] = std::max(saliency_[i], ahead_[i]);
   }
   JumpCharge charge;
-  if (settings_.popping_charge > 0) {
+  const bool charge_px = view && settings_.view_popping_charge > 0;
+  if (settings_.popping_charge > 0 || charge_px) {
     cut_neighbours(snapshot_.cut, neighbours_);
     charge = {settings_.popping_charge, extent_, &neighbours_};
+  }
+  if (charge_px) {
+    charge.per_px = settings_.view_popping_charge;
+    charge.view = &*view;
   }
   rank_candidates(snapshot_, saliency_, 2 * settings_.max_ops_per_step, evaluation_, charge,
                   {settings_.interface_charge, interface_weights_, settings_.pin_level_pull, budget_level_});

@@ -35,9 +35,11 @@ double stock_energy(const btSoftBody& body, const Net& net, double gravity, std:
 /// TC-SB with its controller (none at compression 1: the body then never changes its cut).
 class TreeCutSubject final : public FidelitySubject {
  public:
-  /// `morph`: show the geomorphed surface (SurfaceMorph); otherwise the committed cut's, which jumps.
-  TreeCutSubject(SceneWorld& world, Body body, bool morph) : world_(world), body_(std::move(body)), tc_(*body_.tc) {
-    if (morph) morph_.emplace();
+  /// `morph`: show the surface geomorphed over `morph_boundaries` (SurfaceMorph); otherwise the committed cut's,
+  /// which jumps.
+  TreeCutSubject(SceneWorld& world, Body body, bool morph, std::optional<int> morph_boundaries)
+      : world_(world), body_(std::move(body)), tc_(*body_.tc) {
+    if (morph) morph_.emplace(morph_boundaries);
     tc_.impl().set_op_sink(&ops_);
   }
   ~TreeCutSubject() override { tc_.impl().set_op_sink(nullptr); }
@@ -191,7 +193,9 @@ std::unique_ptr<FidelitySubject> make_fidelity_subject(const Suite& suite, const
                                                        const FidelitySubject* pace, int fallback_switch_step) {
   Body body = make_body(suite, spec, world, net, seed);
   switch (spec.kind) {
-    case BodyKind::kTcsb: return std::make_unique<TreeCutSubject>(world, std::move(body), spec.geomorph);
+    case BodyKind::kTcsb:
+      return std::make_unique<TreeCutSubject>(world, std::move(body), spec.geomorph,
+                                              suite.fidelity.geomorph_boundaries);
     case BodyKind::kSwitch:
       return std::make_unique<SwitchSubject>(world, std::move(body), body_solver(suite, spec), pace,
                                              fallback_switch_step);

@@ -5,9 +5,9 @@
 namespace tcsb {
 
 void SurfaceMorph::boundary(const TcSoftBody& body) {
-  const int spread = body.settings().blend_steps + 1;
+  const int boundaries = spread(body);
   for (auto it = jumps_.begin(); it != jumps_.end();)  // one boundary older; spent ones go
-    it = ++it->age >= spread ? jumps_.erase(it) : std::next(it);
+    it = ++it->age >= boundaries ? jumps_.erase(it) : std::next(it);
   std::vector<Eigen::Vector3d> before;
   before.swap(raw_);
   reconstruct_leaves(body, raw_);
@@ -27,9 +27,9 @@ void SurfaceMorph::reconstruct(const TcSoftBody& body, std::vector<Eigen::Vector
   if (!fresh_) reconstruct_leaves(body, raw_);
   fresh_ = false;
   leaves = raw_;
-  const double spread = body.settings().blend_steps + 1;
+  const double boundaries = spread(body);
   for (const Jump& jump : jumps_) {
-    const double unspent = 1.0 - jump.age / spread;
+    const double unspent = 1.0 - jump.age / boundaries;
     for (std::size_t k = 0; k < jump.leaf.size(); ++k)
       leaves[static_cast<std::size_t>(jump.leaf[k])] += unspent * jump.offset[k];
   }

@@ -1,6 +1,6 @@
 // SurfaceMorph: TC-SB's reconstructed surface with every jump a step boundary makes spread over the next K + 1
-// boundaries — a geomorph (Hoppe, "Progressive Meshes", SIGGRAPH 1996, §4.2), as the paper's link blending spreads
-// the physical change.
+// boundaries (or as many as a suite's fidelity.geomorph_boundaries says) — a geomorph (Hoppe, "Progressive Meshes",
+// SIGGRAPH 1996, §4.2), as the paper's link blending spreads the physical change.
 //
 // At a boundary no simulated time passes, yet the committed cut's reconstruction (fidelity/reconstruction.h) can
 // change: a coarsen or refine replaces a block's nodes, and every block whose neighbourhood changed (its links
@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 #include "softbody/tc_softbody.h"
@@ -31,6 +32,9 @@ namespace tcsb {
 ///   (morphing()), after the boundary's operations and before the next Bullet step.
 class SurfaceMorph {
  public:
+  /// `boundaries`: over how many boundaries a jump is spread (FidelitySettings::geomorph_boundaries); nullopt: the
+  /// body's blend_steps + 1, the blend's own length.
+  explicit SurfaceMorph(std::optional<int> boundaries = std::nullopt) : boundaries_(boundaries) {}
   /// Records the jump the boundary's operations made: the reconstruction now against the last reconstruct()'s (the
   /// same positions, the cut before the operations). Ages the jumps recorded before. O(N + cut size x degree).
   void boundary(const TcSoftBody& body);
@@ -47,6 +51,9 @@ class SurfaceMorph {
     std::vector<std::int32_t> leaf;
     std::vector<Eigen::Vector3d> offset;  ///< D = before - after, per leaf
   };
+  int spread(const TcSoftBody& body) const { return boundaries_ ? *boundaries_ : body.settings().blend_steps + 1; }
+
+  std::optional<int> boundaries_;
   std::vector<Jump> jumps_;
   std::vector<Eigen::Vector3d> raw_;  // the committed cut's reconstruction at the last call
   bool fresh_ = false;                // raw_ was computed by boundary() and nothing moved since

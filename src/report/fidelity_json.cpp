@@ -178,6 +178,7 @@ void add_fidelity_json(const RunResult& result, const RunTables& tables, nlohman
       {"targets", std::move(targets)},
       {"wall_s", json_number(f.wall_s)},
   };
+  if (settings.geomorph_boundaries) doc["fidelity"]["geomorph_boundaries"] = *settings.geomorph_boundaries;
   if (settings.curves) {
     doc["fidelity"]["curves"] = {{"budgets", numbers_json(settings.curves->budgets)},
                                  {"solver_divisors", settings.curves->solver_divisors}};

@@ -1,5 +1,7 @@
 #include "report/world_json.h"
 
+#include <optional>
+
 #include "paper/world_equal_error.h"
 #include "report/equal_error_json.h"
 #include "report/json_number.h"
@@ -72,6 +74,8 @@ void add_world_json(const RunResult& result, const RunTables& tables, nlohmann::
                   {"scene_nodes", w.scene_nodes},
                   {"wall_s", json_number(w.wall_s)},
                   {"methods", std::move(methods)}};
+  // Only when set, so results written before the setting read as before.
+  if (const std::optional<int> g = result.suite.fidelity.geomorph_boundaries) doc["world"]["geomorph_boundaries"] = *g;
   if (tables.world_equal_error) add_world_equal_error(*tables.world_equal_error, doc["world"]);
 }
 

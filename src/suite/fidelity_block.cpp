@@ -9,6 +9,9 @@ namespace {
 /// The most a curve's divisor may divide the suite's passes: past 64 every suite here would be at one pass.
 constexpr int kMaxSolverDivisor = 64;
 
+/// The longest geomorph: a thousand boundaries, beyond any blend (tcsb.blend_steps' own bound).
+constexpr int kMaxGeomorphBoundaries = 1000;
+
 /// `values` ascending with no two equal, or a failure naming the first out of order.
 template <class T>
 void require_ascending(const Reader& r, const std::vector<T>& values, const std::string& path) {
@@ -41,7 +44,8 @@ void parse_fidelity(const Reader& r, const Object& root, Suite& s) {
   const json* j = root.find("fidelity");
   if (!j) return;
   const Object fi(r, *j, "fidelity",
-                  {"enabled", "rms_threshold_pct", "pareto_targets", "ablations", "calibration", "curves"});
+                  {"enabled", "rms_threshold_pct", "pareto_targets", "ablations", "calibration", "curves",
+                   "geomorph_boundaries"});
   fi.read("enabled", s.fidelity.enabled);
   fi.read("rms_threshold_pct", s.fidelity.rms_threshold_pct, kPositive);
   if (const json* targets = fi.find("pareto_targets")) {
@@ -55,6 +59,9 @@ void parse_fidelity(const Reader& r, const Object& root, Suite& s) {
     if (s.fidelity.calibration_path.empty()) r.fail(fi.at("calibration"), "must name a file");
   }
   if (const json* c = fi.find("curves")) s.fidelity.curves = parse_curves(r, *c, fi.at("curves"));
+  if (const json* g = fi.find("geomorph_boundaries"))
+    s.fidelity.geomorph_boundaries =
+        static_cast<int>(r.integer(*g, fi.at("geomorph_boundaries"), 1, kMaxGeomorphBoundaries));
 }
 
 }  // namespace tcsb

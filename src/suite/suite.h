@@ -54,6 +54,10 @@ struct FidelitySettings {
   std::vector<double> pareto_targets;    ///< extra compression targets for the Pareto sweep (empty: none)
   bool ablations = false;                ///< run the equal-budget ablations
   std::optional<FidelityCurves> curves;  ///< the error-against-time curves (nullopt: none)
+  /// Over how many step boundaries TC-SB's shown surface spreads each jump (fidelity/surface_morph.h), in the
+  /// fidelity and world passes; nullopt: the blend's own, tcsb.blend_steps + 1. How a game would show the cut, not
+  /// how it simulates: a longer morph makes smaller jumps and lags the simulated surface longer.
+  std::optional<int> geomorph_boundaries;
   /// The suite's calibration file as written ("converged.calibration.json", relative to the suite file); empty:
   /// none. With one, the pass adds calibrated TC-SB and the calibrated uniform grid at each target below 1.
   std::string calibration_path;

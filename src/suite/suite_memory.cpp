@@ -50,6 +50,8 @@ constexpr double kPointBytes = 24;  // a grid point of a reconstructed surface: 
 // A world-pass track's copies of its bodies' grid points: the surfaces after the last step, the gathered scene, and
 // the jump's "after" at a change (world_runner.cpp).
 constexpr double kWorldSurfaceCopies = 3;
+// A geomorphed TC-SB surface's recorded jumps (fidelity/surface_morph.h): a leaf index and its offset, 4 + 24 B.
+constexpr double kMorphLeafBytes = 4 + 24;
 
 // A scene with colliders gives every body a btSoftRigidDynamicsWorld of its own (scene/scene_world.h). Measured with
 // mallinfo2 (uordblks + hblkhd) on Bullet 3.24: 4 672 144 B for the world, nearly all of it its collision
@@ -107,9 +109,17 @@ NetBytes net_bytes(const Suite& suite, const NetSpec& spec) {
   return b;
 }
 
+/// What a TC-SB body's geomorph (fidelity/surface_morph.h) may hold: a jump a boundary for as many boundaries as it
+/// spreads each, every one over every leaf of the net.
+double morph_bytes(const Suite& suite, const NetSpec& spec) {
+  const int boundaries = suite.fidelity.geomorph_boundaries.value_or(suite.tcsb.blend_steps + 1);
+  return boundaries * static_cast<double>(spec.node_count()) * kMorphLeafBytes;
+}
+
 /// Peak bytes of the world pass (world/world_runner.h), which runs after the cases: every track's bodies alive at
 /// once (world_tracks), each body with a net of its own, and per track the surfaces it reconstructs, compares and
-/// keeps for popping (kWorldSurfaceCopies of every body's grid points), with the reference's block of them.
+/// keeps for popping (kWorldSurfaceCopies of every body's grid points), with the reference's block of them, and every
+/// TC-SB body's geomorph.
 double world_peak_bytes(const Suite& suite) {
   const WorldTracks tracks = world_tracks(suite);
   if (tracks.tcsb + tracks.plain == 0) return 0;
@@ -121,7 +131,7 @@ double world_peak_bytes(const Suite& suite) {
   const double points = bodies * static_cast<double>(spec->node_count());
   const double surfaces = (tracks.tcsb + tracks.plain) * kWorldSurfaceCopies * points * kPointBytes +
                           kWorldBlockSteps * points * (kPointBytes + 1);  // the reference's block, with its mask
-  return bodies * (b.shared + tracks.tcsb * b.tcsb + tracks.plain * b.plain) + surfaces;
+  return bodies * (b.shared + tracks.tcsb * (b.tcsb + morph_bytes(suite, *spec)) + tracks.plain * b.plain) + surfaces;
 }
 
 /// Peak bytes while cases of net `spec` run: the shared net, one body per method (per case side by side); or, in the
@@ -150,7 +160,7 @@ double net_peak_bytes(const Suite& suite, const NetSpec& spec) {
   }
   const bool has_tcsb = std::find(suite.methods.begin(), suite.methods.end(), Method::kTcsb) != suite.methods.end();
   const double subjects = has_tcsb ? static_cast<double>(fidelity_plan(suite).size()) : 0.0;
-  const double fidelity = shared + plain + subjects * tcsb_body;
+  const double fidelity = shared + plain + subjects * (tcsb_body + morph_bytes(suite, spec));
   return subjects > 0 ? std::max(bytes, fidelity) : bytes;
 }
 

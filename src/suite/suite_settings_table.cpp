@@ -193,6 +193,8 @@ constexpr SuiteSetting kSettings[] = {
      number_range(kUnit), kNoAxis, false, Written::kUnlessDefault},
     {"feedback.view_lookahead_s", setting_member<&Suite::feedback, &FeedbackSettings::view_lookahead_s>(),
      number_range(kNonNegative), kNoAxis, false, Written::kUnlessDefault},
+    {"feedback.view_popping_charge", setting_member<&Suite::feedback, &FeedbackSettings::view_popping_charge>(),
+     number_range(kNonNegative), kNoAxis, false, Written::kUnlessDefault},
     {"feedback.budget_scope", setting_member<&Suite::feedback, &FeedbackSettings::budget_scope>(),
      choice_range(kBudgetScopes), kNoAxis, false, Written::kUnlessDefault},
 };

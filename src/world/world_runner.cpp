@@ -88,7 +88,7 @@ class FullResolutionMember final : public SceneMember {
 class TreeCutMember final : public SceneMember {
  public:
   TreeCutMember(const Suite& suite, Body body)
-      : suite_(suite), body_(std::move(body)), tc_(*body_.tc),
+      : suite_(suite), body_(std::move(body)), tc_(*body_.tc), morph_(suite.fidelity.geomorph_boundaries),
         churn_(tc_.tree().size(), kChurnWindowEvaluations * suite.feedback.evaluation_interval, suite.warmup_steps) {
     tc_.impl().set_op_sink(&ops_);
     tc_.set_cut_listener(&churn_);

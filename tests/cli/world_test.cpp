@@ -1,6 +1,7 @@
 // A scene of many bodies end to end through the executable: its run writes the world pass's block, which the
 // result's schema takes, and a bad scene exits 2 with one line naming the field; its frames are the world pass's
-// (the fly-by), and what they cannot be asked for exits 2 with one line naming the option.
+// (the fly-by), and what they cannot be asked for exits 2 with one line naming the option. A longer geomorph shows the
+// same operations with smaller jumps.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -26,6 +27,29 @@ TEST_F(Cli, AWorldSuiteWritesTheWorldPass) {
   EXPECT_EQ(doc["world"]["methods"][0]["method"], "full_resolution");
   const Outcome read = tcsb("export result.json --format markdown");  // read back through the schema
   EXPECT_EQ(read.exit_code, 0) << read.err;
+}
+
+TEST_F(Cli, ALongerGeomorphSpreadsTheSameOperationsJumpsOverMoreBoundaries) {
+  json suite = testing::world_suite_json();
+  write_file(dir_ / "blend.json", suite.dump());
+  suite["fidelity"]["geomorph_boundaries"] = 24;
+  write_file(dir_ / "long.json", suite.dump());
+  ASSERT_EQ(tcsb("run blend.json --out blend-result.json").exit_code, 0);
+  const Outcome o = tcsb("run long.json --out long-result.json");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const json blend = json::parse(read_file(dir_ / "blend-result.json"));
+  const json longer = json::parse(read_file(dir_ / "long-result.json"));
+  EXPECT_FALSE(blend["world"].contains("geomorph_boundaries"));
+  EXPECT_EQ(longer["world"]["geomorph_boundaries"], 24);
+  for (std::size_t m = 1; m < blend["world"]["methods"].size(); ++m) {
+    const json& a = blend["world"]["methods"][m];
+    const json& b = longer["world"]["methods"][m];
+    EXPECT_EQ(a["mean_nodes"], b["mean_nodes"]) << a["method"] << ": the morph is shown, never simulated";
+    if (a["method"] != "tcsb_world" && a["method"] != "tcsb_body") continue;
+    EXPECT_GT(a["popping_px"].get<double>(), 0.0) << a["method"];
+    EXPECT_LT(b["popping_px"].get<double>(), a["popping_px"].get<double>()) << a["method"];
+  }
+  EXPECT_EQ(tcsb("export long-result.json --format markdown").exit_code, 0);  // read back through the schema
 }
 
 TEST_F(Cli, AWorldSuiteWithCurvesWritesItsSpeedUpAtEqualError) {

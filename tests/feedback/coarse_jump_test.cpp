@@ -1,6 +1,7 @@
 // The jump a coarsen would cause, estimated from a snapshot: nothing on flat or affinely deformed cloth (one affine
 // map holds it exactly), linear in the bend, larger over a larger block; and the evaluator's charge ranks curved
-// blocks after flat ones. (Its agreement with the reconstruction it predicts: tests/fidelity.)
+// blocks after flat ones; seen through a camera, the jump in pixels shrinks with distance and is nothing out of view,
+// and that charge ranks the blocks by it. (Its agreement with the reconstruction it predicts: tests/fidelity.)
 #include "feedback/coarse_jump.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include "scene/scene_world.h"
 #include "softbody/tc_softbody.h"
 #include "softbody/vector_conversion.h"
+#include "view/screen_projection.h"
 
 namespace tcsb {
 namespace {
@@ -144,6 +146,61 @@ TEST(CoarseJump, TheChargeRanksCurvedBlocksAfterFlatOnes) {
     seen_curved |= curved;
   }
   EXPECT_TRUE(plain_mixes);
+}
+
+/// A camera `distance` metres from `at`, above it and to the side (so the bend's vertical jump crosses the line of
+/// sight), looking at it, or with `away` the other way.
+ScreenProjection camera_on_block(const Eigen::Vector3d& at, double distance, bool away = false) {
+  const Eigen::Vector3d eye = at + distance * Eigen::Vector3d(0.0, 0.6, -0.8);
+  const Eigen::Vector3d target = away ? Eigen::Vector3d(2 * eye - at) : at;
+  Camera c;
+  c.pose = {{eye.x(), eye.y(), eye.z()}, {target.x(), target.y(), target.z()}};
+  c.fov_deg = 60;
+  c.width_px = 640;
+  c.height_px = 360;
+  return {c, 0.0};
+}
+
+TEST(CoarseJumpPx, ShrinksWithTheDistanceAndIsNothingOutOfView) {
+  ShapedCut cut(false);
+  cut.shape([](const Eigen::Vector3d& r) { return bend(r, 0.05); });
+  const TreeId parent = cut.interior(1);
+  const Eigen::Vector3d at = cut.body->tree().rest(parent);
+  const auto px = [&](const ScreenProjection& view) {
+    return coarse_jump_px(cut.snapshot, cut.neighbours, parent, view);
+  };
+  // (Far from the metre-wide block against its size, so its corners are about equally deep.)
+  const double near = px(camera_on_block(at, 10.0)), far = px(camera_on_block(at, 20.0));
+  EXPECT_GT(near, 0.02) << "a jump of millimetres ten metres from the lens";
+  EXPECT_NEAR(far / near, 0.5, 0.05) << "a pinhole's image scales with 1 / depth";
+  EXPECT_EQ(px(camera_on_block(at, 10.0, true)), 0.0) << "behind the camera: not seen";
+  cut.shape([](const Eigen::Vector3d& r) { return r; });
+  EXPECT_LT(px(camera_on_block(at, 10.0)), 1e-3) << "flat: no jump to see";
+}
+
+TEST(CoarseJumpPx, TheChargeRanksBlocksByTheJumpTheCameraSees) {
+  ShapedCut cut(false);
+  cut.shape([](const Eigen::Vector3d& r) { return bend(r, 0.05); });
+  // Near one corner of the net: the same bend looks larger there, and part of the net is out of view.
+  const ScreenProjection view = camera_on_block(cut.body->tree().rest(cut.body->tree().at(1, 0, 0)), 1.0);
+  const std::vector<float> saliency(cut.snapshot.size(), 0.0f);
+  Evaluation charged;
+  JumpCharge charge;
+  charge.neighbours = &cut.neighbours;
+  charge.per_px = 1.0;
+  charge.view = &view;
+  rank_candidates(cut.snapshot, saliency, 1000, charged, charge);
+  ASSERT_GT(charged.coarse.size(), 4u);
+  double previous = 0;
+  bool unseen = false, seen = false;
+  for (const Candidate& c : charged.coarse) {
+    const double jump = coarse_jump_px(cut.snapshot, cut.neighbours, c.id, view);
+    EXPECT_GE(jump, previous) << "block " << c.id;
+    previous = jump;
+    unseen |= jump == 0;
+    seen |= jump > 0.1;
+  }
+  EXPECT_TRUE(unseen && seen) << "the camera sees a part of the net, not all of it";
 }
 
 }  // namespace

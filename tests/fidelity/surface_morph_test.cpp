@@ -1,6 +1,6 @@
-// The geomorphed surface: every jump a boundary makes spread evenly over the next K + 1 boundaries — an operation's
-// own block, its neighbours' and its end alike — frozen so that the leaving nodes' drift does not leak in, and
-// nothing at all without operations.
+// The geomorphed surface: every jump a boundary makes spread evenly over the next K + 1 boundaries (or as many as it
+// is given) — an operation's own block, its neighbours' and its end alike — frozen so that the leaving nodes' drift
+// does not leak in, and nothing at all without operations.
 #include "fidelity/surface_morph.h"
 
 #include <gtest/gtest.h>
@@ -85,6 +85,35 @@ TEST(SurfaceMorph, SpreadsACoarsesJumpEvenlyOverItsBlend) {
   std::vector<Eigen::Vector3d> committed;
   reconstruct_leaves(s.body, committed);
   EXPECT_EQ(after, committed);  // and once every jump is spent, nothing of it is left
+}
+
+TEST(SurfaceMorph, SpreadsOverTheBoundariesItIsGivenInsteadOfTheBlends) {
+  // fidelity.geomorph_boundaries: the shown surface's morph, longer than the physical blend.
+  constexpr int kBoundaries = 12;
+  SaddleBody s;
+  SurfaceMorph morph(kBoundaries);
+  std::vector<Eigen::Vector3d> before, after, first;
+  morph.reconstruct(s.body, before);
+  first = before;
+  const TreeId parent = s.net->lod().at(1, 5, 2);
+  ASSERT_TRUE(s.body.can_coarsen(parent).ok);
+  s.body.begin_coarse(parent);
+  double largest = 0;
+  for (int boundary = 0; boundary <= kBlendSteps + kBoundaries; ++boundary) {
+    if (boundary > 0) s.body.advance_blends();
+    morph.boundary(s.body);
+    morph.reconstruct(s.body, after);
+    largest = std::max(largest, max_displacement(before, after));
+    before = after;
+    if (boundary == kBoundaries - 2) EXPECT_TRUE(morph.morphing()) << "the coarse's own jump is not spent yet";
+  }
+  EXPECT_FALSE(morph.morphing());
+  EXPECT_NEAR(largest, kTwist / kBoundaries, 0.001);
+  EXPECT_LT(largest, 0.5 * kTwist / (kBlendSteps + 1)) << "smaller steps than the blend's own morph";
+  EXPECT_NEAR(max_displacement(first, after), kTwist, 0.005);
+  std::vector<Eigen::Vector3d> committed;
+  reconstruct_leaves(s.body, committed);
+  EXPECT_EQ(after, committed);
 }
 
 TEST(SurfaceMorph, TheJumpIsFrozenWhileTheBodyMoves) {

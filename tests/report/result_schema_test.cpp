@@ -112,6 +112,7 @@ TEST(ResultSchema, EverySettingWrittenOnlyWhenItMattersConforms) {
   f.popping_charge = f.interface_charge = f.interface_tension = f.pin_level_pull = f.contact_saliency = 0.5;
   f.view_offscreen_share = 0.5;
   f.view_lookahead_s = 0.5;
+  f.view_popping_charge = 0.5;
   f.view = true;
   f.budget_scope = BudgetScope::kWorld;
   const ojson doc = testing::native_json_of(r);

@@ -815,6 +815,7 @@ TEST(SuiteReject, OtherRanges) {
   rejected_edit([](json& j) { j["feedback"] = {{"max_step_ms", -1}}; }, "feedback.max_step_ms");
   rejected_edit([](json& j) { j["feedback"] = {{"popping_charge", -0.5}}; }, "feedback.popping_charge");
   rejected_edit([](json& j) { j["feedback"] = {{"popping_charge", "high"}}; }, "feedback.popping_charge");
+  rejected_edit([](json& j) { j["feedback"] = {{"view_popping_charge", -1}}; }, "feedback.view_popping_charge");
   rejected_edit([](json& j) { j["feedback"] = {{"interface_charge", -1}}; }, "feedback.interface_charge");
   rejected_edit([](json& j) { j["feedback"] = {{"interface_charge", true}}; }, "feedback.interface_charge");
   rejected_edit(
@@ -1078,6 +1079,15 @@ TEST(SuiteParse, FidelityCurvesAreReadAndBadOnesRefusedNamingTheField) {
   rejected_edit(curves({0.1}, {4, 2}), "fidelity.curves.solver_divisors[1]");
   rejected_edit(curves({0.1}, {2.5}), "fidelity.curves.solver_divisors[0]");
   rejected_edit([](json& k) { k["fidelity"] = {{"curves", {{"budgets", {0.1}}}}}; }, "fidelity.curves.solver_divisors");
+}
+
+TEST(SuiteParse, TheGeomorphsLengthIsReadAndBadOnesRefusedNamingTheField) {
+  json j = minimal();
+  EXPECT_FALSE(parse_suite_text(j.dump(), "m.json").fidelity.geomorph_boundaries) << "absent: the blend's own";
+  j["fidelity"] = {{"geomorph_boundaries", 24}};
+  EXPECT_EQ(parse_suite_text(j.dump(), "g.json").fidelity.geomorph_boundaries, 24);
+  rejected_edit([](json& k) { k["fidelity"] = {{"geomorph_boundaries", 0}}; }, "fidelity.geomorph_boundaries");
+  rejected_edit([](json& k) { k["fidelity"] = {{"geomorph_boundaries", 2.5}}; }, "fidelity.geomorph_boundaries");
 }
 
 }  // namespace

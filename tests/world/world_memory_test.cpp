@@ -1,5 +1,5 @@
 // The memory estimate of a scene of many bodies bounds the heap its world pass takes: every track's bodies, their
-// nets, controllers and surfaces alive at once (suite/suite_memory.h, suite/world_plan.h).
+// nets, controllers and surfaces alive at once (suite/suite_memory.h, suite/world_plan.h), and a geomorph's jumps.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -45,6 +45,21 @@ TEST(WorldMemory, TheEstimateBoundsTheHeapOfTheWorldPass) {
   ASSERT_EQ(result.methods.size(), 10u);
   EXPECT_GE(estimate, static_cast<double>(heap.most)) << "the estimate is low";
   EXPECT_LE(estimate, 3.0 * static_cast<double>(heap.most)) << "the estimate is more than three times the heap";
+}
+
+TEST(WorldMemory, ALongerGeomorphCountsTheJumpsItHolds) {
+  nlohmann::json j = testing::world_suite_json();
+  const Suite blend = parse_suite_text(j.dump(), "row.json");
+  j["fidelity"]["geomorph_boundaries"] = 240;
+  const Suite longer = parse_suite_text(j.dump(), "long.json");
+  const NetSpec& net = blend.nets.front();
+  // A jump a boundary, each over every leaf at most: a leaf index and its offset.
+  const double per_boundary = static_cast<double>(world_tracks(blend).tcsb) *
+                              static_cast<double>(blend.scene.bodies.size()) * static_cast<double>(net.node_count()) *
+                              (4 + 24);
+  const double more = 240 - (blend.tcsb.blend_steps + 1);
+  EXPECT_GE(static_cast<double>(estimate_peak_bytes(longer)),
+            static_cast<double>(estimate_peak_bytes(blend)) + more * per_boundary - 1.0);
 }
 
 }  // namespace
