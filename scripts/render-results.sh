@@ -107,7 +107,7 @@ done
 # each ending with its kept run's full render. $1: only the suites of $readme_suites.
 headline_rows() {
   local f row
-  echo '| scene | model | steered by | net, error | TC-SB at 30 %: step ms, error | vs best uniform grid at 30 % | vs full resolution at 30 % | best vs uniform grid | kept run |'
+  echo '| scene | model | steered by | net, error | TC-SB at 30 %: step ms, error | vs best uniform grid (many bodies: discrete LOD) at 30 % | vs full resolution at 30 % | best vs uniform grid (discrete LOD) | kept run |'
   echo '|---|---|---|---|---|---|---|---|---|'
   for f in "${runs[@]}"; do
     [[ -n ${1:-} && $readme_suites != *" $(suite_of "$f" | sed 's/-compliant$//') "* ]] && continue

@@ -56,14 +56,34 @@ const ojson* row_at(const ojson& net, double compression) {
   return nullptr;
 }
 
-/// The row of the largest interpolated speed-up against the grid; nullptr when none is interpolated.
-const ojson* best_grid_row(const ojson& net) {
+/// What the headline reads of a run: the curves of the net it shows and the rival a user would pick instead of
+/// TC-SB — the uniform grid for one body, discrete LOD for a scene of many bodies (the world pass's whole scene).
+struct HeadlineCurves {
+  const ojson* net = nullptr;
+  std::string rival;       ///< the rows' key
+  std::string rival_name;  ///< as the verdict names it
+  std::string curve_name;  ///< its curve, as the verdict names it
+  std::string never;       ///< the verdict's reason when TC-SB's error never falls on that curve
+};
+
+HeadlineCurves headline_curves(const ojson& doc) {
+  const ojson& world = at(at(doc, "world"), "equal_error");
+  if (world.is_object())
+    return {&at(world, "scene"), "discrete_lod", "discrete LOD", "discrete LOD's curve",
+            "discrete LOD's curve (at each, its cheapest budget errs as little or less, or none is as accurate): no "
+            "speed-up against it"};
+  return {headline_net(doc), "uniform_grid", "the best uniform grid", "the grids' curve",
+          "the uniform grids' curve (at each, the cheapest grid errs as little or less, or no grid is as accurate): "
+          "no speed-up against them"};
+}
+
+/// The row of the largest interpolated speed-up against the rival; nullptr when none is interpolated.
+const ojson* best_rival_row(const ojson& net, const std::string& rival) {
   const ojson* best = nullptr;
   for (const ojson& row : at(net, "rows")) {
-    const ojson& grid = at(row, "uniform_grid");
-    if (text_of(at(grid, "status")) != "interpolated" || !at(grid, "speedup").is_number()) continue;
-    if (!best || at(grid, "speedup").get<double>() > at(at(*best, "uniform_grid"), "speedup").get<double>())
-      best = &row;
+    const ojson& r = at(row, rival);
+    if (text_of(at(r, "status")) != "interpolated" || !at(r, "speedup").is_number()) continue;
+    if (!best || at(r, "speedup").get<double>() > at(at(*best, rival), "speedup").get<double>()) best = &row;
   }
   return best;
 }
@@ -163,19 +183,22 @@ std::string HeadlineRowFormat::render_native(const ojson& doc) const {
   const ojson& suite = at(doc, "suite");
   std::string row =
       "| " + escaped(text_of(at(suite, "name"))) + " | " + model_of(suite) + " | " + decided_by(suite) + " | ";
-  const ojson* net = headline_net(doc);
-  if (!net) return row + "no curves: the suite has no fidelity.curves | | | | |\n";
+  const HeadlineCurves curves = headline_curves(doc);
+  const ojson* net = curves.net;
+  if (!net || net->is_null()) return row + "no curves: the suite has no fidelity.curves | | | | |\n";
   const std::string unit = unit_of(*net);
-  row += escaped(text_of(at(*net, "net"))) + ", " + unit + " | ";
+  row += escaped(text_of(at(*net, "net"))) + ", " + unit;
+  if (curves.rival != "uniform_grid") row += ", vs " + curves.rival_name;
+  row += " | ";
   if (at(*net, "missing").is_string())
     return row + "no speed-up: " + escaped(text_of(at(*net, "missing"))) + " | | | |\n";
   if (const ojson* r = row_at(*net, kHeadlineBudget))
     row += markdown_number(at(*r, "time_ms"), 3) + " ms, " + markdown_number(at(*r, "error"), 3) + " | " +
-           speedup_text(at(*r, "uniform_grid")) + " | " + speedup_text(at(*r, "full_resolution")) + " | ";
+           speedup_text(at(*r, curves.rival)) + " | " + speedup_text(at(*r, "full_resolution")) + " | ";
   else
     row += "no 30 % budget | | | ";
-  const ojson* best = best_grid_row(*net);
-  row += best ? speedup_text(at(*best, "uniform_grid")) + " at " + compression_text(at(*best, "compression"))
+  const ojson* best = best_rival_row(*net, curves.rival);
+  row += best ? speedup_text(at(*best, curves.rival)) + " at " + compression_text(at(*best, "compression"))
               : std::string("never interpolated");
   return row + " |\n";
 }
@@ -183,21 +206,21 @@ std::string HeadlineRowFormat::render_native(const ojson& doc) const {
 std::string HeadlineVerdictFormat::render_native(const ojson& doc) const {
   const ojson& suite = at(doc, "suite");
   std::string line = "- **" + text_of(at(suite, "name")) + "** (" + model_of(suite) + "): ";
-  const ojson* net = headline_net(doc);
-  if (!net || at(*net, "missing").is_string()) return line + "no speed-up could be computed.\n";
-  const ojson* best = best_grid_row(*net);
-  if (!best)
-    return line + "at no budget does TC-SB's error fall on the uniform grids' curve (at each, the cheapest grid errs "
-                  "as little or less, or no grid is as accurate): no speed-up against them.\n";
-  const ojson& grid = at(*best, "uniform_grid");
-  const double s = at(grid, "speedup").get<double>();
+  const HeadlineCurves curves = headline_curves(doc);
+  const ojson* net = curves.net;
+  if (!net || net->is_null() || at(*net, "missing").is_string()) return line + "no speed-up could be computed.\n";
+  const ojson* best = best_rival_row(*net, curves.rival);
+  if (!best) return line + "at no budget does TC-SB's error fall on " + curves.never + ".\n";
+  const ojson& rival = at(*best, curves.rival);
+  const double s = at(rival, "speedup").get<double>();
   const std::string target = markdown_number(ojson(kHeadlineSpeedup), 2) + "×";
-  line += "its largest speed-up against the best uniform grid is " + speedup_text(grid) + ", at " +
+  line += "its largest speed-up against " + curves.rival_name + " is " + speedup_text(rival) + ", at " +
           compression_text(at(*best, "compression"));
   // Read off a curve that is not monotone, the first crossing can start at a point a cheaper one beats: say so.
-  if (at(at(at(*net, "curves"), "monotone"), "uniform_grid") == false) line += " (the grids' curve is not monotone)";
+  if (at(at(at(*net, "curves"), "monotone"), curves.rival) == false)
+    line += " (" + curves.curve_name + " is not monotone)";
   // Three verdicts on the interval, as every claim here: decided only where the whole interval is on one side.
-  const ojson& interval = at(grid, "interval");
+  const ojson& interval = at(rival, "interval");
   const bool has_interval = interval.is_array() && interval.size() == 2 && interval[0].is_number();
   if (has_interval && interval[0].get<double>() >= kHeadlineSpeedup) return line + ": reaches " + target + ".\n";
   if (has_interval && interval[1].get<double>() < kHeadlineSpeedup)

@@ -1,5 +1,5 @@
 // The speed-up at equal error as Markdown: the headline row of a run's largest net, the verdict on 2x (three
-// verdicts on the interval), and the line a net without curves gets.
+// verdicts on the interval), a scene of many bodies read against discrete LOD, and the line a net without curves gets.
 #include "report/equal_error_markdown.h"
 
 #include <gtest/gtest.h>
@@ -68,6 +68,28 @@ TEST(HeadlineExport, ANetWithoutCurvesSaysWhatIsMissing) {
   EXPECT_NE(render_as("markdown-headline", doc).find("no speed-up: no uniform grid ran"), std::string::npos);
   EXPECT_NE(render_as("markdown-verdict", doc).find("no speed-up could be computed"), std::string::npos);
   EXPECT_NE(render_as("markdown-headline", ojson{{"suite", {{"name", "x"}}}}).find("no curves"), std::string::npos);
+}
+
+TEST(HeadlineExport, AWorldPassIsReadAgainstDiscreteLod) {
+  // A scene of many bodies has no per-net curves: its row is the world pass's whole scene against discrete LOD.
+  ojson doc = headline_run(interpolated_rival(9, 8, 10));
+  ojson scene = doc["fidelity"]["equal_error"]["nets"][1];
+  scene["net"] = "scene";
+  for (ojson& row : scene["rows"]) {
+    row["discrete_lod"] = row["uniform_grid"];
+    row.erase("uniform_grid");
+  }
+  scene["rows"][0]["discrete_lod"] = interpolated_rival(1.5, 1.25, 1.75);
+  doc.erase("fidelity");
+  doc["world"] = {{"equal_error", {{"scene", scene}}}};
+  EXPECT_EQ(
+      render_as("markdown-headline", doc),
+      "| scene | compliant | viewer, contact | scene, p95 px, vs discrete LOD | 1.50 ms, 4.25 | 1.50× (1.25–1.75) | "
+      "3.00× (2.50–3.50) | 1.50× (1.25–1.75) at 30% |\n");
+  const std::string verdict = render_as("markdown-verdict", doc);
+  EXPECT_NE(verdict.find("against discrete LOD is 1.50×"), std::string::npos) << verdict;
+  doc["world"]["equal_error"]["scene"]["rows"][0]["discrete_lod"]["status"] = "at_cheapest";
+  EXPECT_NE(render_as("markdown-verdict", doc).find("discrete LOD's curve"), std::string::npos);
 }
 
 TEST(HeadlineExport, TheRunsRenderHasTheSectionOnlyWithCurves) {
