@@ -105,7 +105,9 @@ TEST(SurfaceMorph, SpreadsOverTheBoundariesItIsGivenInsteadOfTheBlends) {
     morph.reconstruct(s.body, after);
     largest = std::max(largest, max_displacement(before, after));
     before = after;
-    if (boundary == kBoundaries - 2) EXPECT_TRUE(morph.morphing()) << "the coarse's own jump is not spent yet";
+    if (boundary == kBoundaries - 2) {
+      EXPECT_TRUE(morph.morphing()) << "the coarse's own jump is not spent yet";
+    }
   }
   EXPECT_FALSE(morph.morphing());
   EXPECT_NEAR(largest, kTwist / kBoundaries, 0.001);

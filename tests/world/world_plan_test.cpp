@@ -36,7 +36,9 @@ TEST(LodCameraDistances, WithALookAheadAreTheNearerOfNowAndThen) {
   for (std::size_t i = 0; i < now.size(); ++i) {
     EXPECT_LE(ahead[i], now[i]) << i;
     const std::size_t later = i + 15 * 3;  // 0.25 s is 15 steps of 3 bodies later
-    if (later < now.size()) EXPECT_DOUBLE_EQ(ahead[i], std::min(now[i], now[later])) << i;
+    if (later < now.size()) {
+      EXPECT_DOUBLE_EQ(ahead[i], std::min(now[i], now[later])) << i;
+    }
     nearer += ahead[i] < now[i];
   }
   EXPECT_GT(nearer, 0);  // the camera approaches the last banners: they look nearer ahead of time
