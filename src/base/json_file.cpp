@@ -35,6 +35,22 @@ struct FdCloser {
   ~FdCloser() { ::close(fd); }
 };
 
+/// nlohmann's message without its "[json.exception.parse_error.101] " prefix, on one line.
+std::string parser_message(const std::string& what) {
+  std::string message = what;
+  if (const auto close = message.find("] "); message.rfind("[json.exception", 0) == 0 && close != std::string::npos) {
+    message.erase(0, close + 2);
+  }
+  std::replace(message.begin(), message.end(), '\n', ' ');
+  return message;
+}
+
+}  // namespace
+
+// Named, not anonymous: parse_json_text is a template of external linkage whose lambda captures a PathTracker, and a
+// capture of a type with internal linkage there is what GCC's -Wsubobject-linkage warns of.
+namespace json_file_detail {
+
 /// "parent.key" / "parent[i]" of the value being parsed, kept up to date by the parser's callback.
 class PathTracker {
  public:
@@ -64,12 +80,17 @@ class PathTracker {
   std::string path() const {
     std::string p;
     for (const Frame& f : stack_) {
-      if (f.is_array)
-        p += "[" + std::to_string(f.index) + "]";
-      else if (f.in_member)
-        p += (p.empty() ? "" : ".") + f.key;
-      else
+      // One append per piece: GCC 12's -Wrestrict false positive on a chain of + starting at a literal.
+      if (f.is_array) {
+        p += '[';
+        p += std::to_string(f.index);
+        p += ']';
+      } else if (f.in_member) {
+        if (!p.empty()) p += '.';
+        p += f.key;
+      } else {
         break;
+      }
     }
     return p;
   }
@@ -85,17 +106,7 @@ class PathTracker {
   std::vector<Frame> stack_;
 };
 
-/// nlohmann's message without its "[json.exception.parse_error.101] " prefix, on one line.
-std::string parser_message(const std::string& what) {
-  std::string message = what;
-  if (const auto close = message.find("] "); message.rfind("[json.exception", 0) == 0 && close != std::string::npos) {
-    message.erase(0, close + 2);
-  }
-  std::replace(message.begin(), message.end(), '\n', ' ');
-  return message;
-}
-
-}  // namespace
+}  // namespace json_file_detail
 
 std::string read_input_file(const std::filesystem::path& path, std::size_t max_bytes) {
   const std::string file = path.string();
@@ -141,7 +152,7 @@ Json parse_json_text(const std::string& text, const std::string& file, int max_d
   if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
     throw InputError(file, "", "not valid JSON: a NUL byte at byte " + std::to_string(nul + 1));
   }
-  PathTracker tracker;
+  json_file_detail::PathTracker tracker;
   const typename Json::parser_callback_t callback = [&](int depth, nlohmann::json::parse_event_t event, Json& parsed) {
     using Event = nlohmann::json::parse_event_t;
     switch (event) {
