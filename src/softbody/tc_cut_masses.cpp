@@ -3,6 +3,7 @@
 // the block's three far corners by the bilinear weights between them, as a lumped finite-element mass matrix shares
 // it. A far corner that falls on no node of the cut (it hangs on a coarser block's side, or lies past the net) leaves
 // its share with the block's own node, so the shares always sum to the net's mass.
+#include <array>
 #include <stdexcept>
 
 #include "softbody/tc_softbody_impl.h"
@@ -50,8 +51,13 @@ void TcSoftBody::Impl::build_corner_shares() {
 
 TreeId TcSoftBody::Impl::holding(int x, int z, bool committed) const {
   const CutState arriving_or_leaving = committed ? CutState::kArriving : CutState::kLeaving;
-  for (TreeId id = tree().at(0, x, z); id != kNoTreeNode; id = tree().node(id).parent)
+  const LodTree& lod = tree();
+  // The leaf's ancestors by their grid coordinates (a parent groups the 2x2 blocks below it), reading no node's
+  // record on the way up: the lookups of one operation climb many times.
+  for (int level = 0; level < lod.level_count(); ++level) {
+    const TreeId id = lod.at(level, x >> level, z >> level);
     if (state(id) == CutState::kActive || state(id) == arriving_or_leaving) return id;
+  }
   return kNoTreeNode;  // (not reached: each cut covers every leaf)
 }
 
@@ -93,7 +99,7 @@ const std::vector<TreeId>& TcSoftBody::Impl::ring_nodes(TreeId block) {
   std::vector<TreeId>& nodes = settle_scratch_;
   nodes.clear();
   const auto add = [&](TreeId id) {
-    if (id == kNoTreeNode || record(id).bullet < 0) return;
+    if (id == kNoTreeNode || bullet_[static_cast<std::size_t>(id)] < 0) return;
     for (TreeId n : nodes)
       if (n == id) return;
     nodes.push_back(id);
@@ -103,19 +109,30 @@ const std::vector<TreeId>& TcSoftBody::Impl::ring_nodes(TreeId block) {
   for (int i = 0; i < b.child_count; ++i) add(b.children[static_cast<std::size_t>(i)]);
   // The ring of leaves around the block, in both cuts: every node whose corners or whose neighbours' corners the
   // operation can have moved holds one of them.
+  // Along one side, neighbouring leaves mostly share their holders: a leaf inside the block last found on that side
+  // for a cut has it again (a cut holds each leaf once), and adding it again changes nothing, so it is not looked up.
   const int width = tree().level_width(0), height = tree().level_height(0);
-  const auto add_holders = [&](int x, int z) {
-    if (x < 0 || z < 0 || x >= width || z >= height) return;
-    add(holding(x, z, true));
-    add(holding(x, z, false));
+  struct LastHolders {
+    TreeId committed = kNoTreeNode, old = kNoTreeNode;
   };
+  const auto holds = [&](TreeId id, int x, int z) {
+    if (id == kNoTreeNode) return false;
+    const LodNode& n = tree().node(id);
+    return x >= n.leaf_x0 && x < n.leaf_x1 && z >= n.leaf_y0 && z < n.leaf_y1;
+  };
+  const auto add_holders = [&](int x, int z, LastHolders& last) {
+    if (x < 0 || z < 0 || x >= width || z >= height) return;
+    if (!holds(last.committed, x, z)) add(last.committed = holding(x, z, true));
+    if (!holds(last.old, x, z)) add(last.old = holding(x, z, false));
+  };
+  std::array<LastHolders, 4> sides;  // below, above, left, right
   for (int x = b.leaf_x0 - 1; x <= b.leaf_x1; ++x) {
-    add_holders(x, b.leaf_y0 - 1);
-    add_holders(x, b.leaf_y1);
+    add_holders(x, b.leaf_y0 - 1, sides[0]);
+    add_holders(x, b.leaf_y1, sides[1]);
   }
   for (int z = b.leaf_y0; z < b.leaf_y1; ++z) {
-    add_holders(b.leaf_x0 - 1, z);
-    add_holders(b.leaf_x1, z);
+    add_holders(b.leaf_x0 - 1, z, sides[2]);
+    add_holders(b.leaf_x1, z, sides[3]);
   }
   return nodes;
 }
