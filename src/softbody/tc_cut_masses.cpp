@@ -51,13 +51,8 @@ void TcSoftBody::Impl::build_corner_shares() {
 
 TreeId TcSoftBody::Impl::holding(int x, int z, bool committed) const {
   const CutState arriving_or_leaving = committed ? CutState::kArriving : CutState::kLeaving;
-  const LodTree& lod = tree();
-  // The leaf's ancestors by their grid coordinates (a parent groups the 2x2 blocks below it), reading no node's
-  // record on the way up: the lookups of one operation climb many times.
-  for (int level = 0; level < lod.level_count(); ++level) {
-    const TreeId id = lod.at(level, x >> level, z >> level);
+  for (TreeId id = tree().at(0, x, z); id != kNoTreeNode; id = tree().node(id).parent)
     if (state(id) == CutState::kActive || state(id) == arriving_or_leaving) return id;
-  }
   return kNoTreeNode;  // (not reached: each cut covers every leaf)
 }
 
@@ -109,30 +104,32 @@ const std::vector<TreeId>& TcSoftBody::Impl::ring_nodes(TreeId block) {
   for (int i = 0; i < b.child_count; ++i) add(b.children[static_cast<std::size_t>(i)]);
   // The ring of leaves around the block, in both cuts: every node whose corners or whose neighbours' corners the
   // operation can have moved holds one of them.
-  // Along one side, neighbouring leaves mostly share their holders: a leaf inside the block last found on that side
-  // for a cut has it again (a cut holds each leaf once), and adding it again changes nothing, so it is not looked up.
+  // Along one side, neighbouring leaves mostly share their holders: a leaf before the end of the block last found on
+  // that side for a cut is held by it again (a cut holds each leaf once, and the side runs along one row or column),
+  // and adding it again would change nothing, so it is not looked up.
   const int width = tree().level_width(0), height = tree().level_height(0);
-  struct LastHolders {
-    TreeId committed = kNoTreeNode, old = kNoTreeNode;
+  struct HeldUntil {
+    int committed = 0, old = 0;  ///< the first leaf along the side past the holder last found in that cut
   };
-  const auto holds = [&](TreeId id, int x, int z) {
-    if (id == kNoTreeNode) return false;
-    const LodNode& n = tree().node(id);
-    return x >= n.leaf_x0 && x < n.leaf_x1 && z >= n.leaf_y0 && z < n.leaf_y1;
+  const auto add_holder = [&](int x, int z, bool along_x, bool committed, int& held_until) {
+    if ((along_x ? x : z) < held_until) return;
+    const TreeId id = holding(x, z, committed);
+    add(id);
+    if (id != kNoTreeNode) held_until = along_x ? tree().node(id).leaf_x1 : tree().node(id).leaf_y1;
   };
-  const auto add_holders = [&](int x, int z, LastHolders& last) {
+  const auto add_holders = [&](int x, int z, bool along_x, HeldUntil& held) {
     if (x < 0 || z < 0 || x >= width || z >= height) return;
-    if (!holds(last.committed, x, z)) add(last.committed = holding(x, z, true));
-    if (!holds(last.old, x, z)) add(last.old = holding(x, z, false));
+    add_holder(x, z, along_x, true, held.committed);
+    add_holder(x, z, along_x, false, held.old);
   };
-  std::array<LastHolders, 4> sides;  // below, above, left, right
+  std::array<HeldUntil, 4> sides;  // below, above, left, right
   for (int x = b.leaf_x0 - 1; x <= b.leaf_x1; ++x) {
-    add_holders(x, b.leaf_y0 - 1, sides[0]);
-    add_holders(x, b.leaf_y1, sides[1]);
+    add_holders(x, b.leaf_y0 - 1, true, sides[0]);
+    add_holders(x, b.leaf_y1, true, sides[1]);
   }
   for (int z = b.leaf_y0; z < b.leaf_y1; ++z) {
-    add_holders(b.leaf_x0 - 1, z, sides[2]);
-    add_holders(b.leaf_x1, z, sides[3]);
+    add_holders(b.leaf_x0 - 1, z, false, sides[2]);
+    add_holders(b.leaf_x1, z, false, sides[3]);
   }
   return nodes;
 }
