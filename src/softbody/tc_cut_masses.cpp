@@ -3,6 +3,7 @@
 // the block's three far corners by the bilinear weights between them, as a lumped finite-element mass matrix shares
 // it. A far corner that falls on no node of the cut (it hangs on a coarser block's side, or lies past the net) leaves
 // its share with the block's own node, so the shares always sum to the net's mass.
+#include <array>
 #include <stdexcept>
 
 #include "softbody/tc_softbody_impl.h"
@@ -55,37 +56,60 @@ TreeId TcSoftBody::Impl::holding(int x, int z, bool committed) const {
   return kNoTreeNode;  // (not reached: each cut covers every leaf)
 }
 
-double TcSoftBody::Impl::cut_mass(TreeId id, bool committed) const {
+std::array<TreeId, 2> TcSoftBody::Impl::holders(int x, int z) const {
+  std::array<TreeId, 2> found{kNoTreeNode, kNoTreeNode};  // as holding(x, z, true) and holding(x, z, false)
+  for (TreeId id = tree().at(0, x, z); id != kNoTreeNode; id = tree().node(id).parent) {
+    const CutState s = state(id);
+    if (found[0] == kNoTreeNode && (s == CutState::kActive || s == CutState::kArriving)) found[0] = id;
+    if (found[1] == kNoTreeNode && (s == CutState::kActive || s == CutState::kLeaving)) found[1] = id;
+    if (found[0] != kNoTreeNode && found[1] != kNoTreeNode) break;
+  }
+  return found;
+}
+
+std::array<double, 2> TcSoftBody::Impl::cut_mass(TreeId id) const {
   const CutState s = state(id);
-  if (s != CutState::kActive && s != (committed ? CutState::kArriving : CutState::kLeaving)) return 0;
+  const std::array<bool, 2> in{s == CutState::kActive || s == CutState::kArriving,
+                               s == CutState::kActive || s == CutState::kLeaving};
+  std::array<double, 2> mass{0, 0};
+  if (!in[0] && !in[1]) return mass;
   const CornerShares& c = corner_shares_[static_cast<std::size_t>(id)];
   const auto rests_at = [&](TreeId node, int x, int z) {
     const CornerShares& o = corner_shares_[static_cast<std::size_t>(node)];
     return o.x == x && o.z == z;
   };
-  double mass = c.share[0];
+  // Each cut's mass gathers its terms in the same order; the two cuts share the climbs that find the holders.
+  for (std::size_t cut = 0; cut < 2; ++cut)
+    if (in[cut]) mass[cut] = c.share[0];
   // Its far corners: each share goes to the node resting there, or stays here when none does.
   const std::array<std::array<int, 2>, 3> corners{{{c.next_x, c.z}, {c.x, c.next_z}, {c.next_x, c.next_z}}};
   for (std::size_t k = 0; k < 3; ++k) {
     const double share = c.share[k + 1];
     if (share == 0) continue;  // (every share past the net is 0)
     const auto [x, z] = corners[k];
-    if (!rests_at(holding(x, z, committed), x, z)) mass += share;
+    const std::array<TreeId, 2> held = holders(x, z);
+    for (std::size_t cut = 0; cut < 2; ++cut)
+      if (in[cut] && !rests_at(held[cut], x, z)) mass[cut] += share;
   }
   // The blocks to its left, below and diagonally below-left hold the leaves just before its rest; it receives their
   // share when it rests on their far corner.
-  if (c.x > 0) {
-    const CornerShares& b = corner_shares_[static_cast<std::size_t>(holding(c.x - 1, c.z, committed))];
-    if (b.next_x == c.x && b.z == c.z) mass += b.share[1];
-  }
-  if (c.z > 0) {
-    const CornerShares& b = corner_shares_[static_cast<std::size_t>(holding(c.x, c.z - 1, committed))];
-    if (b.x == c.x && b.next_z == c.z) mass += b.share[2];
-  }
-  if (c.x > 0 && c.z > 0) {
-    const CornerShares& b = corner_shares_[static_cast<std::size_t>(holding(c.x - 1, c.z - 1, committed))];
-    if (b.next_x == c.x && b.next_z == c.z) mass += b.share[3];
-  }
+  const auto receive = [&](int x, int z, const auto& gives, std::size_t k) {
+    const std::array<TreeId, 2> held = holders(x, z);
+    for (std::size_t cut = 0; cut < 2; ++cut) {
+      if (!in[cut]) continue;
+      const CornerShares& b = corner_shares_[static_cast<std::size_t>(held[cut])];
+      if (gives(b)) mass[cut] += b.share[k];
+    }
+  };
+  if (c.x > 0)
+    receive(
+        c.x - 1, c.z, [&](const CornerShares& b) { return b.next_x == c.x && b.z == c.z; }, 1);
+  if (c.z > 0)
+    receive(
+        c.x, c.z - 1, [&](const CornerShares& b) { return b.x == c.x && b.next_z == c.z; }, 2);
+  if (c.x > 0 && c.z > 0)
+    receive(
+        c.x - 1, c.z - 1, [&](const CornerShares& b) { return b.next_x == c.x && b.next_z == c.z; }, 3);
   return mass;
 }
 
@@ -93,7 +117,7 @@ const std::vector<TreeId>& TcSoftBody::Impl::ring_nodes(TreeId block) {
   std::vector<TreeId>& nodes = settle_scratch_;
   nodes.clear();
   const auto add = [&](TreeId id) {
-    if (id == kNoTreeNode || record(id).bullet < 0) return;
+    if (id == kNoTreeNode || bullet_[static_cast<std::size_t>(id)] < 0) return;
     for (TreeId n : nodes)
       if (n == id) return;
     nodes.push_back(id);
@@ -103,19 +127,29 @@ const std::vector<TreeId>& TcSoftBody::Impl::ring_nodes(TreeId block) {
   for (int i = 0; i < b.child_count; ++i) add(b.children[static_cast<std::size_t>(i)]);
   // The ring of leaves around the block, in both cuts: every node whose corners or whose neighbours' corners the
   // operation can have moved holds one of them.
+  // Along one side, neighbouring leaves mostly share their holders: a leaf before the ends of the blocks last found on
+  // that side in both cuts is held by them again (a cut holds each leaf once, and the side runs along one row or
+  // column), and adding them again would change nothing, so it is not looked up.
   const int width = tree().level_width(0), height = tree().level_height(0);
-  const auto add_holders = [&](int x, int z) {
+  const auto add_holders = [&](int x, int z, bool along_x, std::array<int, 2>& held_until) {
     if (x < 0 || z < 0 || x >= width || z >= height) return;
-    add(holding(x, z, true));
-    add(holding(x, z, false));
+    const int at = along_x ? x : z;
+    if (at < held_until[0] && at < held_until[1]) return;
+    const std::array<TreeId, 2> held = holders(x, z);
+    for (std::size_t cut = 0; cut < 2; ++cut) {
+      add(held[cut]);
+      if (held[cut] != kNoTreeNode)
+        held_until[cut] = along_x ? tree().node(held[cut]).leaf_x1 : tree().node(held[cut]).leaf_y1;
+    }
   };
+  std::array<std::array<int, 2>, 4> sides{};  // below, above, left, right: the first leaf past each cut's holder
   for (int x = b.leaf_x0 - 1; x <= b.leaf_x1; ++x) {
-    add_holders(x, b.leaf_y0 - 1);
-    add_holders(x, b.leaf_y1);
+    add_holders(x, b.leaf_y0 - 1, true, sides[0]);
+    add_holders(x, b.leaf_y1, true, sides[1]);
   }
   for (int z = b.leaf_y0; z < b.leaf_y1; ++z) {
-    add_holders(b.leaf_x0 - 1, z);
-    add_holders(b.leaf_x1, z);
+    add_holders(b.leaf_x0 - 1, z, false, sides[2]);
+    add_holders(b.leaf_x1, z, false, sides[3]);
   }
   return nodes;
 }

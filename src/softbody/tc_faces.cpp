@@ -16,9 +16,11 @@ namespace tcsb {
 
 namespace {
 
-/// Whether leaf corner (x, y) — between leaf columns x-1 and x and rows y-1 and y — is a corner of n's block.
-bool has_corner(const LodNode& n, int x, int y) {
-  return (x == n.leaf_x0 || x == n.leaf_x1) && (y == n.leaf_y0 || y == n.leaf_y1);
+/// Whether the block holding cell k of the four around a leaf corner (in ring order) has that corner as a corner of
+/// its own: a block is a rectangle, so it does exactly when it holds neither neighbouring cell of the ring. Read from
+/// the owners alone, without the block's record.
+bool corner_of_own(const std::array<TreeId, 4>& around, std::size_t k) {
+  return around[(k + 3) % 4] != around[k] && around[(k + 1) % 4] != around[k];
 }
 
 /// Twice the signed area of triangle (a, b, c) at rest, seen in the net's plane: the y component of
@@ -57,9 +59,9 @@ void TcSoftBody::Impl::cut_faces(std::vector<std::array<TreeId, 3>>& out, std::v
         const std::array<TreeId, 4> around{owner_of(cx - 1, cy - 1), owner_of(cx, cy - 1), owner_of(cx, cy),
                                            owner_of(cx - 1, cy)};
         if (std::find(around.begin(), around.end(), kNoTreeNode) != around.end()) continue;
-        const auto first =
-            std::find_if(around.begin(), around.end(), [&](TreeId t) { return has_corner(lod.node(t), cx, cy); });
-        if (*first != id) continue;
+        std::size_t first = 0;
+        while (!corner_of_own(around, first)) ++first;  // (id's own cell is among them: the search ends)
+        if (around[first] != id) continue;
         std::array<TreeId, 4> ring{};
         int size = 0;
         for (const TreeId t : around)

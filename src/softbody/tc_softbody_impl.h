@@ -295,12 +295,18 @@ class TcSoftBody::Impl {
   /// The node of the committed cut (`committed`) or of the old cut (active or leaving) whose block holds leaf (x, z).
   /// O(levels).
   TreeId holding(int x, int z, bool committed) const;
-  /// The mass `id` carries in that cut: its leaves' own share, the shares of its far corners that fall on no node of
-  /// the cut, and the shares of the blocks whose far corner it rests on; 0 when it is not in that cut. O(levels).
-  double cut_mass(TreeId id, bool committed) const;
+  /// holding(x, z, true) and holding(x, z, false) from one climb. O(levels).
+  std::array<TreeId, 2> holders(int x, int z) const;
+  /// The masses `id` carries in the committed and in the old cut: in each its leaves' own share, the shares of its
+  /// far corners that fall on no node of the cut, and the shares of the blocks whose far corner it rests on; 0 in a
+  /// cut it is not in. O(levels).
+  std::array<double, 2> cut_mass(TreeId id) const;
   /// What a simulated node carries: the mean of its masses in the old and the committed cut, so that an operation's
   /// two sides each carry half, as with block masses. O(levels).
-  double target_mass(TreeId id) const { return 0.5 * (cut_mass(id, true) + cut_mass(id, false)); }
+  double target_mass(TreeId id) const {
+    const std::array<double, 2> mass = cut_mass(id);
+    return 0.5 * (mass[0] + mass[1]);
+  }
   /// Every node of `nodes` (ring_nodes() of an operation's block) goes to target_mass(), the mass moving from the
   /// nodes that lose it to those that gain it with its momentum, and their links' constants follow. O(nodes x levels).
   void settle_cut_masses(const std::vector<TreeId>& nodes);
