@@ -518,8 +518,6 @@ TEST_F(Fuzz, SuitesWithHugeListsAreCountedBeforeTheyAreExpanded) {
   }
 }
 
-}  // namespace
-
 // ---- issue 60: scenes, camera paths and instruction counts ----------------------------------------------------------
 
 /// The 9x9 suite in a scene, as the viewer suites run: a sphere under the net, a camera on a keyframed path, the view
@@ -662,3 +660,5 @@ TEST_F(Fuzz, CompareJudgesMutatedInstructionCountsOrRefusesThemInOneLine) {
   }
   EXPECT_GT(refused, cases / 4);
 }
+
+}  // namespace
