@@ -385,13 +385,24 @@ Spectator close_up_spectator(double x) {
   return s;
 }
 
+/// The camera tests' scene: a 17 x 17 sheet lying on a 5 m ground in a world of its own; the sheet leaves the world
+/// before the ground does.
+struct SheetOnTheGround {
+  SheetOnTheGround() { app.world.addSoftBody(body.get()); }
+  ~SheetOnTheGround() { app.world.removeSoftBody(body.get()); }
+  SheetOnTheGround(const SheetOnTheGround&) = delete;
+  SheetOnTheGround& operator=(const SheetOnTheGround&) = delete;
+  AppWorld app;
+  const Ground ground{app, 5};
+  std::unique_ptr<TcSoftBody> body = sheet_body(app, 17);
+};
+
 TEST(TreeCutDriver, TheCameraMovesWhileTheWorldRuns) {
   // A close-up camera on one half of a sheet lying on the ground keeps the detail there; moved to the other half,
   // the detail follows it.
-  AppWorld app;
-  const Ground ground(app, 5);
-  auto body = sheet_body(app, 17);
-  app.world.addSoftBody(body.get());
+  SheetOnTheGround scene;
+  AppWorld& app = scene.app;
+  TcSoftBody* body = scene.body.get();
   FeedbackSettings feedback;
   feedback.view = true;
   const Spectator left = close_up_spectator(-0.6);
@@ -412,7 +423,6 @@ TEST(TreeCutDriver, TheCameraMovesWhileTheWorldRuns) {
   const auto motion_only = make_controller({}, 120, 1);
   EXPECT_THROW(motion_only->set_spectator(right), std::logic_error);
   EXPECT_TRUE(body->validate().ok()) << body->validate().summary();
-  app.world.removeSoftBody(body.get());
 }
 
 TEST(TreeCutDriver, ALookAheadRefinesWhereTheCameraIsGoing) {
@@ -420,22 +430,18 @@ TEST(TreeCutDriver, ALookAheadRefinesWhereTheCameraIsGoing) {
   // first second, without a look-ahead the detail stays on the left; seeing also where the camera will be in 10 s
   // (feedback.view_lookahead_s), the right half gets its share before the camera arrives.
   const auto finest_x_after_a_second = [](double lookahead_s) {
-    AppWorld app;
-    const Ground ground(app, 5);
-    auto body = sheet_body(app, 17);
-    app.world.addSoftBody(body.get());
+    SheetOnTheGround scene;
+    TcSoftBody* body = scene.body.get();
     FeedbackSettings feedback;
     feedback.view = true;
     feedback.view_lookahead_s = lookahead_s;
     Spectator camera = close_up_spectator(-0.6);
     camera.camera.path = {{0.0, close_up_over(-0.6)}, {10.0, close_up_over(0.6)}};
-    TreeCutDriver driver(app.world);
+    TreeCutDriver driver(scene.app.world);
     driver.drive(*body, make_controller(feedback, 120, 1, camera));
-    for (int f = 0; f < 60; ++f) frame(app);
+    for (int f = 0; f < 60; ++f) frame(scene.app);
     EXPECT_TRUE(body->validate().ok()) << body->validate().summary();
-    const double x = finest_mean_x(*body);
-    app.world.removeSoftBody(body.get());
-    return x;
+    return finest_mean_x(*body);
   };
   const double now_only = finest_x_after_a_second(0.0);
   const double ahead = finest_x_after_a_second(10.0);
