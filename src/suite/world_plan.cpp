@@ -38,12 +38,12 @@ std::vector<double> lod_camera_distances(const Suite& suite, int steps) {
   for (int s = 0; s < steps; ++s) {
     const double t = static_cast<double>(s + 1) * suite.world.dt;
     const std::array<double, 3> now = camera.pose_at(t).position;
-    const std::array<double, 3> then = camera.pose_at(t + ahead).position;
+    const std::array<double, 3> then = ahead > 0 ? camera.pose_at(t + ahead).position : now;
     for (const NetSpec& n : placed) {
       const auto distance = [&](const std::array<double, 3>& eye) {
         return std::hypot(eye[0] - n.centre_x, eye[1] - n.elevation, eye[2] - n.centre_z);
       };
-      out.push_back(ahead > 0 ? std::min(distance(now), distance(then)) : distance(now));
+      out.push_back(std::min(distance(now), distance(then)));
     }
   }
   return out;
