@@ -223,6 +223,10 @@ class TcSoftBody::Impl {
   /// The committed cut's faces as tree-node triples, in the order enable_faces() builds them (tc_faces.cpp);
   /// `owner` is scratch (one entry per leaf).
   void cut_faces(std::vector<std::array<TreeId, 3>>& out, std::vector<TreeId>& owner) const;
+  /// cut_faces()' triples: those refresh_faces() built the faces from while they are current (no rebuild pending),
+  /// else computed into `out` (`owner` its scratch). Either way the same triples in the same order.
+  const std::vector<std::array<TreeId, 3>>& current_cut_faces(std::vector<std::array<TreeId, 3>>& out,
+                                                              std::vector<TreeId>& owner) const;
   /// The faces: over the committed cut's nodes, as enable_faces() builds them.
   void validate_faces(const ProblemSink& fail) const;
   /// The incidence lists hold exactly Bullet's link set.
