@@ -130,6 +130,9 @@ void TcSoftBody::Impl::dissolve_interface(int link) {
 }
 
 void TcSoftBody::Impl::prepare_interfaces() {
+  // What it computes follows the nodes' places and masses, the interfaces and the blend weights: on a body that no
+  // operation touched since, nor blends, it is what the last step used.
+  if (interfaces_prepared_) return;
   prepared_interfaces_.resize(interfaces_.size());
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {
     const InterfaceConstraint& c = interfaces_[i];
@@ -177,6 +180,7 @@ void TcSoftBody::Impl::prepare_interfaces() {
       p.c0 = w > 0 ? static_cast<btScalar>(w / c.stiffness / alpha) : btScalar(0);
     p.c1 = rest * rest;
   }
+  interfaces_prepared_ = inflight_.empty();  // (a blending link's weight moves at every boundary)
 }
 
 namespace {

@@ -78,7 +78,8 @@ void TcSoftBody::Impl::restore_order() {
     if (i >= 0 && i < n) body_.m_anchors[a].m_node = base + position_[static_cast<std::size_t>(i)];
   }
   permute_in_place(order_, body_.m_nodes, tree_of_);
-  faces_stale_ = true;  // faces hold Node* too: rebuilt before the next step
+  faces_stale_ = true;           // faces hold Node* too: rebuilt before the next step
+  interfaces_prepared_ = false;  // and so do the prepared interfaces
   for (int i = 0; i < n; ++i) {
     body_.m_nodes[i].m_leaf->data = &body_.m_nodes[i];
     set_bullet_index(tree_of_[static_cast<std::size_t>(i)], i);

@@ -409,6 +409,10 @@ class TcSoftBody::Impl {
     double compliance = 0;  ///< the compliant material's alpha~ that c0 stands for (compliance_in_constant)
   };
   std::vector<PreparedInterface> prepared_interfaces_;  // per step, reused
+  /// prepared_interfaces_ still holds what prepare_interfaces() would compute: no node, link or mass changed since,
+  /// and no operation was blending then. Cleared by add_node, remove_node, add_link, remove_link,
+  /// set_simulated_mass and restore_order.
+  bool interfaces_prepared_ = false;
   SubstepPositions substep_positions_;  // the compliant material's small steps (compliant_solver.h), reused
   /// Per LOD level, the material its links use (level 0: the solver's); empty when uncalibrated. Owned by Bullet
   /// (appendMaterial; freed with the body), made once at construction: materials cannot be freed before the body.
