@@ -406,6 +406,9 @@ class TcSoftBody::Impl {
     Node* coarse = nullptr;
     Node* fine[2] = {nullptr, nullptr};
     btScalar c0 = 0, c1 = 0;
+    /// The three nodes' m_im, which no solve changes: read here, the projection touches one cache line of a node
+    /// (m_x) instead of two (a Node is 256 bytes, m_im 96 bytes after m_x).
+    std::array<btScalar, 3> inverse_mass{};
     double compliance = 0;  ///< the compliant material's alpha~ that c0 stands for (compliance_in_constant)
   };
   std::vector<PreparedInterface> prepared_interfaces_;  // per step, reused
