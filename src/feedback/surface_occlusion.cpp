@@ -6,11 +6,12 @@
 namespace tcsb {
 
 void SurfaceOcclusion::capture(const TcSoftBody& body, CutSnapshot& snapshot) {
-  body.impl().cut_faces(tree_faces_, owner_);
-  snapshot.faces.resize(tree_faces_.size());
+  // (a body with faces built them from the same triples at its last change: read, not derived again)
+  const std::vector<std::array<TreeId, 3>>& faces = body.impl().current_cut_faces(tree_faces_, owner_);
+  snapshot.faces.resize(faces.size());
   const auto index = [&](TreeId id) { return snapshot.cut.index[static_cast<std::size_t>(id)]; };
-  for (std::size_t f = 0; f < tree_faces_.size(); ++f) {
-    const std::array<TreeId, 3>& t = tree_faces_[f];
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const std::array<TreeId, 3>& t = faces[f];
     snapshot.faces[f] = {index(t[0]), index(t[1]), index(t[2])};
   }
 }

@@ -84,6 +84,13 @@ void TcSoftBody::Impl::cut_faces(std::vector<std::array<TreeId, 3>>& out, std::v
   }
 }
 
+const std::vector<std::array<TreeId, 3>>& TcSoftBody::Impl::current_cut_faces(std::vector<std::array<TreeId, 3>>& out,
+                                                                              std::vector<TreeId>& owner) const {
+  if (faces_enabled_ && !faces_stale_) return face_scratch_;
+  cut_faces(out, owner);
+  return out;
+}
+
 void TcSoftBody::Impl::enable_faces() {
   if (faces_enabled_) return;
   faces_enabled_ = true;

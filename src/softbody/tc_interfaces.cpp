@@ -130,6 +130,9 @@ void TcSoftBody::Impl::dissolve_interface(int link) {
 }
 
 void TcSoftBody::Impl::prepare_interfaces() {
+  // What it computes follows the nodes' places and masses, the interfaces and the blend weights: on a body that no
+  // operation touched since, nor blends, it is what the last step used.
+  if (interfaces_prepared_) return;
   prepared_interfaces_.resize(interfaces_.size());
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {
     const InterfaceConstraint& c = interfaces_[i];
@@ -167,6 +170,7 @@ void TcSoftBody::Impl::prepare_interfaces() {
     // Position-based dynamics for C(x) = |(x_f0 + x_f1)/2 - x_c| - rest: gradients -n for the coarse node and n/2
     // for each fine one, so the generalised inverse mass is w_c + (w_f0 + w_f1)/4 (w_c + w_f when both are one
     // node). As for a link, the blend weight divides the constant (docs/design.md, "Blending through m_c0").
+    p.inverse_mass = {p.coarse->m_im, p.fine[0]->m_im, p.fine[1]->m_im};
     const btScalar w = p.fine[0] == p.fine[1] ? p.coarse->m_im + p.fine[0]->m_im
                                               : p.coarse->m_im + btScalar(0.25) * (p.fine[0]->m_im + p.fine[1]->m_im);
     const double alpha = blend_alpha(link_meta_[static_cast<std::size_t>(c.links[0])]);
@@ -177,6 +181,7 @@ void TcSoftBody::Impl::prepare_interfaces() {
       p.c0 = w > 0 ? static_cast<btScalar>(w / c.stiffness / alpha) : btScalar(0);
     p.c1 = rest * rest;
   }
+  interfaces_prepared_ = inflight_.empty();  // (a blending link's weight moves at every boundary)
 }
 
 namespace {
@@ -222,8 +227,8 @@ void project_interface_accumulating(Eigen::Vector3d& c, Eigen::Vector3d& f0, Eig
 void TcSoftBody::Impl::project_interfaces() {
   for (const PreparedInterface& p : prepared_interfaces_) {
     if (p.c0 <= 0) continue;
-    project_interface(p.coarse->m_x, p.fine[0]->m_x, p.fine[1]->m_x, p.coarse->m_im, p.fine[0]->m_im, p.fine[1]->m_im,
-                      p.c0, p.c1);
+    project_interface(p.coarse->m_x, p.fine[0]->m_x, p.fine[1]->m_x, p.inverse_mass[0], p.inverse_mass[1],
+                      p.inverse_mass[2], p.c0, p.c1);
   }
 }
 

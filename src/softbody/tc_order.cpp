@@ -6,8 +6,8 @@
 // elements are neighbours on the cloth and share cache lines and DBVT ancestors. Operations append new nodes and
 // links at the end and fill holes by swap-with-last; left alone, that scatters neighbours over the arrays, and the
 // same Bullet instructions then miss the L1 cache about twice as often (callgrind, scripts/profile/step-profile.sh).
+#include <algorithm>
 #include <array>
-#include <utility>
 
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -62,9 +62,10 @@ void TcSoftBody::Impl::restore_order() {
   rank_slots_.assign(lod.size(), -1);
   for (std::int32_t i = 0; i < n; ++i)
     rank_slots_[static_cast<std::size_t>(lod.spatial_rank(tree_of_[static_cast<std::size_t>(i)]))] = i;
-  order_.clear();
+  order_.resize(static_cast<std::size_t>(n));
+  std::int32_t* next = order_.data();  // (written in place: a push_back per element costs a capacity check each)
   for (const std::int32_t i : rank_slots_)
-    if (i >= 0) order_.push_back(i);
+    if (i >= 0) *next++ = i;
   invert(order_, position_);
 
   // Links hold raw pointers into the node array: re-point them to where their nodes go, then move the nodes.
@@ -77,7 +78,8 @@ void TcSoftBody::Impl::restore_order() {
     if (i >= 0 && i < n) body_.m_anchors[a].m_node = base + position_[static_cast<std::size_t>(i)];
   }
   permute_in_place(order_, body_.m_nodes, tree_of_);
-  faces_stale_ = true;  // faces hold Node* too: rebuilt before the next step
+  faces_stale_ = true;           // faces hold Node* too: rebuilt before the next step
+  interfaces_prepared_ = false;  // and so do the prepared interfaces
   for (int i = 0; i < n; ++i) {
     body_.m_nodes[i].m_leaf->data = &body_.m_nodes[i];
     set_bullet_index(tree_of_[static_cast<std::size_t>(i)], i);
@@ -85,20 +87,27 @@ void TcSoftBody::Impl::restore_order() {
 
   // Links by (lower endpoint, higher endpoint), a plain net's order: each node in turn gives its links to later
   // nodes, nearest first, read from its incidence list (at most IncidenceList::kCapacity). O(L).
-  order_.clear();
+  order_.resize(static_cast<std::size_t>(body_.m_links.size()));
+  next = order_.data();
   for (std::int32_t i = 0; i < n; ++i) {
     const TreeId id = tree_of_[static_cast<std::size_t>(i)];
-    std::array<std::pair<std::int32_t, std::int32_t>, IncidenceList::kCapacity> later;  // (other endpoint, link)
+    // The links to later nodes by their other endpoint, sorted by insertion. (Left uninitialised: zeroing them cost
+    // as much as sorting them.)
+    std::array<std::int32_t, IncidenceList::kCapacity> later_end, later_link;
     std::size_t count = 0;
     for (const std::int32_t li : incidence_[static_cast<std::size_t>(id)]) {
       // (from the flat mirror of the Bullet indices: a record read per entry would cost a cache line each)
       const std::int32_t other = bullet_[static_cast<std::size_t>(link_meta_[static_cast<std::size_t>(li)].other(id))];
       if (other < i) continue;
       std::size_t at = count++;
-      for (; at > 0 && later[at - 1].first > other; --at) later[at] = later[at - 1];
-      later[at] = {other, li};
+      for (; at > 0 && later_end[at - 1] > other; --at) {
+        later_end[at] = later_end[at - 1];
+        later_link[at] = later_link[at - 1];
+      }
+      later_end[at] = other;
+      later_link[at] = li;
     }
-    for (std::size_t k = 0; k < count; ++k) order_.push_back(later[k].second);
+    next = std::copy_n(later_link.begin(), count, next);
   }
   invert(order_, position_);
   permute_in_place(order_, body_.m_links, link_meta_);

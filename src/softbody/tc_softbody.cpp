@@ -158,6 +158,7 @@ int TcSoftBody::Impl::add_node(TreeId id, const btVector3& x, const btVector3& v
   tree_of_.push_back(id);
   set_bullet_index(id, index);
   faces_stale_ = true;
+  interfaces_prepared_ = false;
   ++displaced_;             // appended at the end, away from its neighbours
   work_.nodes += 2;         // the appended node, and the node beside whose leaf it goes
   work_.tree_records += 2;  // id's and beside's
@@ -197,6 +198,7 @@ void TcSoftBody::Impl::remove_node(TreeId id) {
   tree_of_.pop_back();
   set_bullet_index(id, -1);
   faces_stale_ = true;
+  interfaces_prepared_ = false;
 }
 
 void TcSoftBody::Impl::follow_anchors(const Node* from, Node* to) {
@@ -244,6 +246,7 @@ int TcSoftBody::Impl::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t o
   incidence_[static_cast<std::size_t>(b)].add(index);
   write_link_constant(index);
   if (settings_.interfaces == Interfaces::kHanging) pair_into_interface(index);
+  interfaces_prepared_ = false;
   ++displaced_;
   ++work_.links;
   work_.tree_records += 2;  // both endpoints: records read, incidence lists written
@@ -252,6 +255,7 @@ int TcSoftBody::Impl::add_link(TreeId a, TreeId b, LinkRole role, std::int32_t o
 
 void TcSoftBody::Impl::remove_link(int link) {
   if (link_meta_[static_cast<std::size_t>(link)].interface >= 0) dissolve_interface(link);
+  interfaces_prepared_ = false;
   const CutLink meta = link_meta_[static_cast<std::size_t>(link)];
   incidence_[static_cast<std::size_t>(meta.a)].remove(link);
   incidence_[static_cast<std::size_t>(meta.b)].remove(link);
@@ -281,6 +285,7 @@ void TcSoftBody::Impl::set_simulated_mass(TreeId id, double mass) {
   NodeRecord& r = record(id);
   r.sim_mass = mass;
   r.inv_mass = body_.m_nodes[r.bullet].m_im = inverse_mass(id, mass);
+  interfaces_prepared_ = false;
 }
 
 btScalar TcSoftBody::Impl::inverse_mass(TreeId id, double mass) const {

@@ -223,6 +223,10 @@ class TcSoftBody::Impl {
   /// The committed cut's faces as tree-node triples, in the order enable_faces() builds them (tc_faces.cpp);
   /// `owner` is scratch (one entry per leaf).
   void cut_faces(std::vector<std::array<TreeId, 3>>& out, std::vector<TreeId>& owner) const;
+  /// cut_faces()' triples: those refresh_faces() built the faces from while they are current (no rebuild pending),
+  /// else computed into `out` (`owner` its scratch). Either way the same triples in the same order.
+  const std::vector<std::array<TreeId, 3>>& current_cut_faces(std::vector<std::array<TreeId, 3>>& out,
+                                                              std::vector<TreeId>& owner) const;
   /// The faces: over the committed cut's nodes, as enable_faces() builds them.
   void validate_faces(const ProblemSink& fail) const;
   /// The incidence lists hold exactly Bullet's link set.
@@ -402,9 +406,16 @@ class TcSoftBody::Impl {
     Node* coarse = nullptr;
     Node* fine[2] = {nullptr, nullptr};
     btScalar c0 = 0, c1 = 0;
+    /// The three nodes' m_im, which no solve changes: read here, the projection touches one cache line of a node
+    /// (m_x) instead of two (a Node is 256 bytes, m_im 96 bytes after m_x).
+    std::array<btScalar, 3> inverse_mass{};
     double compliance = 0;  ///< the compliant material's alpha~ that c0 stands for (compliance_in_constant)
   };
   std::vector<PreparedInterface> prepared_interfaces_;  // per step, reused
+  /// prepared_interfaces_ still holds what prepare_interfaces() would compute: no node, link or mass changed since,
+  /// and no operation was blending then. Cleared by add_node, remove_node, add_link, remove_link,
+  /// set_simulated_mass and restore_order.
+  bool interfaces_prepared_ = false;
   SubstepPositions substep_positions_;  // the compliant material's small steps (compliant_solver.h), reused
   /// Per LOD level, the material its links use (level 0: the solver's); empty when uncalibrated. Owned by Bullet
   /// (appendMaterial; freed with the body), made once at construction: materials cannot be freed before the body.

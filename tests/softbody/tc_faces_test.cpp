@@ -101,6 +101,35 @@ TEST(TcFaces, FollowTheCutThroughRandomOperations) {
   }
 }
 
+TEST(TcFaces, TheCurrentFacesAreTheCutsFacesBuiltOrNot) {
+  // current_cut_faces() hands out the triples the faces were built from while no rebuild is pending (the occlusion
+  // capture reads them so): they must be what cut_faces() derives afresh, at every boundary, and so must the ones it
+  // computes while a rebuild is pending.
+  const auto net = testing::square_net(23, kCornerMinMin | kCornerMinMax);
+  SceneWorld world({}, windy());
+  TcSoftBody tc(world.info(), net, testing::test_solver(), {});
+  const SceneWorld::Attachment a = world.attach(tc);
+  RandomPolicy policy(9);
+  std::vector<std::array<TreeId, 3>> out, fresh;
+  std::vector<TreeId> owner;
+  int built = 0, computed = 0;
+  const auto check = [&](int s) {
+    const std::vector<std::array<TreeId, 3>>& current = tc.impl().current_cut_faces(out, owner);
+    (&current == &out ? computed : built) += 1;
+    tc.impl().cut_faces(fresh, owner);
+    ASSERT_EQ(current, fresh) << "step " << s;
+  };
+  for (int s = 0; s < 200; ++s) {
+    tc.advance_blends();
+    check(s);
+    policy.apply(tc, (s / 50) % 2 == 0 ? 23 * 23 / 4 : 23 * 23, 8);
+    check(s);
+    world.step(kDt);
+  }
+  EXPECT_GT(built, 10);  // (both ways, often)
+  EXPECT_GT(computed, 50);
+}
+
 TEST(TcFaces, ValidateCatchesAFaceOffTheCut) {
   const auto net = testing::square_net(17);
   SceneWorld world({}, windy());

@@ -3,6 +3,9 @@
 // project it. (Without interfaces the body steps as Bullet's: tc_softbody_test.cpp.)
 #include <gtest/gtest.h>
 
+#include <cstring>
+
+#include "feedback/random_policy.h"
 #include "scene/scene_world.h"
 #include "softbody/tc_softbody_impl.h"
 #include "softbody/tc_softbody_solver.h"
@@ -130,6 +133,41 @@ double interface_strain(const TcSoftBody& tc) {
   const btVector3 mid =
       (tc.m_nodes[tc.bullet_index(c.fine[0])].m_x + tc.m_nodes[tc.bullet_index(c.fine[1])].m_x) * btScalar(0.5);
   return std::abs((mid - tc.m_nodes[tc.bullet_index(c.coarse)].m_x).length() - c.rest) / c.rest;
+}
+
+TEST(TcInterfaces, APreparationKeptFromTheLastStepIsTheOneMadeAfresh) {
+  // prepare_interfaces() keeps the last step's constants on a body no operation touched since: after every step of
+  // random operations, with pauses between them, a preparation made afresh must be the one the step used, bit for
+  // bit, whether it was kept or made.
+  const auto net = testing::square_net(17);
+  SceneWorld world({});
+  TcSoftBody tc(world.info(), net, testing::test_solver(), hanging());
+  RandomPolicy policy(4);
+  int kept = 0;
+  for (int s = 0; s < 240; ++s) {
+    tc.advance_blends();
+    if ((s / 12) % 2 == 0) policy.apply(tc, (s / 48) % 2 == 0 ? 17 * 17 / 3 : 17 * 17 * 2 / 3, 8);
+    kept += tc.impl().interfaces_prepared_ ? 1 : 0;
+    tc.simulate_step(kDt);
+    const auto used = tc.impl().prepared_interfaces_;
+    tc.impl().interfaces_prepared_ = false;
+    tc.impl().prepare_interfaces();
+    const auto& fresh = tc.impl().prepared_interfaces_;
+    ASSERT_EQ(used.size(), fresh.size()) << "step " << s;
+    for (std::size_t i = 0; i < used.size(); ++i) {
+      ASSERT_EQ(used[i].coarse, fresh[i].coarse) << "step " << s << ", interface " << i;
+      ASSERT_EQ(used[i].fine[0], fresh[i].fine[0]) << "step " << s << ", interface " << i;
+      ASSERT_EQ(used[i].fine[1], fresh[i].fine[1]) << "step " << s << ", interface " << i;
+      ASSERT_EQ(std::memcmp(&used[i].c0, &fresh[i].c0, sizeof(btScalar)), 0) << "step " << s << ", interface " << i;
+      ASSERT_EQ(std::memcmp(&used[i].c1, &fresh[i].c1, sizeof(btScalar)), 0) << "step " << s << ", interface " << i;
+      ASSERT_EQ(std::memcmp(used[i].inverse_mass.data(), fresh[i].inverse_mass.data(), sizeof(used[i].inverse_mass)), 0)
+          << "step " << s << ", interface " << i;
+      if (used[i].c0 > 0) ASSERT_EQ(used[i].inverse_mass[0], used[i].coarse->m_im) << "step " << s;
+    }
+  }
+  EXPECT_GT(kept, 40);   // (the pauses: kept often)
+  EXPECT_LT(kept, 200);  // (the operations: made often)
+  EXPECT_GT(tc.impl().interfaces_.size(), 0u);
 }
 
 TEST(TcInterfaces, BothSteppingPathsProjectTheConstraints) {
