@@ -431,9 +431,10 @@ class TcSoftBody::Impl {
   int order_restorations_ = 0;
   int dbvt_rebuilds_ = 0;
   int dbvt_peak_nodes_ = 0;  // the most nodes simulated since the node DBVT was last built
-  /// restore_order()'s scratch, kept to reuse the room: a permutation (new -> old), its inverse, and one slot per
-  /// spatial rank of the tree.
+  /// restore_order()'s scratch, kept to reuse the room: a permutation (new -> old), its inverse, one slot per
+  /// spatial rank of the tree, and a bit per rank the cut holds.
   std::vector<std::int32_t> order_, position_, rank_slots_;
+  std::vector<std::uint64_t> rank_bits_;
   std::vector<Op> ops_;  // operation pool
   std::vector<std::int32_t> free_ops_;
   std::vector<std::int32_t> inflight_;  // operations blending

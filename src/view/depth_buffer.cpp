@@ -18,7 +18,15 @@ DepthBuffer::DepthBuffer(const ScreenProjection& view, int cell_px) : cell_px_(c
   nearest_.assign(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_), kEmptyCell);
 }
 
-void DepthBuffer::clear() { std::fill(nearest_.begin(), nearest_.end(), kEmptyCell); }
+void DepthBuffer::clear() {
+  const auto columns = static_cast<std::size_t>(columns_);
+  for (int j = dirty_j0_; j <= dirty_j1_; ++j) {
+    const auto row = nearest_.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(j) * columns);
+    std::fill(row + dirty_i0_, row + dirty_i1_ + 1, kEmptyCell);
+  }
+  dirty_i0_ = dirty_j0_ = 0;
+  dirty_i1_ = dirty_j1_ = -1;
+}
 
 void DepthBuffer::add_triangle(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c) {
   if (a.depth < kNearPlane || b.depth < kNearPlane || c.depth < kNearPlane) return;
@@ -33,6 +41,13 @@ void DepthBuffer::add_triangle(const ScreenPoint& a, const ScreenPoint& b, const
   const int i1 = std::min(columns_ - 1, last(std::max({a.x, b.x, c.x})));
   const int j0 = std::max(0, first(std::min({a.y, b.y, c.y})));
   const int j1 = std::min(rows_ - 1, last(std::max({a.y, b.y, c.y})));
+  if (i0 > i1 || j0 > j1) return;
+  if (dirty_i0_ > dirty_i1_) {
+    dirty_i0_ = i0, dirty_i1_ = i1, dirty_j0_ = j0, dirty_j1_ = j1;
+  } else {
+    dirty_i0_ = std::min(dirty_i0_, i0), dirty_i1_ = std::max(dirty_i1_, i1);
+    dirty_j0_ = std::min(dirty_j0_, j0), dirty_j1_ = std::max(dirty_j1_, j1);
+  }
   const double inv_a = 1.0 / a.depth, inv_b = 1.0 / b.depth, inv_c = 1.0 / c.depth;
   for (int j = j0; j <= j1; ++j) {
     const double y = (j + 0.5) * cell;

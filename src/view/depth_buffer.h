@@ -30,7 +30,8 @@ class DepthBuffer {
   /// An empty buffer for `view`'s image in cells of `cell_px` pixels. Throws std::invalid_argument when cell_px < 1.
   DepthBuffer(const ScreenProjection& view, int cell_px);
 
-  /// Forgets every triangle.
+  /// Forgets every triangle. O(cells inside the box around the triangles added since the last clear), not O(image):
+  /// a cloth far from the lens covers a few cells of an image the feedback clears at every evaluation.
   void clear();
   /// Adds the triangle whose corners appear at a, b and c (their images through this buffer's view).
   void add_triangle(const ScreenPoint& a, const ScreenPoint& b, const ScreenPoint& c);
@@ -45,6 +46,8 @@ class DepthBuffer {
   int cell_px_ = 1;
   int columns_ = 0, rows_ = 0;
   std::vector<float> nearest_;  // row-major; +infinity where no triangle covers the cell's centre
+  // The box of cells that may hold a triangle's depth (empty: first > last), which clear() resets.
+  int dirty_i0_ = 0, dirty_i1_ = -1, dirty_j0_ = 0, dirty_j1_ = -1;
 };
 
 /// Which points of one or more grids the camera sees: `points` are whole grids of width x height points one after

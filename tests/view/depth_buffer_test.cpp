@@ -92,6 +92,36 @@ TEST(DepthBuffer, ClearForgetsTheTriangles) {
   EXPECT_TRUE(buffer.visible(view.project(Eigen::Vector3d(0, 0, 0)), 0));
 }
 
+// clear() resets only the cells the triangles since the last clear may have touched: after squares in several
+// places and clears in between, every cell must read as in a buffer that only ever saw the last square.
+TEST(DepthBuffer, AfterClearsEveryCellReadsAsInAFreshBuffer) {
+  const ScreenProjection view(camera_looking_at_origin(), 0);
+  for (const int cell_px : {1, 3}) {
+    DepthBuffer reused(view, cell_px);
+    add_square(reused, view, 3.0, 2.0);  // near the lens: most of the image
+    reused.clear();
+    add_square(reused, view, 0.5, 3.0);
+    add_square(reused, view, 1.0, -4.0);
+    reused.clear();
+    reused.clear();  // a clear with nothing drawn since
+    add_square(reused, view, 1.0, 5.0);
+    DepthBuffer fresh(view, cell_px);
+    add_square(fresh, view, 1.0, 5.0);
+    int hidden = 0;
+    for (int j = 0; j < reused.rows(); ++j)
+      for (int i = 0; i < reused.columns(); ++i) {
+        ScreenPoint p;
+        p.x = (i + 0.5) * cell_px;
+        p.y = (j + 0.5) * cell_px;
+        p.depth = 9.0;  // behind every square but the one at z = -4: a stale cell would hide it
+        p.in_view = true;
+        ASSERT_EQ(reused.visible(p, 0), fresh.visible(p, 0)) << cell_px << " cell " << i << ", " << j;
+        hidden += reused.visible(p, 0) ? 0 : 1;
+      }
+    EXPECT_GT(hidden, 0) << cell_px;  // the last square is there
+  }
+}
+
 TEST(DepthBuffer, CellsCoverTheWholeImage) {
   const ScreenProjection view(camera_looking_at_origin(), 0);  // 200 x 100 pixels
   const DepthBuffer fine(view, 1), coarse(view, 3);
