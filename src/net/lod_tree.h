@@ -93,6 +93,10 @@ class LodTree {
   /// the rows and columns of their leaves: how TcSoftBody keeps Bullet's arrays in a plain body's order.
   std::int32_t spatial_rank(TreeId id) const { return spatial_rank_[static_cast<std::size_t>(id)]; }
 
+  /// The leaf at (gx, gy), which must be on the grid (unchecked, unlike at(0, gx, gy): the leaves are the ids
+  /// 0 .. leaf_count() - 1, row-major). For the climbs from a leaf that callers bound already. O(1).
+  TreeId leaf_at(int gx, int gy) const { return gy * level_width_[0] + gx; }
+
   /// The node at (gx, gy) of a level, or kNoTreeNode outside the level's grid. O(1).
   TreeId at(int level, int gx, int gy) const {
     if (level < 0 || level >= level_count() || gx < 0 || gy < 0 || gx >= level_width(level) ||

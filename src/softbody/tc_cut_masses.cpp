@@ -51,14 +51,14 @@ void TcSoftBody::Impl::build_corner_shares() {
 
 TreeId TcSoftBody::Impl::holding(int x, int z, bool committed) const {
   const CutState arriving_or_leaving = committed ? CutState::kArriving : CutState::kLeaving;
-  for (TreeId id = tree().at(0, x, z); id != kNoTreeNode; id = tree().node(id).parent)
+  for (TreeId id = tree().leaf_at(x, z); id != kNoTreeNode; id = tree().node(id).parent)
     if (state(id) == CutState::kActive || state(id) == arriving_or_leaving) return id;
   return kNoTreeNode;  // (not reached: each cut covers every leaf)
 }
 
 std::array<TreeId, 2> TcSoftBody::Impl::holders(int x, int z) const {
   std::array<TreeId, 2> found{kNoTreeNode, kNoTreeNode};  // as holding(x, z, true) and holding(x, z, false)
-  for (TreeId id = tree().at(0, x, z); id != kNoTreeNode; id = tree().node(id).parent) {
+  for (TreeId id = tree().leaf_at(x, z); id != kNoTreeNode; id = tree().node(id).parent) {
     const CutState s = state(id);
     if (found[0] == kNoTreeNode && (s == CutState::kActive || s == CutState::kArriving)) found[0] = id;
     if (found[1] == kNoTreeNode && (s == CutState::kActive || s == CutState::kLeaving)) found[1] = id;

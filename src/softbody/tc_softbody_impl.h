@@ -296,8 +296,8 @@ class TcSoftBody::Impl {
   bool cut_masses() const { return settings_.masses == Masses::kCut; }
   /// Fills corner_shares_ once, O(T log T). Throws unless the tree's blocks rest on their first leaf.
   void build_corner_shares();
-  /// The node of the committed cut (`committed`) or of the old cut (active or leaving) whose block holds leaf (x, z).
-  /// O(levels).
+  /// The node of the committed cut (`committed`) or of the old cut (active or leaving) whose block holds leaf (x, z),
+  /// which must be on the grid (unchecked: the climbs run a dozen times for each node a ring settles). O(levels).
   TreeId holding(int x, int z, bool committed) const;
   /// holding(x, z, true) and holding(x, z, false) from one climb. O(levels).
   std::array<TreeId, 2> holders(int x, int z) const;

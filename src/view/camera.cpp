@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace tcsb {
 
@@ -28,17 +29,21 @@ std::string text(double v) {
   return out.str();
 }
 
-void check_finite(const std::string& field, const std::array<double, 3>& v) {
+// The field's name is `field` + `part`, spelt out only when refused: a game tells the spectator every frame, and
+// building the names of fields that pass cost as much as the checks.
+void check_finite(std::string_view field, std::string_view part, const std::array<double, 3>& v) {
   for (const double c : v)
-    if (!std::isfinite(c)) refuse(field, "must be finite, got " + text(c));
+    if (!std::isfinite(c)) refuse(std::string(field).append(part), "must be finite, got " + text(c));
 }
 
-void check_pose(const std::string& field, const CameraPose& pose, const std::array<double, 3>& up) {
-  check_finite(field + ".position", pose.position);
-  check_finite(field + ".target", pose.target);
+void check_pose(std::string_view field, const CameraPose& pose, const std::array<double, 3>& up) {
+  check_finite(field, ".position", pose.position);
+  check_finite(field, ".target", pose.target);
   switch (camera_pose_problem(pose, up)) {
-    case CameraPoseProblem::kNoDirection: refuse(field + ".target", "equals the position (the camera looks nowhere)");
-    case CameraPoseProblem::kLooksAlongUp: refuse(field + ".target", "the camera looks along up (the image has no up)");
+    case CameraPoseProblem::kNoDirection:
+      refuse(std::string(field) + ".target", "equals the position (the camera looks nowhere)");
+    case CameraPoseProblem::kLooksAlongUp:
+      refuse(std::string(field) + ".target", "the camera looks along up (the image has no up)");
     case CameraPoseProblem::kNone: break;
   }
 }
@@ -56,7 +61,7 @@ void validate_spectator(const Spectator& spectator) {
   if (c.occlusion_cell_px < 0 || c.occlusion_cell_px > Camera::kMaxOcclusionCellPx)
     refuse("camera.occlusion_cell_px", "must be 0 (off) or 1 to " + std::to_string(Camera::kMaxOcclusionCellPx) +
                                            " pixels, got " + std::to_string(c.occlusion_cell_px));
-  check_finite("camera.up", c.up);
+  check_finite("camera.up", "", c.up);
   if (c.up == std::array<double, 3>{}) refuse("camera.up", "must not be the zero vector");
   if (c.path.empty()) {
     check_pose("camera.pose", c.pose, c.up);

@@ -94,6 +94,15 @@ TEST(LodTree, AtMatchesNodeCoordinatesAndOrdering) {
   });
 }
 
+// The cut masses' climbs start from leaf_at, which skips at()'s checks: it must name the same leaf everywhere on the
+// grid, of non-square and thin trees too.
+TEST(LodTree, LeafAtIsAtOnLevelZero) {
+  for_each_tree([](const LodTree& tree, const Net&) {
+    for (int gy = 0; gy < tree.level_height(0); ++gy)
+      for (int gx = 0; gx < tree.level_width(0); ++gx) ASSERT_EQ(tree.leaf_at(gx, gy), tree.at(0, gx, gy));
+  });
+}
+
 // Cut adjacency finds a node's parent by grid arithmetic (at half its coordinates, one level up) rather than by
 // reading the node; the two must agree for every node, the root included.
 TEST(LodTree, ParentIsTheNodeAtHalfTheCoordinatesOneLevelUp) {
