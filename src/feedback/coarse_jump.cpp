@@ -4,11 +4,9 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <optional>
 
 #include "softbody/affine_fit.h"
-#include "view/largest_image_offset.h"
 
 namespace tcsb {
 
@@ -55,9 +53,10 @@ void cut_neighbours(const CutView& cut, CutNeighbours& out) {
 
 namespace {
 
-/// Calls `corner(before, after)` at the corners of every child's block of `parent` (coarse_jump.h): at most 16.
-template <class Corner>
-void for_each_corner_move(const CutSnapshot& snapshot, const CutNeighbours& neighbours, TreeId parent, Corner corner) {
+/// The largest `distance(before, after)` over the corners of every child's block of `parent` (coarse_jump.h).
+template <class Distance>
+double largest_corner_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours, TreeId parent,
+                           Distance distance) {
   const LodTree& tree = *snapshot.cut.tree;
   const LodNode& p = tree.node(parent);
   const auto index_of = [&](TreeId id) { return snapshot.cut.index[static_cast<std::size_t>(id)]; };
@@ -111,13 +110,14 @@ void for_each_corner_move(const CutSnapshot& snapshot, const CutNeighbours& neig
 
   // Before against after at the corners of every child's block.
   const int width = tree.level_width(0);
+  double jump = 0;
   for (int k = 0; k < p.child_count; ++k) {
     const TreeId c = p.children[static_cast<std::size_t>(k)];
     const LodNode& cn = tree.node(c);
     const Eigen::Vector3d& xc = child_x[static_cast<std::size_t>(k)];
     const Eigen::Vector3d rc = tree.rest(c);
     if (cn.is_leaf()) {
-      corner(xc, Eigen::Vector3d(xp + fp * plane(rc - rp)));
+      jump = std::max(jump, distance(xc, Eigen::Vector3d(xp + fp * plane(rc - rp))));
       continue;
     }
     Eigen::Matrix2d crr = Eigen::Matrix2d::Zero();
@@ -133,36 +133,29 @@ void for_each_corner_move(const CutSnapshot& snapshot, const CutNeighbours& neig
       for (const int gx : {cn.leaf_x0, cn.leaf_x1 - 1}) {
         const Eigen::Vector3d rl = tree.rest(static_cast<TreeId>(gy * width + gx));
         const Eigen::Vector3d before = xc + fc * plane(rl - rc);
-        corner(before, Eigen::Vector3d(xp + fp * plane(rl - rp)));
+        const Eigen::Vector3d after = xp + fp * plane(rl - rp);
+        jump = std::max(jump, distance(before, after));
       }
   }
+  return jump;
 }
 
 }  // namespace
 
 double coarse_jump(const CutSnapshot& snapshot, const CutNeighbours& neighbours, TreeId parent) {
-  double jump = 0;
-  for_each_corner_move(snapshot, neighbours, parent,
-                       [&jump](const Eigen::Vector3d& before, const Eigen::Vector3d& after) {
-                         jump = std::max(jump, (before - after).norm());
-                       });
-  return jump;
+  return largest_corner_jump(snapshot, neighbours, parent,
+                             [](const Eigen::Vector3d& before, const Eigen::Vector3d& after) {
+                               return (before - after).norm();
+                             });
 }
 
 double coarse_jump_px(const CutSnapshot& snapshot, const CutNeighbours& neighbours, TreeId parent,
                       const ScreenProjection& view) {
-  // Each corner seen before the coarsen moves by the length of its offset on the image, or by the image's diagonal
-  // when it leaves for behind the camera (ScreenProjection::displacement_px); one out of view shows no jump.
-  LargestImageOffset largest;
-  for_each_corner_move(snapshot, neighbours, parent, [&](const Eigen::Vector3d& before, const Eigen::Vector3d& after) {
-    const ScreenPoint seen = view.project(before);
-    if (!seen.in_view) return;
-    if (const std::optional<Eigen::Vector2d> offset = view.image_offset(after, seen))
-      largest.add(*offset);
-    else
-      largest.add_length(view.diagonal_px());
-  });
-  return largest.length();
+  return largest_corner_jump(snapshot, neighbours, parent,
+                             [&view](const Eigen::Vector3d& before, const Eigen::Vector3d& after) {
+                               const ScreenPoint seen = view.project(before);
+                               return seen.in_view ? view.displacement_px(after, seen) : 0.0;
+                             });
 }
 
 }  // namespace tcsb

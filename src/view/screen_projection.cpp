@@ -64,15 +64,8 @@ double ScreenProjection::facing_size_px(const Eigen::Vector3d& x, double length)
 double ScreenProjection::diagonal_px() const { return std::sqrt(width_ * width_ + height_ * height_); }
 
 double ScreenProjection::displacement_px(const Eigen::Vector3d& x, const ScreenPoint& seen_in_view) const {
-  const std::optional<Eigen::Vector2d> offset = image_offset(x, seen_in_view);
-  return offset ? std::hypot(offset->x(), offset->y()) : diagonal_px();
-}
-
-std::optional<Eigen::Vector2d> ScreenProjection::image_offset(const Eigen::Vector3d& x,
-                                                              const ScreenPoint& seen_in_view) const {
   const ScreenPoint p = project(x);
-  if (p.depth < kNearPlane) return std::nullopt;
-  return Eigen::Vector2d(p.x - seen_in_view.x, p.y - seen_in_view.y);
+  return p.depth >= kNearPlane ? std::hypot(p.x - seen_in_view.x, p.y - seen_in_view.y) : diagonal_px();
 }
 
 }  // namespace tcsb

@@ -7,7 +7,6 @@
 #include <Eigen/Core>
 
 #include <array>
-#include <optional>
 
 #include "../view/camera.h"
 
@@ -56,9 +55,6 @@ class ScreenProjection {
   /// How far from `seen_in_view` (a point's image, in view) the point `x` appears, pixels; where `x` is at or behind
   /// the near plane it has no image, and counts as the image's diagonal.
   double displacement_px(const Eigen::Vector3d& x, const ScreenPoint& seen_in_view) const;
-  /// The offset on the image, pixels, from `seen_in_view` to where `x` appears, whose length displacement_px gives;
-  /// none where `x` is at or behind the near plane.
-  std::optional<Eigen::Vector2d> image_offset(const Eigen::Vector3d& x, const ScreenPoint& seen_in_view) const;
 
  private:
   Eigen::Vector3d eye_, right_, up_, forward_;

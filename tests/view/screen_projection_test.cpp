@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 
 #include "test_camera.h"
@@ -64,17 +63,6 @@ TEST(ScreenProjection, DisplacementIsTheDistanceOnTheImageOrTheDiagonal) {
   // Behind the camera, or at the lens, a point has no image: the largest displacement there is.
   EXPECT_EQ(view.displacement_px(Eigen::Vector3d(0, 0, 12), origin), view.diagonal_px());
   EXPECT_EQ(view.displacement_px(Eigen::Vector3d(0, 0, 10), origin), view.diagonal_px());
-}
-
-TEST(ScreenProjection, TheImageOffsetIsTheDisplacementsDirection) {
-  const ScreenProjection view(camera_looking_at_origin(), 0);
-  const ScreenPoint origin = view.project(Eigen::Vector3d(0, 0, 0));
-  const std::optional<Eigen::Vector2d> offset = view.image_offset(Eigen::Vector3d(3, 4, 0), origin);
-  ASSERT_TRUE(offset.has_value());
-  EXPECT_NEAR(offset->x(), 15.0, 1e-12) << "right";
-  EXPECT_NEAR(offset->y(), -20.0, 1e-12) << "up: the image's rows run downwards";
-  EXPECT_EQ(std::hypot(offset->x(), offset->y()), view.displacement_px(Eigen::Vector3d(3, 4, 0), origin));
-  EXPECT_FALSE(view.image_offset(Eigen::Vector3d(0, 0, 12), origin).has_value()) << "behind the camera";
 }
 
 TEST(ScreenProjection, FollowsThePath) {
