@@ -162,7 +162,9 @@ TEST(TcInterfaces, APreparationKeptFromTheLastStepIsTheOneMadeAfresh) {
       ASSERT_EQ(std::memcmp(&used[i].c1, &fresh[i].c1, sizeof(btScalar)), 0) << "step " << s << ", interface " << i;
       ASSERT_EQ(std::memcmp(used[i].inverse_mass.data(), fresh[i].inverse_mass.data(), sizeof(used[i].inverse_mass)), 0)
           << "step " << s << ", interface " << i;
-      if (used[i].c0 > 0) ASSERT_EQ(used[i].inverse_mass[0], used[i].coarse->m_im) << "step " << s;
+      if (used[i].c0 > 0) {
+        ASSERT_EQ(used[i].inverse_mass[0], used[i].coarse->m_im) << "step " << s;
+      }
     }
   }
   EXPECT_GT(kept, 40);   // (the pauses: kept often)
