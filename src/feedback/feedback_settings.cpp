@@ -56,7 +56,6 @@ void check_feedback_settings(const FeedbackSettings& s) {
   unit("view_offscreen_share", s.view_offscreen_share);
   non_negative("view_lookahead_s", s.view_lookahead_s);
   non_negative("view_popping_charge", s.view_popping_charge);
-  if (s.view_unseen_interval < 0) refuse("view_unseen_interval", ">= 0 (0: off)", s.view_unseen_interval);
 }
 
 }  // namespace tcsb

@@ -87,13 +87,6 @@ struct FeedbackSettings {
   /// spectator sees it: a block large on the image is coarsened last, one off-screen or far away as if uncharged, and
   /// under a world budget the nodes come from where a jump is not seen (docs/investigations/street-world-budget.md).
   double view_popping_charge = 0.0;
-  /// With view: how rarely a body the spectator cannot see is evaluated (feedback/unseen_body.h). 0, the default: as
-  /// every other body, bit for bit. k >= 1: a body no point of which can be in view at its evaluation, at the next
-  /// one (evaluation_interval steps later), nor view_lookahead_s after either, is evaluated without the parts that
-  /// only a seen body needs (its occlusion, the jump charge on the image: they would give what the floor gives) and
-  /// only at every k-th such evaluation boundary in a row; at the others it ranks nothing and keeps its cut (under a
-  /// world budget, its nodes). A body about to come into view is evaluated as before, in time for its detail.
-  int view_unseen_interval = 0;
   /// Per body, or one budget for a scene of many bodies (a suite's scene.bodies; docs/design.md, "Scenes of many
   /// bodies"). Body: every single-cloth run, bit for bit.
   BudgetScope budget_scope = BudgetScope::kBody;

@@ -6,7 +6,6 @@
 #include "feedback/interface_balance.h"
 #include "feedback/pin_tension.h"
 #include "feedback/saliency.h"
-#include "feedback/unseen_body.h"
 
 namespace tcsb {
 
@@ -42,9 +41,7 @@ void SaliencyController::evaluate() {
   std::optional<ScreenProjection> view;
   if (spectator_) view.emplace(spectator_->camera, static_cast<double>(snapshot_.step) * spectator_->dt);
   const ScreenProjection* seen = view ? &*view : nullptr;
-  // An unseen body's nodes all rank at the floor and its corners show no jump: its occlusion and the jump charge on
-  // the image would change nothing, so they are skipped.
-  const std::span<const std::uint8_t> visible = view && occlusion_cell_px() > 0 && !unseen_
+  const std::span<const std::uint8_t> visible = view && occlusion_cell_px() > 0
                                                     ? occlusion_.seen(snapshot_, *view, occlusion_cell_px())
                                                     : std::span<const std::uint8_t>{};
   // The local motion as `through` sees it, into `out`: in chunks on the workers when there are several (chunks write
@@ -71,7 +68,7 @@ void SaliencyController::evaluate() {
     for (std::size_t i = 0; i < n; ++i) saliency_[i] = std::max(saliency_[i], ahead_[i]);
   }
   JumpCharge charge;
-  const bool charge_px = view && settings_.view_popping_charge > 0 && !unseen_;
+  const bool charge_px = view && settings_.view_popping_charge > 0;
   if (settings_.popping_charge > 0 || charge_px) {
     cut_neighbours(snapshot_.cut, neighbours_);
     charge = {settings_.popping_charge, extent_, &neighbours_};
@@ -83,18 +80,6 @@ void SaliencyController::evaluate() {
   rank_candidates(snapshot_, saliency_, 2 * settings_.max_ops_per_step, evaluation_, charge,
                   {settings_.interface_charge, interface_weights_, settings_.pin_level_pull, budget_level_});
   evaluation_ms_ = ms_since(t0);
-}
-
-bool SaliencyController::snapshot_unseen() const {
-  const double now = static_cast<double>(snapshot_.step) * spectator_->dt;
-  const double next = now + settings_.evaluation_interval * spectator_->dt;
-  std::vector<ScreenProjection> views{ScreenProjection(spectator_->camera, now),
-                                      ScreenProjection(spectator_->camera, next)};
-  if (settings_.view_lookahead_s > 0) {
-    views.emplace_back(spectator_->camera, now + settings_.view_lookahead_s);
-    views.emplace_back(spectator_->camera, next + settings_.view_lookahead_s);
-  }
-  return unseen_in(snapshot_, views);
 }
 
 bool SaliencyController::budget_demand(BudgetDemand& out) const {
@@ -153,24 +138,17 @@ void SaliencyController::before_step(TcSoftBody& body) {
     const bool positions = settings_.illumination || settings_.popping_charge > 0 || spectator_.has_value();
     take_snapshot(body, cut_view(body), positions, boundary_, snapshot_,
                   settings_.contact_saliency > 0 ? &contacts_ : nullptr);
-    unseen_ = settings_.view_unseen_interval > 0 && spectator_ && snapshot_unseen();
-    unseen_in_a_row_ = unseen_ ? unseen_in_a_row_ + 1 : 0;
-    // Unseen, the body is evaluated at the first of every view_unseen_interval such boundaries in a row; at the
-    // others it ranks nothing, and its cut holds until its next evaluation.
-    const bool skipped = unseen_ && (unseen_in_a_row_ - 1) % settings_.view_unseen_interval != 0;
-    if (!skipped) {
-      if (occlusion_cell_px() > 0 && !unseen_)
-        occlusion_.capture(body, snapshot_);  // here, where the cut holds still; drawn on the worker
-      else
-        snapshot_.faces.clear();
-      if (workers_) {
-        workers_->post([this] { evaluate(); });
-        job_running_ = true;
-      } else {
-        evaluate();
-      }
-      evaluation_ready_ = true;
+    if (occlusion_cell_px() > 0)
+      occlusion_.capture(body, snapshot_);  // here, where the cut holds still; drawn on the worker
+    else
+      snapshot_.faces.clear();
+    if (workers_) {
+      workers_->post([this] { evaluate(); });
+      job_running_ = true;
+    } else {
+      evaluate();
     }
+    evaluation_ready_ = true;
   }
   ++boundary_;
   cost_.critical_ms = ms_since(t0);

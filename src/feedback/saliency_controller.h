@@ -53,9 +53,6 @@ class SaliencyController final : public Controller {
 
  private:
   void evaluate();
-  /// With view_unseen_interval: whether the spectator can see none of the snapshot's body now, at the next
-  /// evaluation, nor view_lookahead_s after either (feedback/unseen_body.h).
-  bool snapshot_unseen() const;
   void adapt_time_budget();
   /// The spectator's occlusion cells, pixels; 0 without a spectator or when its camera does not model occlusion.
   int occlusion_cell_px() const { return spectator_ ? spectator_->camera.occlusion_cell_px : 0; }
@@ -79,8 +76,6 @@ class SaliencyController final : public Controller {
   std::vector<float> saliency_;
   std::vector<float> ahead_;    ///< with view_lookahead_s: the saliency as the spectator will see the cloth
   SurfaceOcclusion occlusion_;  // when the spectator's camera models occlusion: its depth buffer, kept between steps
-  bool unseen_ = false;         // the snapshot's body is seen by nobody (view_unseen_interval): a cheaper evaluation
-  int unseen_in_a_row_ = 0;     // evaluation boundaries in a row at which the body was unseen
   Evaluation evaluation_;
   bool evaluation_ready_ = false;
   double evaluation_ms_ = 0;  // time of the last evaluation, wherever it ran

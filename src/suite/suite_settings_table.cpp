@@ -195,8 +195,6 @@ constexpr SuiteSetting kSettings[] = {
      number_range(kNonNegative), kNoAxis, false, Written::kUnlessDefault},
     {"feedback.view_popping_charge", setting_member<&Suite::feedback, &FeedbackSettings::view_popping_charge>(),
      number_range(kNonNegative), kNoAxis, false, Written::kUnlessDefault},
-    {"feedback.view_unseen_interval", setting_member<&Suite::feedback, &FeedbackSettings::view_unseen_interval>(),
-     integer_range(0, INT_MAX), kNoAxis, false, Written::kUnlessDefault},
     {"feedback.budget_scope", setting_member<&Suite::feedback, &FeedbackSettings::budget_scope>(),
      choice_range(kBudgetScopes), kNoAxis, false, Written::kUnlessDefault},
 };

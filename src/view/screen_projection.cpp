@@ -68,26 +68,4 @@ double ScreenProjection::displacement_px(const Eigen::Vector3d& x, const ScreenP
   return p.depth >= kNearPlane ? std::hypot(p.x - seen_in_view.x, p.y - seen_in_view.y) : diagonal_px();
 }
 
-bool ScreenProjection::may_see_box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const {
-  // A point in view has depth z >= kNearPlane and |f (d.r)| <= z W / 2, |f (d.u)| <= z H / 2 (project() divided
-  // through by z > 0): five half-spaces, each linear in the point, so a box lies beyond one of them when all eight of
-  // its corners do. A corner within a relative 1e-9 of a side counts as inside: project() divides where this
-  // multiplies, and the two may round a point on the image's edge to opposite sides.
-  bool beyond[5] = {true, true, true, true, true};
-  for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3d x((corner & 1) ? hi.x() : lo.x(), (corner & 2) ? hi.y() : lo.y(),
-                            (corner & 4) ? hi.z() : lo.z());
-    const Eigen::Vector3d d = x - eye_;
-    const double z = d.dot(forward_), u = focal_px_ * d.dot(right_), v = focal_px_ * d.dot(up_);
-    const double half_w = 0.5 * width_ * z, half_h = 0.5 * height_ * z;
-    const double slack_w = 1e-9 * (std::abs(u) + std::abs(half_w)), slack_h = 1e-9 * (std::abs(v) + std::abs(half_h));
-    beyond[0] = beyond[0] && z < kNearPlane;
-    beyond[1] = beyond[1] && u - half_w > slack_w;
-    beyond[2] = beyond[2] && -u - half_w > slack_w;
-    beyond[3] = beyond[3] && v - half_h > slack_h;
-    beyond[4] = beyond[4] && -v - half_h > slack_h;
-  }
-  return !(beyond[0] || beyond[1] || beyond[2] || beyond[3] || beyond[4]);
-}
-
 }  // namespace tcsb

@@ -55,10 +55,6 @@ class ScreenProjection {
   /// How far from `seen_in_view` (a point's image, in view) the point `x` appears, pixels; where `x` is at or behind
   /// the near plane it has no image, and counts as the image's diagonal.
   double displacement_px(const Eigen::Vector3d& x, const ScreenPoint& seen_in_view) const;
-  /// False only when no point of the axis-aligned box [lo, hi] can be in view: every corner lies beyond one and the
-  /// same side of the view's pyramid (behind the near plane, or past one edge of the image). True may still mean
-  /// nothing of it is in view (a box across a corner of the pyramid): the test is conservative and O(1).
-  bool may_see_box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const;
 
  private:
   Eigen::Vector3d eye_, right_, up_, forward_;

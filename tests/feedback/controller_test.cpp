@@ -220,60 +220,6 @@ TEST(SaliencyController, ATimeBudgetDoesNotCountAPauseAsAStep) {
   EXPECT_EQ(controller.budget(), 250);
 }
 
-/// Whether the controller ranked anything at each of `steps` boundaries, and the priorities it ranked.
-std::vector<std::vector<double>> demands_over(const FeedbackSettings& settings, const Camera& camera, int steps) {
-  SceneWorld world({});
-  TcSoftBody body(world.info(), net_of(17), {}, {});
-  SaliencyController controller(settings, 200, Spectator{camera, kDt});
-  std::vector<std::vector<double>> out;
-  for (int s = 0; s < steps; ++s) {
-    body.advance_blends();
-    controller.before_step(body);
-    body.simulate_step(kDt);
-    controller.after_step(body);
-    BudgetDemand demand;
-    std::vector<double> ranked;
-    if (controller.budget_demand(demand)) {
-      ranked = demand.refine;
-      ranked.insert(ranked.end(), demand.coarse.begin(), demand.coarse.end());
-      ranked.push_back(-1);  // ranked, if nothing: tells "evaluated" from "skipped"
-    }
-    out.push_back(ranked);
-  }
-  return out;
-}
-
-TEST(SaliencyController, AnUnseenBodyIsEvaluatedOnlyAtEveryKthBoundaryAndAsBefore) {
-  // feedback.view_unseen_interval: the body behind the camera ranks at the first of every three evaluation
-  // boundaries (at the first, what it ranked with the setting off: the cuts part after it); in front of the camera
-  // it is evaluated as before, every time.
-  FeedbackSettings settings;
-  settings.view = true;
-  settings.view_popping_charge = 3;
-  Camera away;
-  away.pose = {{0, 12, 14}, {0, 12, 30}};  // the net lies at y = 8 over [-4, 4] in x and z: behind the camera
-  away.occlusion_cell_px = 4;
-  Camera towards = away;
-  towards.pose = {{0, 12, 14}, {0, 8, 0}};
-  const int steps = 9;
-  const auto off_away = demands_over(settings, away, steps);
-  const auto off_towards = demands_over(settings, towards, steps);
-  settings.view_unseen_interval = 3;
-  const auto on_away = demands_over(settings, away, steps);
-  const auto on_towards = demands_over(settings, towards, steps);
-  EXPECT_EQ(on_towards, off_towards);
-  EXPECT_EQ(on_away.front(), off_away.front());
-  for (int s = 0; s < steps; ++s) {
-    ASSERT_FALSE(off_away[static_cast<std::size_t>(s)].empty()) << s;
-    if (s % 3 == 0)
-      EXPECT_FALSE(on_away[static_cast<std::size_t>(s)].empty()) << "step " << s << " was skipped";
-    else
-      EXPECT_TRUE(on_away[static_cast<std::size_t>(s)].empty()) << "step " << s << " was evaluated";
-  }
-  settings.view_unseen_interval = 1;  // every time, the cheaper evaluation: the same ranking
-  EXPECT_EQ(demands_over(settings, away, steps), off_away);
-}
-
 TEST(SaliencyController, AnEvaluationThatThrowsReachesTheSimulationThreadInBothModes) {
   // A camera looking along its up direction (the parser and make_controller refuse it; the controller itself takes
   // it as given) makes every evaluation throw. Synchronous, before_step throws; parallel, the worker's exception is

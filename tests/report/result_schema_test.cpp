@@ -113,7 +113,6 @@ TEST(ResultSchema, EverySettingWrittenOnlyWhenItMattersConforms) {
   f.view_offscreen_share = 0.5;
   f.view_lookahead_s = 0.5;
   f.view_popping_charge = 0.5;
-  f.view_unseen_interval = 4;
   f.view = true;
   f.budget_scope = BudgetScope::kWorld;
   const ojson doc = testing::native_json_of(r);

@@ -33,37 +33,6 @@ TEST(ScreenProjection, WhatIsBehindOrBesideTheImageIsNotInView) {
   EXPECT_FALSE(view.project(Eigen::Vector3d(0, 11, 0)).in_view) << "55 px above the centre of a 100 px image";
 }
 
-TEST(ScreenProjection, ABoxBeyondOneSideOfTheViewCannotBeSeen) {
-  const ScreenProjection view(camera_looking_at_origin(), 0);
-  const auto box = [&](Eigen::Vector3d lo, Eigen::Vector3d hi) { return view.may_see_box(lo, hi); };
-  EXPECT_TRUE(box({-1, -1, -1}, {1, 1, 1})) << "around the point looked at";
-  EXPECT_FALSE(box({25, -1, -1}, {30, 1, 1})) << "right of the image's edge: 22 m sideways at 11 m deep";
-  EXPECT_FALSE(box({-1, -1, 11}, {1, 1, 12})) << "behind the camera";
-  EXPECT_FALSE(box({-1, 12, -1}, {1, 13, 1})) << "above the image: 11 m up at 11 m deep";
-  EXPECT_TRUE(box({19, -1, -1}, {25, 1, 1})) << "across the edge";
-  EXPECT_TRUE(box({-50, -50, -50}, {50, 50, 50})) << "around the camera";
-}
-
-TEST(ScreenProjection, NoPointOfABoxThatCannotBeSeenIsInView) {
-  // Boxes all about the camera: every one the test calls unseen has no point in view on a 5 x 5 x 5 grid inside it,
-  // and some are unseen (the test has something to check).
-  const ScreenProjection view(camera_looking_at_origin(), 0);
-  int unseen = 0;
-  for (int b = 0; b < 400; ++b) {
-    const Eigen::Vector3d lo(-40 + (b * 7) % 60, -30 + (b * 13) % 50, -20 + (b * 17) % 45);
-    const Eigen::Vector3d hi = lo + Eigen::Vector3d(1 + b % 9, 1 + (b / 3) % 7, 1 + (b / 5) % 11);
-    if (view.may_see_box(lo, hi)) continue;
-    ++unseen;
-    for (int i = 0; i <= 4; ++i)
-      for (int j = 0; j <= 4; ++j)
-        for (int k = 0; k <= 4; ++k) {
-          const Eigen::Vector3d x = lo + (hi - lo).cwiseProduct(Eigen::Vector3d(i, j, k) / 4.0);
-          ASSERT_FALSE(view.project(x).in_view) << "box " << b << " point " << x.transpose();
-        }
-  }
-  EXPECT_GT(unseen, 50);
-}
-
 TEST(ScreenProjection, PixelSpeedIsTheProjectionsDerivative) {
   const ScreenProjection view(camera_looking_at_origin(), 0);
   const Eigen::Vector3d x(2, -1, 3), v(0.3, 0.7, -1.1);
