@@ -49,15 +49,11 @@ void TcSoftBody::Impl::build_corner_shares() {
   }
 }
 
-TreeId TcSoftBody::Impl::holding(int x, int z, bool committed) const {
-  const CutState arriving_or_leaving = committed ? CutState::kArriving : CutState::kLeaving;
-  for (TreeId id = tree().leaf_at(x, z); id != kNoTreeNode; id = tree().node(id).parent)
-    if (state(id) == CutState::kActive || state(id) == arriving_or_leaving) return id;
-  return kNoTreeNode;  // (not reached: each cut covers every leaf)
-}
+TreeId TcSoftBody::Impl::holding(int x, int z, bool committed) const { return holders(x, z)[committed ? 0 : 1]; }
 
 std::array<TreeId, 2> TcSoftBody::Impl::holders(int x, int z) const {
-  std::array<TreeId, 2> found{kNoTreeNode, kNoTreeNode};  // as holding(x, z, true) and holding(x, z, false)
+  // (each cut covers every leaf, so both are found below the root; while no operation blends they are one node)
+  std::array<TreeId, 2> found{kNoTreeNode, kNoTreeNode};  // the committed cut's, the old cut's
   for (TreeId id = tree().leaf_at(x, z); id != kNoTreeNode; id = tree().node(id).parent) {
     const CutState s = state(id);
     if (found[0] == kNoTreeNode && (s == CutState::kActive || s == CutState::kArriving)) found[0] = id;

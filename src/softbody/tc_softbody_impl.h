@@ -299,7 +299,7 @@ class TcSoftBody::Impl {
   /// The node of the committed cut (`committed`) or of the old cut (active or leaving) whose block holds leaf (x, z),
   /// which must be on the grid (unchecked: the climbs run a dozen times for each node a ring settles). O(levels).
   TreeId holding(int x, int z, bool committed) const;
-  /// holding(x, z, true) and holding(x, z, false) from one climb. O(levels).
+  /// holding(x, z, true) and holding(x, z, false) from one climb (holding() reads one of them). O(levels).
   std::array<TreeId, 2> holders(int x, int z) const;
   /// The masses `id` carries in the committed and in the old cut: in each its leaves' own share, the shares of its
   /// far corners that fall on no node of the cut, and the shares of the blocks whose far corner it rests on; 0 in a
